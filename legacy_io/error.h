@@ -1,0 +1,37 @@
+// One error type for every bad input: it names the file, the place in it
+// (line for text, byte offset for binary), the field, what was expected and
+// what was found, so a user can go straight to the mistake.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace prime::io {
+
+struct InputLocation {
+  std::string file;                  // path as the user would recognise it
+  std::optional<int> line;           // 1-based, for text files
+  std::optional<std::uint64_t> byte; // 0-based offset, for binary files
+};
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(InputLocation where, std::string field, std::string expected, std::string found);
+  // For errors that are not about one field (missing file, unsafe path ...).
+  InputError(InputLocation where, std::string message);
+
+  const InputLocation& where() const { return where_; }
+  const std::string& field() const { return field_; }
+  const std::string& expected() const { return expected_; }
+  const std::string& found() const { return found_; }
+
+ private:
+  InputLocation where_;
+  std::string field_, expected_, found_;
+};
+
+// "file:line: " or "file (byte N): " or "file: ".
+std::string describe(const InputLocation& where);
+
+}  // namespace prime::io
