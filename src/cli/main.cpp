@@ -1,10 +1,25 @@
-// prime: command-line front end. Subcommands are registered by their own files.
-#include <CLI/CLI.hpp>
+// prime: the command-line front end. Every error a user can cause (bad scene
+// data, missing files) is reported on stderr as "prime: <file:line: ...>" with
+// exit status 1; usage errors exit with CLI11's status (106 and friends).
 #include <iostream>
+
+#include "legacy_io/error.h"
+#include "src/cli/commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"PRIME, revived: the 1991 PhotoRealistic Image Modelling Environment"};
   app.require_subcommand(1);
+  prime::cli::Action action;
+  prime::cli::addModelCommand(app, action);
+  prime::cli::addDumpCommand(app, action);
   CLI11_PARSE(app, argc, argv);
-  return 0;
+  try {
+    return action ? action() : 0;
+  } catch (const prime::io::InputError& e) {
+    std::cerr << "prime: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "prime: error: " << e.what() << "\n";
+    return 1;
+  }
 }

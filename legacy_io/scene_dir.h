@@ -1,0 +1,35 @@
+// A scene directory: the port's stand-in for the listing's d:\c\thesis\ tree
+// (errata E07): prim/, bound/, obj/, obj/Copy/, map/, light/, graph_scr.
+// Every file name that comes from scene data goes through here, and here only
+// plain names are accepted: no "..", no absolute paths, no separators, no
+// symbolic links, so no scene file can make prime read or write elsewhere.
+#pragma once
+#include <filesystem>
+#include <string>
+
+namespace prime::io {
+
+class SceneDir {
+ public:
+  explicit SceneDir(std::filesystem::path root);
+
+  // Path of `name` inside subdirectory `sub` ("prim", "obj/Copy", ...).
+  // `origin` names where the name came from, for the error message
+  // (e.g. "scene/Model.txt:3"). Throws InputError for an unsafe name.
+  std::filesystem::path file(const std::string& sub, const std::string& name,
+                             const std::string& origin) const;
+  // The same, additionally refusing a path that exists as a symbolic link.
+  std::filesystem::path existingInput(const std::string& sub, const std::string& name,
+                                      const std::string& origin) const;
+  // How a path inside the scene is shown in messages: "<scene>/prim/S1.txt".
+  std::string display(const std::filesystem::path& p) const;
+  const std::filesystem::path& root() const { return root_; }
+
+ private:
+  std::filesystem::path root_;
+};
+
+// True for a plain file name: non-empty, no '/', '\\', ':' or NUL, not "." or "..".
+bool isPlainFileName(const std::string& name);
+
+}  // namespace prime::io
