@@ -12,5 +12,7 @@ using Action = std::function<int()>;
 // is the one chosen.
 void addModelCommand(CLI::App& app, Action& action);
 void addDumpCommand(CLI::App& app, Action& action);
+void addTraceCommand(CLI::App& app, Action& action);
+void addProbeCommand(CLI::App& app, Action& action);
 
 }  // namespace prime::cli

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   prime::cli::Action action;
   prime::cli::addModelCommand(app, action);
   prime::cli::addDumpCommand(app, action);
+  prime::cli::addTraceCommand(app, action);
+  prime::cli::addProbeCommand(app, action);
   CLI11_PARSE(app, argc, argv);
   try {
     return action ? action() : 0;

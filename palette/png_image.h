@@ -1,0 +1,17 @@
+// PNG output through libpng: 8-bit RGB, written to a temporary file and
+// renamed into place.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace prime {
+
+struct Image8 {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // width*height*3, rows top to bottom
+};
+
+void writePng(const std::string& path, const Image8& image);
+
+}  // namespace prime

@@ -1,0 +1,47 @@
+// RayTrace.c's main loop: one ray tree per pixel of the listing's window,
+// ColorNum'ed to a palette index and collected into a graph file. Rows are
+// rendered in parallel; each pixel is independent and written to its own slot,
+// so the bytes are the same for any thread count.
+#pragma once
+#include <atomic>
+#include <functional>
+
+#include "legacy_io/graph_file.h"
+#include "src/render/camera.h"
+#include "src/render/tracer_1991.h"
+
+namespace prime {
+
+enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
+
+struct RenderSettings {
+  CameraSettings camera;
+  TraceOptions trace;
+  int threads = 0;   // 0: all cores
+  int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
+  ColorMapping mapping = ColorMapping::Listing;
+};
+
+struct RenderResult {
+  io::GraphFile graph;    // header 349 x 768 etc., (across+1) x (down+1) pixels
+  std::vector<Rgb> rgb;   // the unquantised colour of each pixel, same order
+  TraceStats stats;
+  double seconds = 0;
+  int threads = 1;
+  bool aborted = false;   // stopped by `abort` before the last row
+};
+
+struct RenderCallbacks {
+  // Called on the calling thread about five times a second and once at the end.
+  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
+  // Called on the calling thread for every finished row, in no fixed order.
+  std::function<void(int row, const std::vector<std::int16_t>& rowIndices)> rowDone;
+  const std::atomic<bool>* abort = nullptr;
+};
+
+RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderCallbacks& callbacks = {});
+
+// One pixel's index from its colour, as the settings map it.
+int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& stats);
+
+}  // namespace prime

@@ -1,0 +1,24 @@
+// Counters of one render: rays cast by kind, and the X3 diagnostics that show
+// where a scene leaves the ground on which the 1991 program was well defined.
+#pragma once
+#include <cstdint>
+
+namespace prime {
+
+struct TraceStats {
+  std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0;
+  std::uint64_t boundTests = 0, objectTests = 0, primitiveTests = 0;
+  std::uint64_t hits = 0;
+  std::uint64_t totalInternalReflections = 0;
+  std::uint64_t emptyTransmitLists = 0;  // E46: CSG list empty in TransmittedRay
+  std::uint64_t cappedTirLoops = 0;      // E59: TIR loop stopped at the cap
+  std::uint64_t failedTexelReads = 0;    // E51: read past the end of a map -> 0.0
+  std::uint64_t noFaceMatched = 0;       // E44: GetUV* matched no face -> surface 0
+  std::uint64_t nanColours = 0;          // X3: a NaN reached ColorNum
+  std::uint64_t indicesOutOfRange = 0;   // K15: palette index outside 0..255
+
+  std::uint64_t rays() const { return primaryRays + reflectedRays + transmittedRays; }
+  TraceStats& operator+=(const TraceStats& o);
+};
+
+}  // namespace prime

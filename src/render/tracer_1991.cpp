@@ -1,0 +1,252 @@
+#include "src/render/tracer_1991.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "src/geom/primitives_1991.h"
+#include "src/geom/uv_mapping_1991.h"
+#include "src/render/texture_lookup.h"
+
+namespace prime {
+
+namespace {
+constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
+}
+
+Tracer1991::Tracer1991(const Scene& scene, TraceOptions options) : scene_(scene), options_(options) {
+  for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+}
+
+bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
+                           int depth) const {
+  if (obj.boundPrim == -1) return true;  // no bounding volume
+  ++stats.boundTests;
+  const ScenePrim& b = scene_.prims[obj.boundPrim];
+  const bool hit = boundHit1991(b.type, transformRay(ray, b.inverse));
+  if (probe)
+    probe->add(depth, "bound",
+               "object " + std::to_string(obj.number) + ": bounding " + io::primTypeName(b.type) + " (prim " +
+                   std::to_string(obj.boundPrim) + ") " + (hit ? "hit" : "missed: object skipped"),
+               "{\"object\":" + std::to_string(obj.number) + ",\"boundPrim\":" + std::to_string(obj.boundPrim) +
+                   ",\"hit\":" + (hit ? "true" : "false") + "}");
+  return hit;
+}
+
+// IntersectObj's CSG(): the object's Roth list for `ray`.
+TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
+                             int depth) const {
+  ++stats.objectTests;
+  auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+    ++stats.primitiveTests;
+    const ScenePrim& p = scene_.prims[primNum];
+    PrimHit hit;
+    const bool ok = intersectPrimitive1991(p.type, transformRay(ray, p.inverse), hit);
+    if (probe) {
+      std::string text = "object " + std::to_string(obj.number) + " prim " + std::to_string(primNum) + " (" +
+                         io::primTypeName(p.type) + "): ";
+      text += ok ? "in " + fmt(hit.tIn) + " n " + fmt(hit.nIn) + ", out " + fmt(hit.tOut) + " n " + fmt(hit.nOut)
+                 : "miss";
+      probe->add(depth, "primitive", text,
+                 "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(primNum) +
+                     ",\"type\":\"" + p.type + "\",\"hit\":" + (ok ? "true" : "false") +
+                     (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) + ",\"nIn\":" + json(hit.nIn) +
+                               ",\"nOut\":" + json(hit.nOut)
+                         : std::string()) +
+                     "}");
+    }
+    if (!ok) return std::nullopt;
+    return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
+  };
+  TList list;
+  try {
+    list = csg1991(obj.entries, leaf, options_.csg);
+  } catch (const CsgError& e) {
+    // The original stopped with Error() here; name the object and the ray.
+    throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" + std::to_string(obj.number) +
+                             "), ray from " + fmt(ray.o) + " dir " + fmt(ray.d) + ": " + e.what());
+  }
+  if (probe)
+    probe->add(depth, "csg", "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
+               "{\"object\":" + std::to_string(obj.number) + ",\"list\":" + jsonList(list) + "}");
+  return list;
+}
+
+// ReflectedRay (6896-6925, K18): Heckbert's reflection, normalised, origin
+// moved one world unit along it.
+Ray Tracer1991::reflectedRay(const Ray& ray, double t, const Vec3& n) const {
+  Ray r;
+  const double twoDot = dot(ray.d, n) * 2.0;
+  for (int i = 0; i < 3; ++i) {
+    r.o[i] = ray.o[i] + t * ray.d[i];
+    r.d[i] = ray.d[i] - (n[i] * twoDot);
+  }
+  unitVector(r.d, r.d);
+  for (int i = 0; i < 3; ++i) r.o[i] += r.d[i];
+  return r;
+}
+
+// TransmittedRay (6927-7012, K19, K5): refract in, walk through the whole
+// object (its CSG list, without the bound), reflect internally while the exit
+// is beyond the critical angle, refract out, step one unit on.
+Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
+                               double& distance, TraceStats& stats, Probe* probe, int depth) const {
+  Ray tr;
+  distance = 0.0;
+  const double indxInv = 1.0 / indx;
+  double c1 = -dot(ray.d, n);
+  double c2 = std::sqrt(1.0 - sqr(indxInv) * (1.0 - sqr(c1)));
+  for (int i = 0; i < 3; ++i) {
+    tr.d[i] = indxInv * ray.d[i] + (indxInv * c1 - c2) * n[i];
+    tr.o[i] = ray.o[i] + t * ray.d[i] - tr.d[i];
+  }
+  bool ok = false;
+  TList list;
+  int iterations = 0;
+  while (!ok) {
+    list = objectList(obj, tr, stats, nullptr, depth);
+    if (list.size() < 2) {  // E46: the original read through a NULL list
+      ++stats.emptyTransmitLists;
+      break;
+    }
+    if (options_.tirCap > 0 && iterations >= options_.tirCap) {  // E59
+      ++stats.cappedTirLoops;
+      list.clear();
+      break;
+    }
+    ++iterations;
+    const TNode& exit = list[1];  // tList->next
+    c1 = dot(tr.d, exit.norm);
+    if ((c2 = (1.0 - sqr(indx) * (1.0 - sqr(c1)))) < 0.0) {  // total internal reflection
+      ++stats.totalInternalReflections;
+      for (int i = 0; i < 3; ++i) {
+        tr.o[i] += exit.t * tr.d[i];
+        tr.d[i] += 2.0 * c1 * -exit.norm[i];
+        tr.o[i] -= tr.d[i];
+      }
+      distance += exit.t;
+    } else {
+      c2 = std::sqrt(c2);
+      ok = true;
+      distance += exit.t;
+    }
+  }
+  if (ok) {
+    const TNode& exit = list[1];
+    for (int i = 0; i < 3; ++i) {
+      tr.o[i] += exit.t * tr.d[i];
+      tr.d[i] = indx * tr.d[i] + (indx * c1 - c2) * -exit.norm[i];
+    }
+  }
+  for (int i = 0; i < 3; ++i) tr.o[i] += tr.d[i];
+  if (probe)
+    probe->add(depth, "transmit",
+               "through object " + std::to_string(obj.number) + ": " + std::to_string(iterations) +
+                   " internal step(s), distance " + fmt(distance) +
+                   (ok ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " + fmt(tr.o) +
+                   " dir " + fmt(tr.d),
+               "{\"object\":" + std::to_string(obj.number) + ",\"steps\":" + std::to_string(iterations) +
+                   ",\"distance\":" + json(distance) + ",\"exited\":" + (ok ? "true" : "false") +
+                   ",\"origin\":" + json(tr.o) + ",\"dir\":" + json(tr.d) + "}");
+  return tr;
+}
+
+Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind) const {
+  switch (kind) {
+    case RayKind::Primary: ++stats.primaryRays; break;
+    case RayKind::Reflected: ++stats.reflectedRays; break;
+    case RayKind::Transmitted: ++stats.transmittedRays; break;
+  }
+  unitVector(ray.d, ray.d);  // E41
+  if (probe)
+    probe->add(depth, "ray", std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
+                                 fmt(ray.o) + " dir " + fmt(ray.d),
+               "{\"kind\":\"" + std::string(rayKindName(kind)) + "\",\"depth\":" + std::to_string(depth) +
+                   ",\"origin\":" + json(ray.o) + ",\"dir\":" + json(ray.d) + "}");
+
+  double nearest = kInfinity;
+  Nearest best;
+  for (std::size_t k = 0; k < scene_.objects.size(); ++k) {
+    const SceneObject& obj = scene_.objects[k];
+    if (!hitsBound(obj, ray, stats, probe, depth)) continue;
+    const TList list = objectList(obj, ray, stats, probe, depth);
+    if (list.empty()) continue;
+    const double t = list.front().t;  // K30: the FIRST node, not the smallest
+    if (t != 0.0 && t < nearest) {
+      nearest = t;
+      best.t = t;
+      best.obj = static_cast<int>(k);
+      best.prim = list.front().prim;
+      best.surfType = list.front().surfType;
+      unitVector(list.front().norm, best.norm);
+    }
+  }
+  if (nearest == kInfinity) {
+    if (probe) probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");
+    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  }
+  ++stats.hits;
+
+  const SceneObject& obj = scene_.objects[best.obj];
+  const ScenePrim& prim = scene_.prims[best.prim];
+  const Ray local = transformRay(ray, prim.inverse);
+  Vec3 surfPt{}, tmpV{};
+  for (int i = 0; i < 3; ++i) {
+    surfPt[i] = ray.o[i] + nearest * ray.d[i];
+    tmpV[i] = local.o[i] + nearest * local.d[i];
+  }
+  const auto uv = inverseMap1991(prim.type, tmpV);  // types were checked at load
+  if (uv->noFaceMatched) ++stats.noFaceMatched;
+  Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
+  unitVector(n, n);
+
+  const int mapNum = prim.map[uv->surface][best.surfType];
+  const SceneTexture& map = scene_.maps[mapNum];
+  Rgb surfColor{};
+  for (int c = 0; c < 3; ++c) {
+    TextureReadCounters counters;
+    surfColor[c] = readMap1991({map.uScale, map.vScale, map.channel[c]}, uv->u, uv->v, &counters);
+    stats.failedTexelReads += counters.failedReads;
+  }
+  if (probe) {
+    probe->add(depth, "hit",
+               "nearest: object " + std::to_string(obj.number) + " prim " + std::to_string(best.prim) + " (" +
+                   io::primTypeName(prim.type) + ") at t " + fmt(nearest) + ", point " + fmt(surfPt) + ", local " +
+                   fmt(tmpV) + ", normal " + fmt(n) + " (" + (best.surfType ? "inside" : "outside") + " surface)",
+               "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(best.prim) +
+                   ",\"t\":" + json(nearest) + ",\"point\":" + json(surfPt) + ",\"local\":" + json(tmpV) +
+                   ",\"normal\":" + json(n) + ",\"surfType\":\"" + (best.surfType ? "In" : "Out") + "\"}");
+    probe->add(depth, "texture",
+               "u " + fmt(uv->u) + " v " + fmt(uv->v) + " surface " + std::to_string(uv->surface) +
+                   (uv->noFaceMatched ? " (no face matched: E44)" : "") + " -> map " + std::to_string(mapNum) +
+                   " (" + std::to_string(map.uScale) + "x" + std::to_string(map.vScale) + ") colour " +
+                   fmt(Vec3{surfColor[0], surfColor[1], surfColor[2]}),
+               "{\"u\":" + json(uv->u) + ",\"v\":" + json(uv->v) + ",\"surface\":" + std::to_string(uv->surface) +
+                   ",\"map\":" + std::to_string(mapNum) + ",\"color\":" +
+                   json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
+  }
+
+  const Ray reflected = reflectedRay(ray, nearest, n);
+  double sT = 0.0;
+  const Ray transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
+  Rgb colorReflected{}, colorTransmitted{};
+  if (depth++ < options_.maxDepth) {  // K20
+    colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected);
+    colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted);
+  }
+  const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
+                    obj.hue.tT,  obj.hue.kRH, obj.hue.kTH, obj.hue.indx};
+  const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
+  const Rgb color = processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                                     {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+  if (probe)
+    probe->add(depth - 1, "shade",
+               "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+                   ", transmitted " + fmt(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
+                   ", sT " + fmt(sT) + " -> colour " + fmt(Vec3{color[0], color[1], color[2]}),
+               "{\"reflected\":" + json(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+                   ",\"transmitted\":" + json(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
+                   ",\"sT\":" + json(sT) + ",\"color\":" + json(Vec3{color[0], color[1], color[2]}) + "}");
+  return color;
+}
+
+}  // namespace prime

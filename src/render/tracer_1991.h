@@ -1,0 +1,57 @@
+// CastRay, ReflectedRay and TransmittedRay of the Rays module (lines
+// 6681-7019) over an in-memory scene: the 1991 profile's ray tree.
+//   - objects in obj/List order, each tested against its bound first
+//     (IntersectObjBound, with E42's reading), then through its CSG tree;
+//   - the nearest object wins on a strict `t < nearest` (ties keep the first);
+//   - the hit normal is the local normal times the FORWARD matrix (K4);
+//   - reflected and transmitted rays are cast at every hit up to MaxDepth
+//     (K20), with no shadow rays (K9);
+//   - TransmittedRay walks through the whole object (K19), with TIR and the
+//     raw local exit normal (K5); E46 and E59 guard the cases that crashed or
+//     hung the original.
+// The tracer holds no mutable state: one instance serves all threads.
+#pragma once
+#include <vector>
+
+#include "src/geom/csg_1991.h"
+#include "src/render/hall.h"
+#include "src/render/probe.h"
+#include "src/render/trace_stats.h"
+#include "src/scene/scene.h"
+
+namespace prime {
+
+struct TraceOptions {
+  int maxDepth = 5;            // Define.h MaxDepth
+  int tirCap = 1000;           // E59: iterations of the TIR loop before giving up; 0 = no cap
+  Csg1991Options csg;          // Q4 alternative etc.
+};
+
+class Tracer1991 {
+ public:
+  Tracer1991(const Scene& scene, TraceOptions options = {});
+
+  // CastRay(ray, depth, color). `ray.d` need not be unit (CastRay normalises it).
+  Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
+              RayKind kind = RayKind::Primary) const;
+
+  const Scene& scene() const { return scene_; }
+
+ private:
+  struct Nearest {
+    double t = 0;
+    int obj = -1, prim = -1, surfType = 0;
+    Vec3 norm{};
+  };
+  bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
+  TList objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
+  Ray reflectedRay(const Ray& ray, double t, const Vec3& n) const;
+  Ray transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
+                     double& distance, TraceStats& stats, Probe* probe, int depth) const;
+
+  const Scene& scene_;
+  TraceOptions options_;
+  std::vector<HallLight> lights_;
+};
+
+}  // namespace prime
