@@ -33,8 +33,9 @@ case "${1:-}" in
   demo)
     setup
     build release
-    ./build/release/src/cli/prime model scenes/default
-    ./build/release/src/cli/prime dump scenes/default/obj/O1
+    mkdir -p out
+    ./build/release/src/cli/prime trace scenes/default --model --png out/default.png
+    echo "prime.sh: the screen image is out/default.png"
     ;;
   test)
     setup
