@@ -37,6 +37,13 @@ class Tracer1991 {
 
   const Scene& scene() const { return scene_; }
 
+  // ReflectedRay(ray, t, n): the reflected ray leaving the hit point ray.o + t*ray.d.
+  Ray reflectedRay(const Ray& ray, double t, const Vec3& n) const;
+  // TransmittedRay(ray, obj, t, n, indx, &distance): the ray after passing
+  // through `obj`; `distance` receives sT, the path length inside.
+  Ray transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
+                     double& distance, TraceStats& stats, Probe* probe = nullptr, int depth = 0) const;
+
  private:
   struct Nearest {
     double t = 0;
@@ -45,9 +52,6 @@ class Tracer1991 {
   };
   bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
   TList objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
-  Ray reflectedRay(const Ray& ray, double t, const Vec3& n) const;
-  Ray transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
-                     double& distance, TraceStats& stats, Probe* probe, int depth) const;
 
   const Scene& scene_;
   TraceOptions options_;
