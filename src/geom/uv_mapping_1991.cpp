@@ -154,7 +154,7 @@ UvSurface getUVPyramid1991(const Vec3& rI) {
     r.surface = 0;
     return r;
   }
-  // right. shading.md D1: poly[1] is printed (1,1,0), which is not a vertex
+  // right. shading.md S1: poly[1] is printed (1,1,0), which is not a vertex
   // of the pyramid (the face's other base corner is (1,0,1)); kept.
   if (roundoff((rI[X] * kPyramidPlaneB) + (rI[Y] * kPyramidPlaneA) - kPyramidPlaneB) == 0.0) {
     poly[0] = {1.0, 0.0, 0.0};
@@ -237,7 +237,7 @@ UvPair getUVPoly1991(const Vec3& n, int numPoints, const Vec3& rI, Polygon poly)
   // Get *v. E10: the printed `} }` after `kA = ...` belongs after the root
   // choice, so the `else` pairs with `if(dV[Z] != 0.0)` as in the u part.
   // E54: `v` -> `*v`. Unlike the u part, kA and kB are NOT Roundoff'ed here
-  // (as printed; shading.md D3).
+  // (as printed; shading.md S3).
   const Vec3 nB = cross(pB, n);
   Vec3 dV{};
   dV[X] = dot(pD, nB);
@@ -269,7 +269,7 @@ std::optional<InverseMapResult> inverseMap1991(char primType, const Vec3& localH
   switch (primType) {
     case 'S': {
       // `UnitVector(tmpV, n)`: a zero tmpV leaves CastRay's n as it was (a
-      // stale normal); we start from tmpV itself, i.e. zero (shading.md D5).
+      // stale normal); we start from tmpV itself, i.e. zero (shading.md S5).
       Vec3 n = localHit;
       unitVector(localHit, n);
       uvs = getUVSphere1991(n);

@@ -29,7 +29,8 @@ inline constexpr double kTwoPiInv = 0.1591549;
 
 // The pyramid plane coefficients as printed everywhere in the listing
 // (BoundPyramid, IntersectPyramid, GetUVPyramid). Note kPyramidPlaneA is 5.0e-10
-// smaller than 1/sqrt(5); kPyramidPlaneB is 2/sqrt(5) to 15 digits (shading.md D2).
+// smaller than 1/sqrt(5); kPyramidPlaneB is 2/sqrt(5) to 15 digits
+// (primitives.md P1, shading.md S2).
 inline constexpr double kPyramidPlaneA = 0.44721359499958;
 inline constexpr double kPyramidPlaneB = 0.894427190999916;
 

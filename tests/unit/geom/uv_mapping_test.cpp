@@ -15,8 +15,12 @@ namespace prime {
 namespace {
 
 constexpr double kPi = std::numbers::pi;  // == acos(-1.0) == 2*acos(0.0)
+// The listing's constants, as printed (E47). Written out here rather than
+// taken from the header, so that a changed constant fails the tests.
+constexpr double kPiInv1991 = 0.318309886;
+constexpr double kTwoPiInv1991 = 0.1591549;
 // TwoPiInv * pi/2 = 0.24999993231... (not 0.25: TwoPiInv is 7 digits).
-const double kQuarter = (kPi / 2) * kTwoPiInv;
+const double kQuarter = (kPi / 2) * kTwoPiInv1991;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void expectUvs(const UvSurface& got, double u, double v, int surface, double tol = 0.0) {
@@ -28,6 +32,13 @@ void expectUvs(const UvSurface& got, double u, double v, int surface, double tol
     EXPECT_NEAR(got.u, u, tol);
     EXPECT_NEAR(got.v, v, tol);
   }
+}
+
+TEST(UvConstants, AsPrinted) {
+  EXPECT_EQ(kPiInv, kPiInv1991);
+  EXPECT_EQ(kTwoPiInv, kTwoPiInv1991);
+  EXPECT_EQ(kPyramidPlaneA, 0.44721359499958);
+  EXPECT_EQ(kPyramidPlaneB, 0.894427190999916);
 }
 
 // ---------------------------------------------------------------- sphere (S)
@@ -47,31 +58,31 @@ TEST(UvSphere, BackPoleNeverGivesVOneBecausePiInvIsShort) {
   // > 0, so u = 1 - beta = 0.5000000002887.
   const UvSurface r = getUVSphere1991({0.0, 0.0, 1.0});
   EXPECT_EQ(r.surface, 0);
-  EXPECT_DOUBLE_EQ(r.v, kPi * kPiInv);
+  EXPECT_DOUBLE_EQ(r.v, kPi * kPiInv1991);
   EXPECT_NE(r.v, 1.0);
-  EXPECT_DOUBLE_EQ(r.u, 1.0 - (kPi / 2) * kPiInv);
+  EXPECT_DOUBLE_EQ(r.u, 1.0 - (kPi / 2) * kPiInv1991);
   EXPECT_NEAR(r.u, 0.5000000002887, 1e-12);
 }
 
 TEST(UvSphere, EquatorPoints) {
-  const double vEq = (kPi / 2) * kPiInv;  // alpha = acos(Roundoff(-0.0)) = pi/2
+  const double vEq = (kPi / 2) * kPiInv1991;  // alpha = acos(Roundoff(-0.0)) = pi/2
   // (1,0,0): sin(pi/2) = 1, acos(Roundoff(1)) = 0 -> beta 0; y = 0 is not
   // > 0, so u = 1 - 0 = 1 (K26: the y <= 0 side is mirrored).
   expectUvs(getUVSphere1991({1.0, 0.0, 0.0}), 1.0, vEq, 0);
   // (0,1,0): beta = acos(0)*PiInv = 0.4999999997; y > 0 -> u = beta. Q5: a
   // quarter turn is u ~ 0.5, not 0.25 (PiInv, not TwoPiInv).
-  expectUvs(getUVSphere1991({0.0, 1.0, 0.0}), (kPi / 2) * kPiInv, vEq, 0);
+  expectUvs(getUVSphere1991({0.0, 1.0, 0.0}), (kPi / 2) * kPiInv1991, vEq, 0);
   // (-1,0,0): beta = pi*PiInv = 0.99999999942; u = 1 - beta = 5.77e-10.
-  expectUvs(getUVSphere1991({-1.0, 0.0, 0.0}), 1.0 - kPi * kPiInv, vEq, 0);
+  expectUvs(getUVSphere1991({-1.0, 0.0, 0.0}), 1.0 - kPi * kPiInv1991, vEq, 0);
   // (0,-1,0): u = 1 - 0.4999999997 = 0.5000000003.
-  expectUvs(getUVSphere1991({0.0, -1.0, 0.0}), 1.0 - (kPi / 2) * kPiInv, vEq, 0);
+  expectUvs(getUVSphere1991({0.0, -1.0, 0.0}), 1.0 - (kPi / 2) * kPiInv1991, vEq, 0);
 }
 
 TEST(UvSphere, GeneralPointBothSidesOfY) {
   // n = (0.48, 0.64, -0.6) (unit: .2304+.4096+.36 = 1). alpha = acos(0.6),
   // v = acos(0.6)*PiInv = 0.29516723513; sin(alpha) = 0.8, 0.48/0.8 = 0.6,
   // beta = acos(0.6)*PiInv; y > 0 -> u = beta.
-  const double b = std::acos(0.6) * kPiInv;
+  const double b = std::acos(0.6) * kPiInv1991;
   expectUvs(getUVSphere1991({0.48, 0.64, -0.6}), b, b, 0, 1e-12);
   expectUvs(getUVSphere1991({0.48, -0.64, -0.6}), 1.0 - b, b, 0, 1e-12);
 }
@@ -88,8 +99,8 @@ TEST(UvSphere, CastRayNormalisesTheHitPointInsideOrOutside) {
   }
   const auto r = inverseMap1991('S', {0.96, 1.28, -1.2});  // 2 * (0.48, 0.64, -0.6)
   ASSERT_TRUE(r.has_value());
-  EXPECT_NEAR(r->u, std::acos(0.6) * kPiInv, 1e-12);
-  EXPECT_NEAR(r->v, std::acos(0.6) * kPiInv, 1e-12);
+  EXPECT_NEAR(r->u, std::acos(0.6) * kPiInv1991, 1e-12);
+  EXPECT_NEAR(r->v, std::acos(0.6) * kPiInv1991, 1e-12);
 }
 
 TEST(UvSphere, RoundoffSnapsNearThePole) {
@@ -168,16 +179,23 @@ TEST(UvCube, CastRayAppliesE44WhenNoFaceMatches) {
 TEST(UvCylinder, Body) {
   // u = acos(Roundoff(x))*TwoPiInv, 1-u when y < 0; v = z; surface 0.
   expectUvs(getUVCylinder1991({1.0, 0.0, 0.5}), 0.0, 0.5, 0);
-  expectUvs(getUVCylinder1991({0.0, 1.0, 0.25}), kQuarter, 0.25, 0);          // 0.2499999323
-  expectUvs(getUVCylinder1991({-1.0, 0.0, 0.75}), kPi * kTwoPiInv, 0.75, 0);  // 0.49999986
-  expectUvs(getUVCylinder1991({0.0, -1.0, 0.5}), 1.0 - kQuarter, 0.5, 0);     // 0.7500000677
+  expectUvs(getUVCylinder1991({0.0, 1.0, 0.25}), kQuarter, 0.25, 0);              // 0.2499999323
+  expectUvs(getUVCylinder1991({-1.0, 0.0, 0.75}), kPi * kTwoPiInv1991, 0.75, 0);  // 0.49999986
+  expectUvs(getUVCylinder1991({0.0, -1.0, 0.5}), 1.0 - kQuarter, 0.5, 0);         // 0.7500000677
   // (0.6,-0.8): 1 - acos(0.6)*TwoPiInv = 0.85241642231.
-  expectUvs(getUVCylinder1991({0.6, -0.8, 0.5}), 1.0 - std::acos(0.6) * kTwoPiInv, 0.5, 0);
+  expectUvs(getUVCylinder1991({0.6, -0.8, 0.5}), 1.0 - std::acos(0.6) * kTwoPiInv1991, 0.5, 0);
+}
+
+TEST(UvCylinder, TwoPiInvShowsInTheQuarterTurn) {
+  // acos(0)*0.1591549 = 1.5707963267949*0.1591549 = 0.2499999323114, and
+  // pi*0.1591549 = 0.4999998646228: a quarter and a half turn fall short.
+  EXPECT_NEAR(getUVCylinder1991({0.0, 1.0, 0.5}).u, 0.2499999323114, 1e-12);
+  EXPECT_NEAR(getUVCylinder1991({-1.0, 0.0, 0.5}).u, 0.4999998646228, 1e-12);
 }
 
 TEST(UvCylinder, BodyInsideAndOutside) {
   // Interior point: the body formula still applies: acos(0.5)*TwoPiInv.
-  expectUvs(getUVCylinder1991({0.5, 0.0, 0.5}), (kPi / 3) * kTwoPiInv, 0.5, 0, 1e-15);
+  expectUvs(getUVCylinder1991({0.5, 0.0, 0.5}), (kPi / 3) * kTwoPiInv1991, 0.5, 0, 1e-15);
   // x = 1 + 5e-11 is snapped to 1 by Roundoff: u = 0.
   expectUvs(getUVCylinder1991({1.0 + 5e-11, 0.0, 0.5}), 0.0, 0.5, 0);
   // x = 1 + 1e-9 or 1.5 (outside): acos(>1) = NaN.
@@ -194,7 +212,7 @@ TEST(UvCylinder, BottomCap) {
   expectUvs(getUVCylinder1991({0.5, 0.0, 0.0}), 0.0, 0.5, 1);
   expectUvs(getUVCylinder1991({0.0, 0.5, 0.0}), kQuarter, 0.5, 1);
   expectUvs(getUVCylinder1991({0.0, -0.5, 0.0}), 1.0 - kQuarter, 0.5, 1);
-  expectUvs(getUVCylinder1991({-0.5, 0.0, 0.0}), kPi * kTwoPiInv, 0.5, 1);
+  expectUvs(getUVCylinder1991({-0.5, 0.0, 0.0}), kPi * kTwoPiInv1991, 0.5, 1);
   // z within the negative Roundoff window still counts as the cap.
   expectUvs(getUVCylinder1991({0.5, 0.0, -5e-10}), 0.0, 0.5, 1);
   // ... but z = 5e-10 is body.
@@ -206,7 +224,7 @@ TEST(UvCylinder, TopCap) {
   expectUvs(getUVCylinder1991({0.5, 0.0, 1.0}), 1.0, 0.5, 2);
   expectUvs(getUVCylinder1991({0.0, 0.5, 1.0}), 1.0 - kQuarter, 0.5, 2);
   expectUvs(getUVCylinder1991({0.0, -0.5, 1.0}), kQuarter, 0.5, 2);
-  expectUvs(getUVCylinder1991({-0.5, 0.0, 1.0}), 1.0 - kPi * kTwoPiInv, 0.5, 2);
+  expectUvs(getUVCylinder1991({-0.5, 0.0, 1.0}), 1.0 - kPi * kTwoPiInv1991, 0.5, 2);
 }
 
 TEST(UvCylinder, RimEdgesBelongToTheCaps) {
@@ -239,7 +257,7 @@ TEST(UvCone, Cap) {
   expectUvs(getUVCone1991({0.5, 0.0, 1.0}), 1.0, 0.5, 1);
   expectUvs(getUVCone1991({0.0, 0.5, 1.0}), 1.0 - kQuarter, 0.5, 1);
   expectUvs(getUVCone1991({0.0, -0.5, 1.0}), 1.0 - (1.0 - kQuarter), 0.5, 1);
-  expectUvs(getUVCone1991({-0.5, 0.0, 1.0}), 1.0 - kPi * kTwoPiInv, 0.5, 1);
+  expectUvs(getUVCone1991({-0.5, 0.0, 1.0}), 1.0 - kPi * kTwoPiInv1991, 0.5, 1);
   expectUvs(getUVCone1991({1.0, 0.0, 1.0}), 1.0, 0.0, 1);          // rim: cap wins
   expectUvs(getUVCone1991({0.5, 0.0, 1.0 - 5e-11}), 1.0, 0.5, 1);  // snapped
   const UvSurface centre = getUVCone1991({0.0, 0.0, 1.0});
@@ -252,10 +270,10 @@ TEST(UvCone, Body) {
   // v = z; u = acos(Roundoff(x/z))*TwoPiInv (z != 0), 1-u when y < 0.
   expectUvs(getUVCone1991({0.5, 0.0, 0.5}), 0.0, 0.5, 0);
   expectUvs(getUVCone1991({0.0, 0.25, 0.25}), kQuarter, 0.25, 0);
-  expectUvs(getUVCone1991({-0.25, 0.0, 0.25}), kPi * kTwoPiInv, 0.25, 0);
+  expectUvs(getUVCone1991({-0.25, 0.0, 0.25}), kPi * kTwoPiInv1991, 0.25, 0);
   expectUvs(getUVCone1991({0.0, -0.5, 0.5}), 1.0 - kQuarter, 0.5, 0);
   // 0.3/0.5 = 0.6 exactly (0.6 is twice 0.3 in binary): 1 - acos(0.6)*TwoPiInv.
-  expectUvs(getUVCone1991({0.3, -0.4, 0.5}), 1.0 - std::acos(0.6) * kTwoPiInv, 0.5, 0);
+  expectUvs(getUVCone1991({0.3, -0.4, 0.5}), 1.0 - std::acos(0.6) * kTwoPiInv1991, 0.5, 0);
 }
 
 TEST(UvCone, ApexAndZeroHeight) {
@@ -266,7 +284,7 @@ TEST(UvCone, ApexAndZeroHeight) {
 
 TEST(UvCone, InsideAndOutside) {
   // Interior: x/z = 0.5 -> acos(0.5)*TwoPiInv.
-  expectUvs(getUVCone1991({0.25, 0.0, 0.5}), (kPi / 3) * kTwoPiInv, 0.5, 0, 1e-15);
+  expectUvs(getUVCone1991({0.25, 0.0, 0.5}), (kPi / 3) * kTwoPiInv1991, 0.5, 0, 1e-15);
   // Outside: x/z = 2 -> NaN (K28).
   const UvSurface r = getUVCone1991({1.0, 0.0, 0.5});
   EXPECT_EQ(r.surface, 0);
@@ -284,7 +302,7 @@ TEST(UvCone, InsideAndOutside) {
 //   front: u = (x - y/2)/(1 - y), v = 1 - y          (u: parallelogram branch,
 //   back:  u = (1 - x - y/2)/(1 - y), v = 1 - y       v: quadratic branch with
 //   left:  u = (1 - z - y/2)/(1 - y), v = 1 - y       kA = (1+y)/2, kB = y)
-//   right (printed polygon (1,0,0),(1,1,0),apex, shading.md D1):
+//   right (printed polygon (1,0,0),(1,1,0),apex, shading.md S1):
 //          u = 1.25 (z - y/2)/(z - 0.5), v = 1 - 2z for z < 0.5
 //          (kA = 0.5 + z, kB = 2z).
 const double kRho = kPyramidPlaneA / kPyramidPlaneB;
@@ -344,7 +362,7 @@ TEST(UvPyramid, SlantEdgesTakeTheFirstFaceInListingOrder) {
 }
 
 TEST(UvPyramid, PrintedConstantMakesTheExactLeftPlaneMissAboveY02) {
-  // shading.md D2: on the exact plane x = y/2, x*b - y*a = y*(b/2 - a)
+  // shading.md S2: on the exact plane x = y/2, x*b - y*a = y*(b/2 - a)
   // = y * 5.0e-10, which is > 1e-10 (positive Roundoff window) for y > 0.2.
   expectUvs(getUVPyramid1991({0.25, 0.5, 0.5}), 0.0, 0.0, -1);
   // At y = 0.1 it is 5.0e-11: matched.
@@ -406,6 +424,21 @@ TEST(UvPoly, QuadraticUWithRootSwitch) {
   uv = getUVPoly1991({0, 0, 1}, 4, {-1, 0, 0}, trap);
   EXPECT_DOUBLE_EQ(uv.u, 2.0);
   EXPECT_DOUBLE_EQ(uv.v, 1.0);
+}
+
+TEST(UvPoly, OnlyTheUPartRoundsItsCoefficients) {
+  // u part (trapezoid with dU = (0,2,-1)) at (2e-11, 0): kA = Roundoff(1 +
+  // 1e-11) = 1, kB = Roundoff(4e-11) = 0, tmp = 1, u = 1 - 1 = 0 exactly
+  // (unrounded it would be 2e-11).
+  const Polygon trapU = {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 2, 0}};
+  EXPECT_EQ(getUVPoly1991({0, 0, 1}, 4, {2e-11, 0, 0}, trapU).u, 0.0);
+  // v part (trapezoid with dV = (0,-2,1)) at (0, 2e-11): kA = 1 + 1e-11 and
+  // kB = 4e-11 are NOT rounded (as printed), tmp = sqrt(1 - 2e-11)
+  // = 1 - 1e-11, v = 1 - 2e-11 (rounded coefficients would give exactly 1).
+  const Polygon trapV = {Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 1, 0}};
+  const double v = getUVPoly1991({0, 0, 1}, 4, {0, 2e-11, 0}, trapV).v;
+  EXPECT_NE(v, 1.0);
+  EXPECT_NEAR(v, 1.0 - 2e-11, 1e-14);
 }
 
 TEST(UvPoly, TriangleCopiesTheApexIntoTheFourthVertex) {

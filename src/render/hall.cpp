@@ -1,0 +1,103 @@
+#include "src/render/hall.h"
+
+#include <cmath>
+
+#include "src/math/listing_math.h"
+
+namespace prime {
+
+double fsr1991(double surfColor, double iL, double ang) {
+  double tmp;
+  double f;
+  const double f0 = surfColor;  // fresnel value at 0 degrees
+  const double f90 = 0.0;       // 90 degrees
+  const double fAng = cosDeg(ang) * surfColor;
+  if ((f90 - f0) == 0.0) {
+    tmp = 0.0;
+  } else {
+    tmp = (fAng - f0) / (f90 - f0);
+  }
+  if (tmp < 0.0) {
+    f = iL * f0;
+  } else {
+    f = iL * (f0 + (1.0 - f0) * tmp);
+  }
+  return f;
+}
+
+double fst1991(double surfColor, double iL, double ang) {
+  return 1.0 - fsr1991(surfColor, iL, ang);
+}
+
+Vec3 hj1991(const Vec3& l, const Vec3& v) {
+  Vec3 h{};
+  const double tmp = std::sqrt(sqr(l[X] + v[X]) + sqr(l[Y] + v[Y]) + sqr(l[Z] + v[Z]));
+  for (int i = X; i < W; i++) {  // E18: `i < M` read as `i < W`
+    h[i] = (l[i] + v[i]) / tmp;
+  }
+  unitVector(h, h);
+  return h;
+}
+
+Vec3 hjPrime1991(const Vec3& l, const Vec3& v, double indx) {
+  Vec3 h{};
+  const double tmp = indx - 1.0;  // K13: indx == 1 divides by zero
+  for (int i = X; i < W; i++) {   // E18
+    h[i] = (v[i] + indx * l[i]) / tmp;
+  }
+  unitVector(h, h);
+  return h;
+}
+
+double processWavelength1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                             double iST, double fDR, double tT, double sT, double kRH, double kTH,
+                             double indx, const HallGeometry& geom,
+                             std::span<const HallLight> lights, const Rgb& ambient) {
+  const auto lam = static_cast<std::size_t>(lambda);
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+  double d = 0.0;
+  const double kSR = 1.0 - kDR;
+  const double kST = 1.0 - kDT;
+  const double fDT = 1.0 - fDR;
+  const Vec3& n = geom.n;
+  for (const HallLight& light : lights) {  // calculate summations
+    // MakeVector(light[i].pt, pt, l): l = pt - light (K10), then UnitVector;
+    // a zero l (light at the point) stays zero.
+    Vec3 l = geom.pt - light.pt;
+    unitVector(l, l);
+    const Vec3 h = hj1991(l, geom.v);
+    const Vec3 h_ = hjPrime1991(l, geom.v, indx);
+    const double dotHj = dot(n, h);
+    const double dotHj_ = dot(n, h_);
+    const double vD = dot(n, l);  // E16: a double
+    const double iL = light.intensity[lam];
+    a += iL * fsr1991(surfColor, iL, acosDeg(dotHj)) * std::pow(dotHj, kRH);
+    b += iL * fst1991(surfColor, iL, acosDeg(dotHj_)) * std::pow(dotHj_, kTH);
+    c += iL * vD;
+    d += iL * -vD;
+  }
+  const double ia = ambient[lam];
+  // E17/Q8: `FST(surfColor,IA[lambda],0.0) * pow(tT,sT)`.
+  return (kSR * a) + (kST * b) + (kDR * fDR * (ia + c)) + (kDT * fDT * (ia + d)) +
+         (kSR * iSR * fsr1991(surfColor, ia, acosDeg(dot(n, geom.r)))) +
+         (kST * iST * fst1991(surfColor, ia, 0.0) * std::pow(tT, sT));
+}
+
+Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
+                     double sT, const HallGeometry& geom, std::span<const HallLight> lights,
+                     const Rgb& ambient) {
+  Rgb color{};
+  for (int i = 0; i < 3; i++) {
+    const auto k = static_cast<std::size_t>(i);
+    color[k] = processWavelength1991(i, surfColor[k], hue.kDR, hue.kDT, iSR[k], iST[k], hue.fDR[k],
+                                     hue.tT, sT, hue.kRH, hue.kTH, hue.indx, geom, lights, ambient);
+    if (color[k] >= 1.0) {  // K15: only >= 1.0 is clamped
+      color[k] = 0.999999;
+    }
+  }
+  return color;
+}
+
+}  // namespace prime

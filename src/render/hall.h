@@ -1,0 +1,79 @@
+// The Hall shading model exactly as the 1991 listing codes it (Hall module,
+// lines 3967-4218): ProcessWavelength, FSR, FST, Hj, Hj_, ProcessColor.
+// Pure functions: the listing's globals (light[], numLights, IA) are passed in.
+//
+// Conventions of the caller (CastRay, lines 6850-6866), kept as they are:
+//   pt  surface point in world space (surfPt)
+//   v   the incident ray direction, unit, eye -> surface (ray->xD, E41)
+//   n   the unit world normal (nearestNorm * transform, K4)
+//   r   the reflected ray's unit direction (reflectedRay->xD)
+//   t   the transmitted ray's direction; UNUSED (its only use is commented
+//       out in the listing, E17)
+//   surfColor  the texel of the map per channel (ReadMap), K11
+//   iSR, iST   the colours returned by the reflected / transmitted CastRays
+//   sT  distance travelled inside the object by the transmitted ray (E45)
+// K10: l = pt - light (light -> surface), so on lit front faces the diffuse
+// reflection term is NEGATIVE and pow() gets negative bases.
+// Floating-point domain errors give IEEE NaN/Inf (X2, Q11).
+#pragma once
+#include <array>
+#include <span>
+
+#include "src/math/vec.h"
+
+namespace prime {
+
+using Rgb = std::array<double, 3>;
+
+// Hue.h (the object's shading coefficients), lines 2380-2392.
+struct HallHue {
+  double kDR = 0.0;   // diffuse reflectance coefficient (kSR = 1 - kDR)
+  double kDT = 0.0;   // diffuse transmission coefficient (kST = 1 - kDT)
+  Rgb fDR{};          // diffuse reflectance curve per channel (fDT = 1 - fDR)
+  double tT = 0.0;    // transmissivity per unit length (K14)
+  double kRH = 0.0;   // specular reflection highlight exponent
+  double kTH = 0.0;   // specular transmission highlight exponent
+  double indx = 0.0;  // refractive index (K13: 1.0 divides by zero)
+};
+
+// Lights (Light.h), lines 2396-2403: a point light; intensity per channel.
+struct HallLight {
+  Vec3 pt{};
+  Rgb intensity{};
+};
+
+// Geometry at the hit (see the conventions above).
+struct HallGeometry {
+  Vec3 pt{};
+  Vec3 v{};
+  Vec3 n{};
+  Vec3 r{};
+  Vec3 t{};
+};
+
+// FSR(surfColor, iL, ang), lines 4078-4114 (K12): with f0 = surfColor and
+// f90 = 0, tmp = (Cos(ang)*f0 - f0) / (0 - f0); tmp = 0 when f0 == 0;
+// f = iL*f0 if tmp < 0, else iL*(f0 + (1 - f0)*tmp). `ang` in degrees.
+double fsr1991(double surfColor, double iL, double ang);
+// FST = 1 - FSR (can be negative), lines 4116-4127.
+double fst1991(double surfColor, double iL, double ang);
+// Hj(l, v): (l + v) / |l + v|, then UnitVector (E18: loop to W).
+Vec3 hj1991(const Vec3& l, const Vec3& v);
+// Hj_(l, v, indx): (v + indx*l) / (indx - 1), then UnitVector (E18, K13).
+Vec3 hjPrime1991(const Vec3& l, const Vec3& v, double indx);
+
+// ProcessWavelength, lines 4000-4076, as repaired by E16 (vD is a double)
+// and E17/Q8 (the last term is kST*iST*FST(surfColor, IA, 0.0)*pow(tT, sT)).
+// `lambda` selects the channel of the lights' intensities and of IA.
+double processWavelength1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                             double iST, double fDR, double tT, double sT, double kRH, double kTH,
+                             double indx, const HallGeometry& geom,
+                             std::span<const HallLight> lights, const Rgb& ambient);
+
+// ProcessColor, lines 4178-4210: the three channels; values >= 1.0 become
+// 0.999999; negatives and NaN are NOT clamped (K15).
+Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
+                     double sT, const HallGeometry& geom, std::span<const HallLight> lights,
+                     const Rgb& ambient);
+
+}  // namespace prime
