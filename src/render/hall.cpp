@@ -49,10 +49,10 @@ Vec3 hjPrime1991(const Vec3& l, const Vec3& v, double indx) {
   return h;
 }
 
-double processWavelength1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
-                             double iST, double fDR, double tT, double sT, double kRH, double kTH,
-                             double indx, const HallGeometry& geom,
-                             std::span<const HallLight> lights, const Rgb& ambient) {
+HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR, double iST,
+                        double fDR, double tT, double sT, double kRH, double kTH, double indx,
+                        const HallGeometry& geom, std::span<const HallLight> lights,
+                        const Rgb& ambient) {
   const auto lam = static_cast<std::size_t>(lambda);
   double a = 0.0;
   double b = 0.0;
@@ -79,10 +79,36 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
     d += iL * -vD;
   }
   const double ia = ambient[lam];
+  HallTerms t;
+  t.specularReflection = kSR * a;
+  t.specularTransmission = kST * b;
+  t.diffuseReflection = kDR * fDR * (ia + c);
+  t.diffuseTransmission = kDT * fDT * (ia + d);
+  t.reflected = kSR * iSR * fsr1991(surfColor, ia, acosDeg(dot(n, geom.r)));
   // E17/Q8: `FST(surfColor,IA[lambda],0.0) * pow(tT,sT)`.
-  return (kSR * a) + (kST * b) + (kDR * fDR * (ia + c)) + (kDT * fDT * (ia + d)) +
-         (kSR * iSR * fsr1991(surfColor, ia, acosDeg(dot(n, geom.r)))) +
-         (kST * iST * fst1991(surfColor, ia, 0.0) * std::pow(tT, sT));
+  t.transmitted = kST * iST * fst1991(surfColor, ia, 0.0) * std::pow(tT, sT);
+  return t;
+}
+
+double processWavelength1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                             double iST, double fDR, double tT, double sT, double kRH, double kTH,
+                             double indx, const HallGeometry& geom,
+                             std::span<const HallLight> lights, const Rgb& ambient) {
+  return hallTerms1991(lambda, surfColor, kDR, kDT, iSR, iST, fDR, tT, sT, kRH, kTH, indx, geom,
+                       lights, ambient)
+      .sum();
+}
+
+std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
+                                          const Rgb& iST, double sT, const HallGeometry& geom,
+                                          std::span<const HallLight> lights, const Rgb& ambient) {
+  std::array<HallTerms, 3> terms;
+  for (int i = 0; i < 3; i++) {
+    const auto k = static_cast<std::size_t>(i);
+    terms[k] = hallTerms1991(i, surfColor[k], hue.kDR, hue.kDT, iSR[k], iST[k], hue.fDR[k], hue.tT,
+                             sT, hue.kRH, hue.kTH, hue.indx, geom, lights, ambient);
+  }
+  return terms;
 }
 
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,

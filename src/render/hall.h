@@ -62,6 +62,27 @@ Vec3 hj1991(const Vec3& l, const Vec3& v);
 // Hj_(l, v, indx): (v + indx*l) / (indx - 1), then UnitVector (E18, K13).
 Vec3 hjPrime1991(const Vec3& l, const Vec3& v, double indx);
 
+// The six terms of Hall's sum as ProcessWavelength returns it (4065-4071),
+// kept apart so `prime probe` can show each; sum() adds them in the listing's
+// left-to-right order, so it is bit-identical to the printed expression.
+struct HallTerms {
+  double specularReflection = 0;    // kSR * sum(Ij * FSR * (N.Hj)^kRH)
+  double specularTransmission = 0;  // kST * sum(Ij * FST * (N.Hj')^kTH)
+  double diffuseReflection = 0;     // kDR * fDR * (IA + sum(Ij * N.L))   (K10: N.L < 0 when lit)
+  double diffuseTransmission = 0;   // kDT * fDT * (IA + sum(Ij * -N.L))
+  double reflected = 0;             // kSR * iSR * FSR(surf, IA, acos(N.R))
+  double transmitted = 0;           // kST * iST * FST(surf, IA, 0) * tT^sT
+  double sum() const {
+    return specularReflection + specularTransmission + diffuseReflection + diffuseTransmission +
+           reflected + transmitted;
+  }
+};
+
+HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR, double iST,
+                        double fDR, double tT, double sT, double kRH, double kTH, double indx,
+                        const HallGeometry& geom, std::span<const HallLight> lights,
+                        const Rgb& ambient);
+
 // ProcessWavelength, lines 4000-4076, as repaired by E16 (vD is a double)
 // and E17/Q8 (the last term is kST*iST*FST(surfColor, IA, 0.0)*pow(tT, sT)).
 // `lambda` selects the channel of the lights' intensities and of IA.
@@ -75,5 +96,10 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
                      const Rgb& ambient);
+
+// The terms of all three channels (before ProcessColor's clamp).
+std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
+                                          const Rgb& iST, double sT, const HallGeometry& geom,
+                                          std::span<const HallLight> lights, const Rgb& ambient);
 
 }  // namespace prime

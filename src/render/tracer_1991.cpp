@@ -238,6 +238,25 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
   const Rgb color = processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
                                      {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+  if (probe) {
+    const auto terms = hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                                        {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+    static const char* kChannel[3] = {"R", "G", "B"};
+    std::string jsonTerms = "[";
+    for (int c = 0; c < 3; ++c) {
+      const HallTerms& t = terms[c];
+      probe->add(depth - 1, "hall",
+                 std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) + " + specular trans " +
+                     fmt(t.specularTransmission) + " + diffuse refl " + fmt(t.diffuseReflection) +
+                     " + diffuse trans " + fmt(t.diffuseTransmission) + " + reflected " + fmt(t.reflected) +
+                     " + transmitted " + fmt(t.transmitted) + " = " + fmt(t.sum()),
+                 "{\"channel\":\"" + std::string(kChannel[c]) + "\",\"specularReflection\":" +
+                     json(t.specularReflection) + ",\"specularTransmission\":" + json(t.specularTransmission) +
+                     ",\"diffuseReflection\":" + json(t.diffuseReflection) + ",\"diffuseTransmission\":" +
+                     json(t.diffuseTransmission) + ",\"reflected\":" + json(t.reflected) +
+                     ",\"transmitted\":" + json(t.transmitted) + ",\"sum\":" + json(t.sum()) + "}");
+    }
+  }
   if (probe)
     probe->add(depth - 1, "shade",
                "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
