@@ -43,8 +43,9 @@ class Modeller {
     const std::size_t fileSize = n * kPrimSizePacked;
     if (options_.limitPrimFileTo16Bits && fileSize > 32767)
       throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",
-                       "at most 113 primitives and bounding volumes (PrimFile <= 32767 bytes: "
-                       "NewPrimNum keeps ftell() in a 16-bit int, errata E40/K37)",
+                       "at most 113 primitives and bounding volumes (numbers 0..112: NewPrimNum keeps "
+                       "ftell() in a 16-bit int, which wraps once PrimFile passes 32767 bytes, errata "
+                       "E40/K37; --no-16bit-limit numbers on)",
                        "primitive number " + std::to_string(n));
     if (n > 32767)
       throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",

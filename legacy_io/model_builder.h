@@ -26,7 +26,8 @@ namespace prime::io {
 struct ModelOptions {
   // CopyPrim never sets the copy's type (K33): the copy keeps whatever the
   // recycled heap block held, which we model as the type of the Prim record
-  // built last (AddPrim, AddBound or CopyPrim). true: take the source's type.
+  // built last (AddPrim, AddBound, CopyPrim or CopyObj's TransferObj: each
+  // Mallocs and Frees one Prim-sized block). true: take the source's type.
   bool copyTypeFromSource = false;
   // NewPrimNum keeps ftell() in a 16-bit int (E40, K37): past 32767 bytes the
   // original failed. false lifts that limit (not the 1991 behaviour).

@@ -18,9 +18,9 @@ bool isPlainFileName(const std::string& name) {
 }
 
 std::string SceneDir::display(const fs::path& p) const {
-  std::error_code ec;
-  const fs::path rel = fs::relative(p, root_, ec);
-  return (root_ / (ec ? p : rel)).generic_string();
+  // Lexical only: a symbolic link is shown by its own name, not its target.
+  const fs::path rel = p.lexically_relative(root_);
+  return (rel.empty() || *rel.begin() == ".." ? p : root_ / rel).lexically_normal().generic_string();
 }
 
 fs::path SceneDir::file(const std::string& sub, const std::string& name,
@@ -28,7 +28,7 @@ fs::path SceneDir::file(const std::string& sub, const std::string& name,
   if (!isPlainFileName(name))
     throw InputError({origin, std::nullopt, std::nullopt}, "file name",
                      "a plain file name inside the scene's " + sub +
-                         "/ directory (no '..', '/', '\\\\' or drive letters)",
+                         "/ directory (no '..', no '/' or '\\', no drive letter)",
                      "\"" + name + "\"");
   return root_ / sub / name;
 }

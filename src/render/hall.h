@@ -78,6 +78,28 @@ struct HallTerms {
   }
 };
 
+// The channel-independent part of ProcessWavelength for one hit: per light,
+// Cos(ACos(N.Hj)) and Cos(ACos(N.Hj')) as FSR/FST see them, (N.Hj)^kRH,
+// (N.Hj')^kTH and N.L; and the reflected ray's Cos(ACos(N.R)). Identical
+// values to computing them per channel, as the listing did.
+struct HallPrepared {
+  struct Light {
+    double cosHj = 0, cosHj_ = 0, powHj = 0, powHj_ = 0, vD = 0;
+  };
+  std::array<Light, 10> light{};  // Global.c: Light light[10]
+  int count = 0;
+  double cosReflected = 0, cosZero = 1;
+};
+
+HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight> lights,
+                             double indx, double kRH, double kTH);
+HallTerms hallTermsPrepared1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                                double iST, double fDR, double tT, double sT,
+                                const HallPrepared& prepared, std::span<const HallLight> lights,
+                                const Rgb& ambient);
+// FSR with the angle's cosine already taken (FSR computes Cos(ang) first).
+double fsrFromCos1991(double surfColor, double iL, double cosAng);
+
 HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR, double iST,
                         double fDR, double tT, double sT, double kRH, double kTH, double indx,
                         const HallGeometry& geom, std::span<const HallLight> lights,

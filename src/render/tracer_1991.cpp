@@ -14,6 +14,7 @@ constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
 }
 
 Tracer1991::Tracer1991(const Scene& scene, TraceOptions options) : scene_(scene), options_(options) {
+  if (options_.skipUnneededWork) options_.csg.skipRightWhenLeftEmpty = true;  // Q4
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
 }
 
@@ -225,13 +226,20 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
                    json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
   }
 
-  const Ray reflected = reflectedRay(ray, nearest, n);
+  // kSR = 1 - kDR and kST = 1 - kDT weigh the reflected and transmitted
+  // colours in Hall's sum; where one is 0 its ray tree cannot change the
+  // pixel (see TraceOptions::skipUnneededWork).
+  const bool skip = options_.skipUnneededWork;
+  const bool wantReflected = !skip || 1.0 - obj.hue.kDR != 0.0;
+  const bool wantTransmitted = !skip || 1.0 - obj.hue.kDT != 0.0;
+  const Ray reflected = reflectedRay(ray, nearest, n);  // its direction is a Hall input
   double sT = 0.0;
-  const Ray transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
+  Ray transmitted{surfPt, ray.d};  // unused by Hall (S13) when not traced
+  if (wantTransmitted) transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
   Rgb colorReflected{}, colorTransmitted{};
   if (depth++ < options_.maxDepth) {  // K20
-    colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected);
-    colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted);
+    if (wantReflected) colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected);
+    if (wantTransmitted) colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted);
   }
   const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
                     obj.hue.tT,  obj.hue.kRH, obj.hue.kTH, obj.hue.indx};

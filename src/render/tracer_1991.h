@@ -25,6 +25,14 @@ struct TraceOptions {
   int maxDepth = 5;            // Define.h MaxDepth
   int tirCap = 1000;           // E59: iterations of the TIR loop before giving up; 0 = no cap
   Csg1991Options csg;          // Q4 alternative etc.
+  // Skip work whose result the listing multiplies by zero or throws away:
+  // no reflected ray where kSR = 1 - kDR = 0, no transmitted ray (nor the
+  // walk through the object) where kST = 1 - kDT = 0, and Roth's early exit
+  // (Q4) for '-' and '&' with an empty left list. The pixels are identical
+  // unless a skipped subtree would have produced NaN/Inf or a fatal listing
+  // error (E57), which the original could not render either (docs/deviations.md).
+  // false: do every piece of work the listing did (for ray counts and checks).
+  bool skipUnneededWork = true;
 };
 
 class Tracer1991 {

@@ -24,12 +24,10 @@ std::string primLabel(int n, const ScenePrim& p) {
 
 // Reads obj/O<n> and checks its CSG tree against the primitive table.
 SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<ScenePrim>& prims) {
-  const fs::path path = dir.root() / "obj" / ("O" + std::to_string(number));
+  const fs::path path =
+      dir.existingInput("obj", "O" + std::to_string(number),
+                        dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
   const std::string shown = dir.display(path);
-  if (!fs::exists(path))
-    throw InputError({dir.display(dir.root() / "obj" / "List"), std::nullopt, std::nullopt},
-                     "object " + std::to_string(number) + " is in the object list but " + shown +
-                         " does not exist");
   const io::ObjFile f = io::objFileFromBytes(io::readFileBytes(path.string()), shown);
   SceneObject obj;
   obj.number = number;
@@ -105,7 +103,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<Sc
 SceneTexture loadMap(const io::SceneDir& dir, int number) {
   SceneTexture m;
   for (int c = 0; c < 3; ++c) {
-    const fs::path path = dir.root() / "map" / io::mapFileName(number, c);
+    const fs::path path = dir.existingInput("map", io::mapFileName(number, c), "prime trace");
     const io::MapFile f = io::mapFileFromBytes(io::readFileBytes(path.string()), dir.display(path));
     if (c > 0 && (f.header.uScale != m.uScale || f.header.vScale != m.vScale))
       throw InputError({dir.display(path), std::nullopt, 0}, "MapHeader",
@@ -129,7 +127,8 @@ Scene loadScene(const io::SceneDir& dir) {
   scene.name = dir.root().filename().string();
   if (scene.name.empty() || scene.name == ".") scene.name = fs::absolute(dir.root()).lexically_normal().filename().string();
 
-  const fs::path primPath = dir.root() / "prim" / "PrimFile";
+  // Databases are read through existingInput too: no symbolic links.
+  const fs::path primPath = dir.existingInput("prim", "PrimFile", "prime trace");
   const io::PrimFile primFile = io::primFileFromBytes(io::readFileBytes(primPath.string()), dir.display(primPath));
   for (const auto& p : primFile.prims) {
     ScenePrim sp;
@@ -141,7 +140,7 @@ Scene loadScene(const io::SceneDir& dir) {
     scene.prims.push_back(sp);
   }
 
-  const fs::path listPath = dir.root() / "obj" / "List";
+  const fs::path listPath = dir.existingInput("obj", "List", "prime trace");
   const io::ObjList list = io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
   for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, scene.prims));
 
