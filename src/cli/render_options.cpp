@@ -24,6 +24,9 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
                 "Errata Q4 alternative: skip the right subtree when the left list is empty");
+  cmd->add_flag("--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
+                "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
+                "and every right CSG subtree (same pixels, more rays)");
   cmd->add_option("--palette", o.palette, "Colour mapping: listing (ColorNum, 3-3-2) or plate3 (16x16 red/green, X1)")
       ->check(CLI::IsMember({"listing", "plate3"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
