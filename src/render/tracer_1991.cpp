@@ -1,6 +1,7 @@
 #include "src/render/tracer_1991.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "src/geom/primitives_1991.h"
@@ -13,7 +14,8 @@ namespace {
 constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
 }
 
-Tracer1991::Tracer1991(const Scene& scene, TraceOptions options) : scene_(scene), options_(options) {
+Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
+    : scene_(scene), options_(options), bvh_(scene) {
   if (options_.skipUnneededWork) options_.csg.skipRightWhenLeftEmpty = true;  // Q4
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
 }
@@ -37,7 +39,12 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
 TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                              int depth) const {
   ++stats.objectTests;
+  const bool cull = options_.skipUnneededWork && !probe;
+  const Vec3 inv{1.0 / ray.d[0], 1.0 / ray.d[1], 1.0 / ray.d[2]};
   auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+    // A ray that misses the primitive's (padded) box ahead cannot hit it.
+    if (cull && bvh_.primBox(primNum).entry(ray, inv) == std::numeric_limits<double>::infinity())
+      return std::nullopt;
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
     PrimHit hit;
@@ -166,20 +173,29 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
 
   double nearest = kInfinity;
   Nearest best;
-  for (std::size_t k = 0; k < scene_.objects.size(); ++k) {
+  // One object of obj/List: its bound, its CSG list, and the listing's
+  // `t != 0.0 && t < nearest` with ties going to the earlier object.
+  auto consider = [&](int k) {
     const SceneObject& obj = scene_.objects[k];
-    if (!hitsBound(obj, ray, stats, probe, depth)) continue;
+    if (!hitsBound(obj, ray, stats, probe, depth)) return;
     const TList list = objectList(obj, ray, stats, probe, depth);
-    if (list.empty()) continue;
+    if (list.empty()) return;
     const double t = list.front().t;  // K30: the FIRST node, not the smallest
-    if (t != 0.0 && t < nearest) {
+    if (t != 0.0 && (t < nearest || (t == nearest && k < best.obj))) {
       nearest = t;
       best.t = t;
-      best.obj = static_cast<int>(k);
+      best.obj = k;
       best.prim = list.front().prim;
       best.surfType = list.front().surfType;
       unitVector(list.front().norm, best.norm);
     }
+  };
+  if (options_.skipUnneededWork && !probe) {
+    // Nearest boxes first; an object whose box starts beyond the nearest hit
+    // cannot win (its list's t values all lie in its box).
+    bvh_.traverse(ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+  } else {
+    for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }
   if (nearest == kInfinity) {
     if (probe) probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");

@@ -17,6 +17,7 @@
 #include "src/render/hall.h"
 #include "src/render/probe.h"
 #include "src/render/trace_stats.h"
+#include "src/scene/object_bvh.h"
 #include "src/scene/scene.h"
 
 namespace prime {
@@ -63,6 +64,7 @@ class Tracer1991 {
 
   const Scene& scene_;
   TraceOptions options_;
+  ObjectBvh bvh_;  // used when options_.skipUnneededWork
   std::vector<HallLight> lights_;
 };
 

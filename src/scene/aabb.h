@@ -1,0 +1,65 @@
+// World-space axis-aligned boxes around primitives and objects, used only to
+// skip work: a ray that misses a primitive's box cannot hit the primitive,
+// and every t in an object's Roth list is a point on one of its primitives.
+// Boxes are padded so that rounding in the primitive tests can never put a
+// reported hit outside its box.
+#pragma once
+#include <algorithm>
+#include <limits>
+
+#include "src/geom/ray.h"
+#include "src/scene/scene.h"
+
+namespace prime {
+
+struct Aabb {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()};
+
+  bool empty() const { return lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]; }
+  void add(const Vec3& p) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  }
+  void add(const Aabb& b) {
+    add(b.lo);
+    add(b.hi);
+  }
+  Aabb intersected(const Aabb& b) const {
+    Aabb r;
+    for (int i = 0; i < 3; ++i) {
+      r.lo[i] = std::max(lo[i], b.lo[i]);
+      r.hi[i] = std::min(hi[i], b.hi[i]);
+    }
+    return r;
+  }
+  Vec3 centre() const { return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}; }
+
+  // Entry parameter of the ray into the box for t >= 0 (0 when the origin is
+  // inside), or +infinity when the ray misses it ahead. `inv` = 1/d.
+  double entry(const Ray& ray, const Vec3& inv) const {
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      if (ray.d[i] == 0.0) {
+        if (ray.o[i] < lo[i] || ray.o[i] > hi[i]) return std::numeric_limits<double>::infinity();
+        continue;
+      }
+      double a = (lo[i] - ray.o[i]) * inv[i], b = (hi[i] - ray.o[i]) * inv[i];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+      if (!(t0 <= t1)) return std::numeric_limits<double>::infinity();
+    }
+    return t0;
+  }
+};
+
+// The unit primitive's box (S, C, N about the z axis; B and Y in the unit
+// cube) mapped by the primitive's transform, padded. Empty for an unknown type.
+Aabb primitiveBox(const ScenePrim& p);
+
+}  // namespace prime
