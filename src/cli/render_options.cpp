@@ -27,6 +27,16 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_flag("--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
                 "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
                 "and every right CSG subtree (same pixels, more rays)");
+  cmd->add_option("--samples", o.samples, "Regular N x N supersampling (listing: 1 ray per pixel)")
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--adaptive", o.adaptiveTolerance,
+                  "Whitted's adaptive supersampling: subdivide where the 5 rays differ by more than this")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--adaptive-levels", o.settings.sampling.maxLevel, "Subdivision levels for --adaptive (2)")
+      ->check(CLI::Range(0, 6));
+  cmd->add_option("--min-weight", o.settings.trace.minWeight,
+                  "Adaptive tree-depth control: do not cast rays weighing less than this (listing: 0, off)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--palette", o.palette, "Colour mapping: listing (ColorNum, 3-3-2) or plate3 (16x16 red/green, X1)")
       ->check(CLI::IsMember({"listing", "plate3"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
@@ -48,6 +58,14 @@ void finishRenderOptions(RenderOptions& o) {
     c.screenHeight = o.screen[1];
   }
   o.settings.mapping = o.palette == "plate3" ? ColorMapping::Plate3 : ColorMapping::Listing;
+  if (o.samples > 1) {
+    o.settings.sampling.mode = Sampling::Mode::Grid;
+    o.settings.sampling.gridN = o.samples;
+  }
+  if (o.adaptiveTolerance >= 0.0) {
+    o.settings.sampling.mode = Sampling::Mode::Adaptive;
+    o.settings.sampling.tolerance = o.adaptiveTolerance;
+  }
 }
 
 Scene prepareScene(const std::string& dir, const RenderOptions& o) {

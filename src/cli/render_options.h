@@ -15,6 +15,8 @@ struct RenderOptions {
   std::vector<int> screen;
   bool model = false;  // --model: run `prime model` first
   std::string palette = "listing";
+  int samples = 1;
+  double adaptiveTolerance = -1.0;  // < 0: off
 };
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o);

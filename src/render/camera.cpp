@@ -24,6 +24,8 @@ ListingCamera::ListingCamera(const CameraSettings& s) : s_(s) {
     stepAcross[i] = (s.windowRight[i] - s.windowLeft[i]) / static_cast<double>(numPixAcross_);
     stepDown[i] = (-s.windowLeft[i] / static_cast<double>(numPixDown_));  // K23
   }
+  stepAcross_ = stepAcross;
+  stepDown_ = stepDown;
   across_.assign(columns(), Vec3{});
   down_.assign(rows(), Vec3{});
   for (int j = 1; j < columns(); ++j)
@@ -39,6 +41,13 @@ Ray ListingCamera::primaryRay(int row, int column) const {
     const double curPt = s_.windowLeft[k] + across_[column][k] + down_[row][k];
     ray.d[k] = curPt - ray.o[k];  // MakeVector(xO, curPt)
   }
+  return ray;
+}
+
+Ray ListingCamera::sampleRay(int row, int column, double fx, double fy) const {
+  Ray ray = primaryRay(row, column);
+  if (fx != 0.0 || fy != 0.0)
+    for (int k = 0; k < 3; ++k) ray.d[k] += fx * stepAcross_[k] + fy * stepDown_[k];
   return ray;
 }
 

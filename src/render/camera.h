@@ -37,12 +37,17 @@ class ListingCamera {
   // The primary ray of (row, column): origin at the eye, direction to the
   // window point (MakeVector; CastRay normalises it).
   Ray primaryRay(int row, int column) const;
+  // A ray through the pixel's footprint, offset by (fx, fy) pixel steps
+  // across and down from the listing's sample point (|fx|, |fy| <= 0.5 for
+  // supersampling). sampleRay(r, c, 0, 0) == primaryRay(r, c).
+  Ray sampleRay(int row, int column, double fx, double fy) const;
   const CameraSettings& settings() const { return s_; }
 
  private:
   CameraSettings s_;
   int left_ = 0, top_ = 0, numPixAcross_ = 0, numPixDown_ = 0;
-  std::vector<Vec3> across_, down_;  // curAcross after j steps, curDown after i steps
+  std::vector<Vec3> across_, down_;
+  Vec3 stepAcross_{}, stepDown_{};  // curAcross after j steps, curDown after i steps
 };
 
 }  // namespace prime

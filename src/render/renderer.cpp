@@ -1,5 +1,6 @@
 #include "src/render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <mutex>
@@ -17,6 +18,66 @@ int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& s
   stats.indicesOutOfRange += counters.outOfRange;
   return index;
 }
+
+namespace {
+
+Rgb average(const Rgb* c, int n) {
+  Rgb sum{};
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) sum[k] += c[i][k];
+  for (auto& v : sum) v /= n;
+  return sum;
+}
+
+double spread(const Rgb* c, int n) {
+  double d = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double lo = c[0][k], hi = c[0][k];
+    for (int i = 1; i < n; ++i) {
+      lo = std::min(lo, c[i][k]);
+      hi = std::max(hi, c[i][k]);
+    }
+    d = std::max(d, hi - lo);
+  }
+  return d;
+}
+
+// Whitted's adaptive supersampling over the square centred at (fx, fy) with
+// half-width h, in pixel steps.
+Rgb adaptive(const Tracer1991& tracer, const ListingCamera& camera, int i, int j, double fx, double fy, double h,
+             int level, const Sampling& s, TraceStats& stats) {
+  Rgb c[5];
+  const double off[5][2] = {{0, 0}, {-h, -h}, {h, -h}, {-h, h}, {h, h}};
+  for (int k = 0; k < 5; ++k)
+    c[k] = tracer.castRay(camera.sampleRay(i, j, fx + off[k][0], fy + off[k][1]), 0, stats);
+  if (level >= s.maxLevel || !(spread(c, 5) > s.tolerance)) return average(c, 5);
+  Rgb q[4];
+  for (int k = 0; k < 4; ++k)
+    q[k] = adaptive(tracer, camera, i, j, fx + off[k + 1][0] / 2, fy + off[k + 1][1] / 2, h / 2, level + 1, s, stats);
+  return average(q, 4);
+}
+
+Rgb pixelColour(const Tracer1991& tracer, const ListingCamera& camera, int i, int j, const Sampling& s,
+                TraceStats& stats) {
+  switch (s.mode) {
+    case Sampling::Mode::Single: return tracer.castRay(camera.primaryRay(i, j), 0, stats);
+    case Sampling::Mode::Grid: {
+      Rgb sum{};
+      const int n = std::max(1, s.gridN);
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+          const Rgb c = tracer.castRay(camera.sampleRay(i, j, (b + 0.5) / n - 0.5, (a + 0.5) / n - 0.5), 0, stats);
+          for (int k = 0; k < 3; ++k) sum[k] += c[k];
+        }
+      for (auto& v : sum) v /= n * n;
+      return sum;
+    }
+    case Sampling::Mode::Adaptive: return adaptive(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, s, stats);
+  }
+  return {};
+}
+
+}  // namespace
 
 RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
@@ -53,7 +114,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
       try {
         for (int j = 0; j < columns; ++j) {
           const std::size_t at = static_cast<std::size_t>(i) * columns + j;
-          const Rgb color = tracer.castRay(camera.primaryRay(i, j), 0, local);
+          const Rgb color = pixelColour(tracer, camera, i, j, settings.sampling, local);
           result.rgb[at] = color;
           // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
           result.graph.pixels[at] = static_cast<std::int16_t>(paletteIndex(color, settings, local));

@@ -14,8 +14,21 @@ namespace prime {
 
 enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
 
+// Rays per pixel. Single is the listing (one ray through the window point);
+// Grid shoots n x n rays over the pixel's footprint; Adaptive is Whitted's
+// adaptive supersampling (thesis 2.6.1): the centre and four corners, and the
+// four quarters again wherever those differ by more than `tolerance` in any
+// channel, down to `maxLevel` subdivisions.
+struct Sampling {
+  enum class Mode { Single, Grid, Adaptive } mode = Mode::Single;
+  int gridN = 1;
+  double tolerance = 0.05;
+  int maxLevel = 2;
+};
+
 struct RenderSettings {
   CameraSettings camera;
+  Sampling sampling;
   TraceOptions trace;
   int threads = 0;   // 0: all cores
   int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)

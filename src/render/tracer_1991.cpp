@@ -1,10 +1,12 @@
 #include "src/render/tracer_1991.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "src/geom/primitives_1991.h"
+#include "src/math/listing_math.h"
 #include "src/geom/uv_mapping_1991.h"
 #include "src/render/texture_lookup.h"
 
@@ -158,7 +160,7 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
   return tr;
 }
 
-Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind) const {
+Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind, double weight) const {
   switch (kind) {
     case RayKind::Primary: ++stats.primaryRays; break;
     case RayKind::Reflected: ++stats.reflectedRays; break;
@@ -254,8 +256,22 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   if (wantTransmitted) transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
   Rgb colorReflected{}, colorTransmitted{};
   if (depth++ < options_.maxDepth) {  // K20
-    if (wantReflected) colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected);
-    if (wantTransmitted) colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted);
+    double wR = weight, wT = weight;
+    if (options_.minWeight > 0.0) {  // adaptive tree-depth control: the children's weights
+      const double cosR = cosDeg(acosDeg(dot(n, reflected.d)));
+      double fR = 0.0, fT = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        fR = std::max(fR, std::abs(fsrFromCos1991(surfColor[c], scene_.ambient[c], cosR)));
+        fT = std::max(fT, std::abs(1.0 - fsrFromCos1991(surfColor[c], scene_.ambient[c], 1.0)));
+      }
+      wR *= std::abs(1.0 - obj.hue.kDR) * fR;
+      wT *= std::abs(1.0 - obj.hue.kDT) * fT * std::abs(std::pow(obj.hue.tT, sT));
+    }
+    const double cut = options_.minWeight;
+    if (wantReflected && !(cut > 0.0 && wR < cut))
+      colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected, wR);
+    if (wantTransmitted && !(cut > 0.0 && wT < cut))
+      colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted, wT);
   }
   const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
                     obj.hue.tT,  obj.hue.kRH, obj.hue.kTH, obj.hue.indx};

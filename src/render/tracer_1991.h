@@ -34,6 +34,11 @@ struct TraceOptions {
   // error (E57), which the original could not render either (docs/deviations.md).
   // false: do every piece of work the listing did (for ray counts and checks).
   bool skipUnneededWork = true;
+  // Adaptive tree-depth control (thesis 2.4): a reflected or transmitted
+  // ray whose weight in the pixel (the product of the kSR*FSR or
+  // kST*FST*tT^sT factors above it, largest channel) falls below this is
+  // not cast. 0 = off (the listing).
+  double minWeight = 0.0;
 };
 
 class Tracer1991 {
@@ -42,7 +47,7 @@ class Tracer1991 {
 
   // CastRay(ray, depth, color). `ray.d` need not be unit (CastRay normalises it).
   Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
-              RayKind kind = RayKind::Primary) const;
+              RayKind kind = RayKind::Primary, double weight = 1.0) const;
 
   const Scene& scene() const { return scene_; }
 

@@ -62,3 +62,20 @@ TEST(ListingCamera, EmptyViewportIsRefused) {
 
 }  // namespace
 }  // namespace prime
+
+namespace prime {
+namespace {
+
+TEST(ListingCamera, SampleRayOffsetsByPixelSteps) {
+  const ListingCamera c(CameraSettings{});
+  const Ray centre = c.primaryRay(100, 50);
+  EXPECT_EQ(c.sampleRay(100, 50, 0.0, 0.0).d, centre.d);  // exactly the listing's ray
+  // Half a step across is 0.5 * 1000/349 in x; half a step down -0.5 * 1000/768 in y.
+  const Ray corner = c.sampleRay(100, 50, 0.5, 0.5);
+  EXPECT_NEAR(corner.d[0] - centre.d[0], 0.5 * 1000.0 / 349.0, 1e-12);
+  EXPECT_NEAR(corner.d[1] - centre.d[1], -0.5 * 1000.0 / 768.0, 1e-12);
+  EXPECT_EQ(corner.d[2], centre.d[2]);
+}
+
+}  // namespace
+}  // namespace prime
