@@ -39,6 +39,10 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--palette", o.palette, "Colour mapping: listing (ColorNum, 3-3-2) or plate3 (16x16 red/green, X1)")
       ->check(CLI::IsMember({"listing", "plate3"}));
+  cmd->add_option("--profile", o.profile,
+                  "1991: the listing, quirks and all (default); modern: the same scenes with robust "
+                  "arithmetic and correct geometry (docs/deviations.md)")
+      ->check(CLI::IsMember({"1991", "modern"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
 }
 
@@ -58,6 +62,7 @@ void finishRenderOptions(RenderOptions& o) {
     c.screenHeight = o.screen[1];
   }
   o.settings.mapping = o.palette == "plate3" ? ColorMapping::Plate3 : ColorMapping::Listing;
+  o.settings.profile = o.profile == "modern" ? Profile::Modern : Profile::Listing1991;
   if (o.samples > 1) {
     o.settings.sampling.mode = Sampling::Mode::Grid;
     o.settings.sampling.gridN = o.samples;

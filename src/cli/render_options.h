@@ -15,6 +15,7 @@ struct RenderOptions {
   std::vector<int> screen;
   bool model = false;  // --model: run `prime model` first
   std::string palette = "listing";
+  std::string profile = "1991";
   int samples = 1;
   double adaptiveTolerance = -1.0;  // < 0: off
 };

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "palette/color_num.h"
+#include "src/render/tracer_modern.h"
 
 namespace prime {
 
@@ -44,7 +45,8 @@ double spread(const Rgb* c, int n) {
 
 // Whitted's adaptive supersampling over the square centred at (fx, fy) with
 // half-width h, in pixel steps.
-Rgb adaptive(const Tracer1991& tracer, const ListingCamera& camera, int i, int j, double fx, double fy, double h,
+template <class Tracer>
+Rgb adaptive(const Tracer& tracer, const ListingCamera& camera, int i, int j, double fx, double fy, double h,
              int level, const Sampling& s, TraceStats& stats) {
   Rgb c[5];
   const double off[5][2] = {{0, 0}, {-h, -h}, {h, -h}, {-h, h}, {h, h}};
@@ -57,7 +59,8 @@ Rgb adaptive(const Tracer1991& tracer, const ListingCamera& camera, int i, int j
   return average(q, 4);
 }
 
-Rgb pixelColour(const Tracer1991& tracer, const ListingCamera& camera, int i, int j, const Sampling& s,
+template <class Tracer>
+Rgb pixelColour(const Tracer& tracer, const ListingCamera& camera, int i, int j, const Sampling& s,
                 TraceStats& stats) {
   switch (s.mode) {
     case Sampling::Mode::Single: return tracer.castRay(camera.primaryRay(i, j), 0, stats);
@@ -82,7 +85,10 @@ Rgb pixelColour(const Tracer1991& tracer, const ListingCamera& camera, int i, in
 RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
   const ListingCamera camera(settings.camera);
-  const Tracer1991 tracer(scene, settings.trace);
+  // Both profiles are built (cheap); the one the settings choose traces.
+  const Tracer1991 tracer1991(scene, settings.trace);
+  const TracerModern tracerModern(scene, settings.trace);
+  const bool modern = settings.profile == Profile::Modern;
   const int rows = camera.rows(), columns = camera.columns();
 
   RenderResult result;
@@ -114,7 +120,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
       try {
         for (int j = 0; j < columns; ++j) {
           const std::size_t at = static_cast<std::size_t>(i) * columns + j;
-          const Rgb color = pixelColour(tracer, camera, i, j, settings.sampling, local);
+          const Rgb color = modern ? pixelColour(tracerModern, camera, i, j, settings.sampling, local)
+                                   : pixelColour(tracer1991, camera, i, j, settings.sampling, local);
           result.rgb[at] = color;
           // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
           result.graph.pixels[at] = static_cast<std::int16_t>(paletteIndex(color, settings, local));

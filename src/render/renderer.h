@@ -26,7 +26,10 @@ struct Sampling {
   int maxLevel = 2;
 };
 
+enum class Profile { Listing1991, Modern };
+
 struct RenderSettings {
+  Profile profile = Profile::Listing1991;
   CameraSettings camera;
   Sampling sampling;
   TraceOptions trace;

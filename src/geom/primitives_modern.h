@@ -1,0 +1,37 @@
+// The five unit primitives for the modern profile: arithmetic done right.
+//   - The whole line is intersected: the result is the parameter interval
+//     [tIn, tOut] where the line is inside the solid, however it is placed
+//     (an origin inside gives tIn < 0); the caller clips to its ray.
+//   - Quadratics are solved without cancellation (q = -(b + sign(b) sqrt(D)),
+//     roots q/a and c/q).
+//   - Cube and pyramid are convex polyhedra clipped plane by plane; sphere,
+//     cylinder and cone are quadrics clipped by their cap slabs.
+//   - Normals are the solid's OUTWARD unit normals at entry and at exit, in
+//     the primitive's local frame (transform them by the inverse transpose).
+// Pure functions: no I/O, no globals, no heap.
+#pragma once
+
+#include "src/geom/ray.h"
+
+namespace prime {
+
+struct Interval {
+  double tIn = 0.0, tOut = 0.0;
+  Vec3 nIn{}, nOut{};  // outward unit normals at tIn and tOut (local frame)
+};
+
+// False when the line misses the solid (or only touches it: tIn == tOut is
+// reported as a miss only if the direction is degenerate).
+bool intersectModern(char type, const Ray& local, Interval& out);
+
+bool sphereModern(const Ray& local, Interval& out);
+bool cylinderModern(const Ray& local, Interval& out);
+bool coneModern(const Ray& local, Interval& out);
+bool cubeModern(const Ray& local, Interval& out);
+bool pyramidModern(const Ray& local, Interval& out);
+
+// Both roots of a t^2 + 2 b t + c = 0 (the listing's half-b form), ordered,
+// computed without cancellation. False when there are none (D < 0) or a = 0.
+bool solveQuadratic(double a, double b, double c, double& t0, double& t1);
+
+}  // namespace prime

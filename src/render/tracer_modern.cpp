@@ -1,0 +1,253 @@
+#include "src/render/tracer_modern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "src/geom/csg_modern.h"
+#include "src/geom/primitives_modern.h"
+#include "src/geom/uv_mapping_1991.h"
+
+namespace prime {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;  // unit roundoff
+// pbrt's gamma(n) = n u / (1 - n u): the relative error bound of n roundings.
+constexpr double gamma(int n) { return (n * kEps) / (1 - n * kEps); }
+
+Vec3 absV(const Vec3& v) { return {std::abs(v[0]), std::abs(v[1]), std::abs(v[2])}; }
+Vec3 unit(const Vec3& v) {
+  const double l = std::sqrt(dot(v, v));
+  return l > 0 ? v * (1.0 / l) : v;
+}
+double clamp1(double x) { return std::clamp(x, -1.0, 1.0); }
+double finiteOr0(double x) { return std::isfinite(x) ? x : 0.0; }
+
+// Normals transform by the inverse transpose: with row vectors p' = p M,
+// n' = n (M^-1)^T, i.e. n'[j] = sum_i n[i] inv[j][i].
+Vec3 normalToWorld(const Vec3& n, const Matrix4& inv) {
+  Vec3 w{};
+  for (int j = 0; j < 3; ++j) w[j] = n[0] * inv[j][0] + n[1] * inv[j][1] + n[2] * inv[j][2];
+  return unit(w);
+}
+
+// Modern texel lookup: u, v clamped into [0, 1); NaN reads texel 0.
+double texel(const SceneTexture& m, int c, double u, double v) {
+  auto index = [](double x, int n) {
+    if (!(x > 0.0)) return 0;  // also NaN
+    return std::min(static_cast<int>(x * n), n - 1);
+  };
+  return m.channel[c][static_cast<std::size_t>(index(u, m.uScale) + m.uScale * index(v, m.vScale))];
+}
+
+}  // namespace
+
+Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w) {
+  const double d = dot(absV(n), pError);
+  Vec3 offset = n * d;
+  if (dot(w, n) < 0) offset = -offset;
+  Vec3 po = p + offset;
+  for (int i = 0; i < 3; ++i) {  // round away from p so the offset survives rounding
+    if (offset[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+    else if (offset[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+  }
+  return po;
+}
+
+TracerModern::TracerModern(const Scene& scene, TraceOptions options)
+    : scene_(scene), options_(options), bvh_(scene) {
+  for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+}
+
+TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const {
+  ++stats.objectTests;
+  auto leaf = [&](int primNum) -> std::optional<Interval> {
+    ++stats.primitiveTests;
+    const ScenePrim& p = scene_.prims[primNum];
+    Interval in;
+    if (!intersectModern(p.type, transformRay(ray, p.inverse), in)) return std::nullopt;
+    return in;
+  };
+  return csgModern(obj.entries, leaf);
+}
+
+bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const {
+  double nearest = std::numeric_limits<double>::infinity();
+  int bestObj = -1;
+  TNode bestNode{};
+  auto consider = [&](int k) {
+    const SceneObject& obj = scene_.objects[k];
+    if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
+      ++stats.boundTests;
+      const ScenePrim& b = scene_.prims[obj.boundPrim];
+      Interval in;
+      if (!intersectModern(b.type, transformRay(ray, b.inverse), in) || !(in.tOut > 0.0)) return;
+    }
+    const TList list = objectIntervals(obj, ray, stats);
+    for (const TNode& node : list) {
+      if (!(node.t > 0.0)) continue;  // behind the origin (or NaN)
+      if (node.t < nearest || (node.t == nearest && k < bestObj)) {
+        nearest = node.t;
+        bestObj = k;
+        bestNode = node;
+      }
+      break;  // sorted: the first node ahead is this object's nearest
+    }
+  };
+  bvh_.traverse(ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+  if (bestObj < 0) return false;
+
+  const ScenePrim& prim = scene_.prims[bestNode.prim];
+  const Ray local = transformRay(ray, prim.inverse);
+  hit.t = nearest;
+  hit.obj = bestObj;
+  hit.prim = bestNode.prim;
+  hit.exitsObject = bestNode.surfType == kSurfIn;
+  for (int i = 0; i < 3; ++i) {
+    hit.point[i] = ray.o[i] + nearest * ray.d[i];
+    hit.local[i] = local.o[i] + nearest * local.d[i];
+  }
+  // Error bound of o + t d, with t itself off by a few roundings and the
+  // primitive-space computation behind it (transform, solve): 32 roundings
+  // of the magnitudes involved is a safe bound for every primitive here.
+  for (int i = 0; i < 3; ++i) hit.pointError[i] = gamma(32) * (std::abs(ray.o[i]) + std::abs(nearest * ray.d[i]));
+  Vec3 n = normalToWorld(bestNode.norm, prim.inverse);
+  // Which side of the PRIMITIVE's own surface the ray is on picks the
+  // outside or inside map (a difference's cut face shows B's inside).
+  Interval own;
+  if (intersectModern(prim.type, local, own))
+    hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
+  if (dot(n, ray.d) > 0) n = -n;  // face the ray
+  hit.normal = n;
+  return true;
+}
+
+// Refract into the object at the hit, walk to where the ray leaves it
+// (reflecting internally while beyond the critical angle), refract out.
+Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
+                           TraceStats& stats) const {
+  distance = 0.0;
+  through = false;
+  const SceneObject& obj = scene_.objects[hit.obj];
+  const Vec3 d = unit(ray.d);
+  // Snell with the facing normal: entering, eta = 1/indx; a ray that starts
+  // inside the object and leaves it here refracts out with eta = indx.
+  const double eta = hit.exitsObject ? indx : 1.0 / indx;
+  const double cosI = clamp1(-dot(d, hit.normal));
+  const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
+  if (!(k >= 0.0)) return {};  // total internal reflection: nothing transmitted
+  Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
+  r.o = offsetRayOrigin(hit.point, hit.pointError, hit.normal, r.d);
+  if (hit.exitsObject) {
+    through = true;
+    return r;
+  }
+  const int cap = options_.tirCap > 0 ? std::min(options_.tirCap, 64) : 64;
+  for (int step = 0; step < cap; ++step) {
+    const TList list = objectIntervals(obj, r, stats);
+    const TNode* exit = nullptr;
+    for (const TNode& node : list)
+      if (node.t > 0.0 && node.surfType == kSurfIn) {
+        exit = &node;
+        break;
+      }
+    if (!exit) {  // numerically outside already: leave as we are
+      ++stats.emptyTransmitLists;
+      through = true;
+      return r;
+    }
+    distance += exit->t;
+    const ScenePrim& p = scene_.prims[exit->prim];
+    const Vec3 pt = r.o + r.d * exit->t;
+    Vec3 pErr;
+    for (int i = 0; i < 3; ++i) pErr[i] = gamma(32) * (std::abs(r.o[i]) + std::abs(exit->t * r.d[i]));
+    Vec3 nOut = normalToWorld(exit->norm, p.inverse);  // outward of the solid
+    if (dot(nOut, r.d) < 0) nOut = -nOut;
+    const double c = clamp1(dot(r.d, nOut));
+    const double k2 = 1.0 - indx * indx * (1.0 - c * c);
+    if (k2 < 0.0) {  // total internal reflection: stay inside
+      ++stats.totalInternalReflections;
+      r.d = unit(r.d - nOut * (2.0 * c));
+      r.o = offsetRayOrigin(pt, pErr, nOut, r.d);
+      continue;
+    }
+    r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
+    r.o = offsetRayOrigin(pt, pErr, nOut, r.d);
+    through = true;
+    return r;
+  }
+  ++stats.cappedTirLoops;  // trapped: the light is absorbed
+  return {};
+}
+
+Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind, double weight) const {
+  switch (kind) {
+    case RayKind::Primary: ++stats.primaryRays; break;
+    case RayKind::Reflected: ++stats.reflectedRays; break;
+    case RayKind::Transmitted: ++stats.transmittedRays; break;
+  }
+  ray.d = unit(ray.d);
+  SurfaceHit hit;
+  if (!nearestHit(ray, hit, stats)) return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  ++stats.hits;
+  const SceneObject& obj = scene_.objects[hit.obj];
+  const ScenePrim& prim = scene_.prims[hit.prim];
+  const auto uv = inverseMap1991(prim.type, hit.local);
+  const int surface = uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
+  const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
+  Rgb surfColor{};
+  for (int c = 0; c < 3; ++c)
+    surfColor[c] = texel(map, c, uv ? finiteOr0(uv->u) : 0.0, uv ? finiteOr0(uv->v) : 0.0);
+
+  const io::Hue& h = obj.hue;
+  const Vec3& n = hit.normal;
+  const Vec3 refl = unit(ray.d - n * (2.0 * dot(ray.d, n)));
+  double sT = 0.0;
+  bool through = false;
+  const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
+  Ray transmitted{};
+  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats);
+  Rgb iSR{}, iST{};
+  if (depth < options_.maxDepth) {
+    if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
+      iSR = castRay({offsetRayOrigin(hit.point, hit.pointError, n, refl), refl}, depth + 1, stats,
+                    RayKind::Reflected, weight * std::abs(kSR));
+    if (through && weight * std::abs(kST) >= options_.minWeight)
+      iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
+  }
+
+  // Hall's sum with the light vector pointing AT the light (K10 fixed),
+  // clamped cosines and no negative base in pow (K10, X2).
+  const Vec3 v = -ray.d;  // towards the viewer
+  Rgb color{};
+  for (int c = 0; c < 3; ++c) {
+    double a = 0, b = 0, cd = 0, dd = 0;
+    for (const HallLight& light : lights_) {
+      const Vec3 l = unit(light.pt - hit.point);
+      const Vec3 hj = unit(l + v);
+      const double nl = dot(n, l);
+      const double iL = light.intensity[c];
+      const double nh = std::max(0.0, dot(n, hj));
+      a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
+      if (h.indx != 1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
+        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
+        const double nht = std::max(0.0, -dot(n, ht));
+        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) * std::pow(nht, std::max(0.0, h.kTH));
+      }
+      cd += iL * std::max(0.0, nl);
+      dd += iL * std::max(0.0, -nl);
+    }
+    const double ia = scene_.ambient[c];
+    const double fDR = h.fDR[c], fDT = 1.0 - fDR;
+    const double cosR = clamp1(dot(n, refl));
+    const double sum = kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
+                       kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
+                       kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
+    if (!std::isfinite(sum)) ++stats.nanColours;
+    color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
+  }
+  return color;
+}
+
+}  // namespace prime

@@ -1,0 +1,59 @@
+// The modern profile's ray tree: the same scenes and databases as the 1991
+// profile, with the arithmetic and the geometry done right (see the "Modern
+// profile" section of docs/deviations.md for every difference):
+//   - whole-line primitive intervals with cancellation-free quadratics and
+//     correct set operations (a ray that starts inside a solid sees its exit);
+//   - the nearest hit is the smallest t ahead, not the list's first node;
+//   - normals transformed by the inverse transpose, faced towards the ray;
+//   - secondary rays start from the hit point pushed off the surface by a
+//     bound on its floating-point error (pbrt-v4 style), not a 1-unit step;
+//   - Hall's terms with the light vector pointing at the light, clamped
+//     dot products and inverse trigonometry, world-frame refraction;
+//   - no NaN or Inf ever reaches a pixel.
+#pragma once
+#include <vector>
+
+#include "src/render/hall.h"
+#include "src/render/trace_stats.h"
+#include "src/render/tracer_1991.h"
+#include "src/scene/object_bvh.h"
+#include "src/scene/scene.h"
+
+namespace prime {
+
+struct SurfaceHit {
+  double t = 0;
+  int obj = -1, prim = -1;
+  bool fromInsidePrim = false;  // the ray meets the primitive's surface from inside (inside map)
+  bool exitsObject = false;     // the ray starts inside the object's solid and leaves it here
+  Vec3 point{}, local{}, normal{};  // world point, primitive-space point, unit normal facing the ray
+  Vec3 pointError{};                // bound on |point - exact point| per axis
+};
+
+class TracerModern {
+ public:
+  TracerModern(const Scene& scene, TraceOptions options = {});
+
+  Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary, double weight = 1.0) const;
+  // The nearest surface along the ray with t > 0, if any.
+  bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const;
+  // The object's solid along the whole line of `ray` (sorted intervals).
+  TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const;
+
+  const Scene& scene() const { return scene_; }
+
+ private:
+  Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
+               TraceStats& stats) const;
+  const Scene& scene_;
+  TraceOptions options_;
+  ObjectBvh bvh_;
+  std::vector<HallLight> lights_;
+};
+
+// A point moved off its surface along `n` (the side the new ray leaves on)
+// by more than its error bound, so the new ray cannot re-hit the surface it
+// starts on (Ray Tracing Gems ch. 6 / pbrt-v4 OffsetRayOrigin).
+Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w);
+
+}  // namespace prime
