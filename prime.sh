@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # prime.sh: set up a fresh Debian machine, build, and run PRIME.
 #   ./prime.sh demo    install what is missing, build, model + trace the default scene
-#   ./prime.sh test    install what is missing, build, run every test (plain and ASan+UBSan)
+#   ./prime.sh test    install what is missing, build, run every test (plain and ASan+UBSan),
+#                      then fuzz every reader for a bounded time (clang + libFuzzer, tests/fuzz)
 #   ./prime.sh build   install what is missing and build the release preset only
 set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build and the tests need.
 PACKAGES=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libsdl2-dev libpng-dev)
+          libbenchmark-dev libsdl2-dev libpng-dev clang libclang-rt-14-dev
+          xvfb xauth x11-apps xdotool)  # window tests: an X server, xwd (x11-apps), key presses
 
 setup() {
   local missing=()
@@ -43,6 +45,8 @@ case "${1:-}" in
     ctest --preset release -j "$(nproc)"
     build asan
     ctest --preset asan -j "$(nproc)"
+    build fuzz   # only the fuzz targets; each fuzz.<name> test fuzzes for 20 s
+    ctest --preset fuzz -j "$(nproc)"
     ;;
   build)
     setup

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -100,35 +99,62 @@ static std::string dumpObj(const std::string& path) {
     os << "  " << i << ": '" << opcodeText(e) << "' l " << e.l << " r " << e.r << "\n";
   }
   os << "CSG tree:\n";
-  std::vector<int> onPath(f.entries.size(), 0);
-  std::function<void(int, int)> tree = [&](int i, int depth) {
-    os << std::string(2 + 2 * depth, ' ');
-    if (i < 0 || i >= static_cast<int>(f.entries.size())) {
+  // Depth first with an explicit stack (a chain of 32767 entries must not
+  // overflow the call stack). An operator entry reached a second time (the
+  // tree is a DAG) is shown once, then named: printing it again for every
+  // path to it would take time exponential in the file's size.
+  const int n = static_cast<int>(f.entries.size());
+  std::vector<char> onPath(f.entries.size(), 0), shown(f.entries.size(), 0);
+  struct Frame {
+    int entry, depth, childrenPushed;
+  };
+  std::vector<Frame> stack;
+  if (n > 0) stack.push_back({0, 0, -1});
+  while (!stack.empty()) {
+    Frame& fr = stack.back();
+    const int i = fr.entry, depth = fr.depth;
+    if (fr.childrenPushed >= 0) {  // an operator whose line is printed
+      const auto& e = f.entries[i];
+      if (fr.childrenPushed < 2) {
+        const int child = fr.childrenPushed++ == 0 ? e.l : e.r;
+        stack.push_back({child, depth + 1, -1});
+      } else {
+        onPath[i] = 0;
+        stack.pop_back();
+      }
+      continue;
+    }
+    stack.pop_back();
+    // Indentation shows the depth; past 32 levels the depth is written instead.
+    if (depth <= 32) os << std::string(2 + 2 * depth, ' ');
+    else os << std::string(2 + 2 * 32, ' ') << "(depth " << depth << ") ";
+    if (i < 0 || i >= n) {
       os << "<entry " << i << " out of range>\n";
-      return;
+      continue;
     }
     const auto& e = f.entries[i];
     const char op = e.op();
     if (op == 'P') {
       os << "prim " << e.l << "\n";
-      return;
+      continue;
     }
     if (onPath[i]) {
       os << "<cycle back to entry " << i << ">\n";
-      return;
+      continue;
     }
     const char* name = op == '+' ? "union" : op == '-' ? "difference" : op == '&' ? "intersection" : nullptr;
     if (!name) {
       os << "'" << opcodeText(e) << "' (not an operator) l " << e.l << " r " << e.r << "\n";
-      return;
+      continue;
+    }
+    if (shown[i]) {
+      os << name << " (" << op << "): entry " << i << ", shown above\n";
+      continue;
     }
     os << name << " (" << op << ")\n";
-    onPath[i] = 1;
-    tree(e.l, depth + 1);
-    tree(e.r, depth + 1);
-    onPath[i] = 0;
-  };
-  if (!f.entries.empty()) tree(0, 0);
+    onPath[i] = shown[i] = 1;
+    stack.push_back({i, depth, 0});
+  }
   return os.str();
 }
 

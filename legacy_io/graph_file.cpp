@@ -43,6 +43,34 @@ GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::str
 
 GraphFile readGraphFile(const std::string& path) { return graphFileFromBytes(readFileBytes(path), path); }
 
+GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, const std::string& name) {
+  ByteReader r(bytes, name);
+  GraphFile f;
+  f.graphType = r.getInt16("graphType");
+  f.numPixAcross = r.getInt16("numPixAcross");
+  f.numPixDown = r.getInt16("numPixDown");
+  const std::size_t present = r.remaining() / kTurboInt;
+  const std::size_t inclusiveCount =
+      f.numPixAcross < 0 || f.numPixDown < 0
+          ? 0
+          : static_cast<std::size_t>(f.numPixAcross + 1) * static_cast<std::size_t>(f.numPixDown + 1);
+  if (f.numPixAcross < 0 || f.numPixDown < 0 || present >= inclusiveCount ||
+      present == static_cast<std::size_t>(f.numPixAcross) * static_cast<std::size_t>(f.numPixDown)) {
+    GraphFile whole = graphFileFromBytes(bytes, name);  // complete, or the usual error
+    const std::size_t n = whole.pixels.size();
+    return {std::move(whole), n};
+  }
+  f.inclusive = true;
+  f.pixels.reserve(inclusiveCount);
+  for (std::size_t i = 0; i < present; ++i) f.pixels.push_back(r.getInt16("pixel"));
+  f.pixels.resize(inclusiveCount, 0);
+  return {std::move(f), present};
+}
+
+GraphFilePrefix readGraphFilePrefix(const std::string& path) {
+  return graphFilePrefixFromBytes(readFileBytes(path), path);
+}
+
 void writeGraphFile(const std::string& path, const GraphFile& f) { writeFileAtomically(path, toBytes(f)); }
 
 }  // namespace prime::io

@@ -27,6 +27,19 @@ struct GraphFile {
 std::vector<std::uint8_t> toBytes(const GraphFile& f);
 GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::string& name);
 GraphFile readGraphFile(const std::string& path);
+
+// A graph file that may stop early: the `.partial` file an aborted
+// `prime trace` leaves (docs/palette.md), or a graph_scr cut short the way the
+// listing's exit(1) in ExitOnEsc left it. The header, then as many whole
+// pixels as there are, in the listing's inclusive layout. A complete file
+// reads exactly as readGraphFile reads it; a longer one is the same error.
+struct GraphFilePrefix {
+  GraphFile graph;                // all width() x height() pixels; the missing ones are 0
+  std::size_t pixelsPresent = 0;  // how many the file holds
+  bool complete() const { return pixelsPresent == graph.pixels.size(); }
+};
+GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, const std::string& name);
+GraphFilePrefix readGraphFilePrefix(const std::string& path);
 void writeGraphFile(const std::string& path, const GraphFile& f);
 
 }  // namespace prime::io

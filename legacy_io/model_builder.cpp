@@ -170,6 +170,14 @@ class Modeller {
                          "an object built earlier in Model.txt (obj/" + srcName + ")",
                          "object " + std::to_string(obj.entries[i].l) + ", which does not exist");
       const ObjFile src = found->second;
+      // Checked before copying: each O entry can append up to 32766 entries,
+      // and 32767 O entries would otherwise build gigabytes before the check
+      // at the end.
+      if (obj.entries.size() + src.entries.size() - 1 > 32767)
+        throw InputError({in.name(), line, std::nullopt}, "numEntries",
+                         "at most 32767 entries after copying objects",
+                         std::to_string(obj.entries.size() + src.entries.size() - 1) + " once this O entry copies the " +
+                             std::to_string(src.entries.size()) + " entries of object " + srcName.substr(1));
       const std::int16_t copyFile = obj.entries[i].r;
       const auto offset = static_cast<std::int16_t>(obj.entries.size() - 1);
       ObjRecord root = src.entries.at(0);
@@ -225,6 +233,14 @@ class Modeller {
                const std::string& origin) {
     scene_.file("obj", srcName, origin);
     scene_.file("obj", destName, origin);
+    // The destination becomes the file obj/<destName>: it must not be one of
+    // the other files of obj/, which writing it would replace (List, a text
+    // input) or cannot replace (the Copy/ folder).
+    const bool textInput = destName.ends_with(".txt") || destName.ends_with(".TXT");
+    if (destName == "List" || destName == "Copy" || textInput)
+      throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj destination object",
+                       "a name for a new object file in obj/ like O4 (not List, Copy or a .txt input)",
+                       "\"" + destName + "\"");
     auto found = model_.objects.find(srcName);
     if (found == model_.objects.end())
       throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj source object",

@@ -30,6 +30,12 @@ fs::path SceneDir::file(const std::string& sub, const std::string& name,
                      "a plain file name inside the scene's " + sub +
                          "/ directory (no '..', no '/' or '\\', no drive letter)",
                      "\"" + name + "\"");
+  // Longer names make every file system call fail (ENAMETOOLONG), which
+  // std::filesystem reports as an exception of its own, not as bad input.
+  if (name.size() > kMaxFileName)
+    throw InputError({origin, std::nullopt, std::nullopt}, "file name",
+                     "at most " + std::to_string(kMaxFileName) + " bytes (the file system's NAME_MAX)",
+                     std::to_string(name.size()) + " bytes (\"" + name.substr(0, 40) + "...\")");
   return root_ / sub / name;
 }
 

@@ -29,6 +29,9 @@ class SceneDir {
   std::filesystem::path root_;
 };
 
+// Longest file name SceneDir::file accepts (NAME_MAX on Linux).
+inline constexpr std::size_t kMaxFileName = 255;
+
 // True for a plain file name: non-empty, no '/', '\\', ':' or NUL, not "." or "..".
 bool isPlainFileName(const std::string& name);
 

@@ -1,7 +1,6 @@
 #include "legacy_io/text_inputs.h"
 
 #include <cstring>
-#include <functional>
 #include <sstream>
 
 #include "legacy_io/map_file.h"
@@ -85,22 +84,33 @@ static void checkTree(TextReader& in, const std::vector<CsgEntryText>& entries) 
         throw InputError({in.name(), e.line, std::nullopt}, std::string("child index of '") + e.op + "'",
                          "an entry number 0.." + std::to_string(n - 1), std::to_string(child));
   }
+  // Depth first from the root with an explicit stack: a chain of 32767
+  // entries is a legal file and must not overflow the call stack.
   std::vector<int> state(n, 0);  // 0 unvisited, 1 on path, 2 done
-  std::function<void(int)> visit = [&](int i) {
-    state[i] = 1;
+  std::vector<std::pair<int, int>> path;  // entry, how many children followed
+  if (n > 0) {
+    state[0] = 1;
+    path.push_back({0, 0});
+  }
+  while (!path.empty()) {
+    const int i = path.back().first;
     const auto& e = entries[i];
-    if (e.op == '+' || e.op == '-' || e.op == '&')
-      for (int child : {e.l, e.r}) {
-        if (state[child] == 1)
-          throw InputError({in.name(), e.line, std::nullopt}, "child index",
-                           "a tree (no entry may contain itself)",
-                           "entry " + std::to_string(i) + " leads back to entry " +
-                               std::to_string(child) + " (a cycle)");
-        if (state[child] == 0) visit(child);
+    if ((e.op == '+' || e.op == '-' || e.op == '&') && path.back().second < 2) {
+      const int child = path.back().second++ == 0 ? e.l : e.r;
+      if (state[child] == 1)
+        throw InputError({in.name(), e.line, std::nullopt}, "child index",
+                         "a tree (no entry may contain itself)",
+                         "entry " + std::to_string(i) + " leads back to entry " +
+                             std::to_string(child) + " (a cycle)");
+      if (state[child] == 0) {
+        state[child] = 1;
+        path.push_back({child, 0});
       }
+      continue;
+    }
     state[i] = 2;
-  };
-  if (n > 0) visit(0);
+    path.pop_back();
+  }
 }
 
 ObjText parseObjText(TextReader& in) {

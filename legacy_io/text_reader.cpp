@@ -62,11 +62,13 @@ double TextReader::number(const std::string& field) {
   if (pos_ >= text_.size()) fail(field, "a number", "end of file (too few numbers)");
   const char* begin = text_.data() + pos_;
   const char* end = text_.data() + text_.size();
-  if (*begin == '+') ++begin;  // from_chars does not take a leading '+', fscanf does
+  const bool plus = *begin == '+';
+  if (plus) ++begin;  // from_chars does not take a leading '+', fscanf does
   double value = 0;
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
-  if (ec != std::errc() || !endsCleanly) fail(field, "a number", peekWord());
+  // "+-5": one sign only (from_chars would read the '-' after the skipped '+').
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "a number", peekWord());
   if (!std::isfinite(value)) fail(field, "a finite number", peekWord() + " (NaN/Inf not allowed)");
   pos_ = static_cast<std::size_t>(ptr - text_.data());
   lastTokenLine_ = line_;
@@ -78,11 +80,12 @@ std::int16_t TextReader::int16(const std::string& field) {
   if (pos_ >= text_.size()) fail(field, "an integer", "end of file (too few numbers)");
   const char* begin = text_.data() + pos_;
   const char* end = text_.data() + text_.size();
-  if (*begin == '+') ++begin;
+  const bool plus = *begin == '+';
+  if (plus) ++begin;
   long long value = 0;
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
-  if (ec != std::errc() || !endsCleanly) fail(field, "an integer", peekWord());
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "an integer", peekWord());
   if (value < -32768 || value > 32767)
     fail(field, "an integer in -32768..32767 (Turbo C's 16-bit int)", peekWord());
   pos_ = static_cast<std::size_t>(ptr - text_.data());

@@ -32,4 +32,22 @@ void writePng(const std::string& path, const Image8& image) {
   std::filesystem::rename(tmp, path);
 }
 
+Image8 readPng(const std::string& path) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, path.c_str()))
+    throw std::runtime_error(path + ": cannot read PNG: " + img.message);
+  img.format = PNG_FORMAT_RGB;
+  Image8 out;
+  out.width = static_cast<int>(img.width);
+  out.height = static_cast<int>(img.height);
+  out.rgb.resize(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, out.rgb.data(), 0, nullptr)) {
+    const std::string message = img.message;
+    png_image_free(&img);
+    throw std::runtime_error(path + ": cannot read PNG: " + message);
+  }
+  return out;
+}
+
 }  // namespace prime

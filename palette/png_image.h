@@ -1,5 +1,5 @@
-// PNG output through libpng: 8-bit RGB, written to a temporary file and
-// renamed into place.
+// PNG through libpng: 8-bit RGB, written to a temporary file and renamed
+// into place; and read back (tests, comparisons).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -13,5 +13,8 @@ struct Image8 {
 };
 
 void writePng(const std::string& path, const Image8& image);
+// Reads any PNG as 8-bit RGB (libpng's simplified API); throws
+// std::runtime_error naming the file when it cannot.
+Image8 readPng(const std::string& path);
 
 }  // namespace prime

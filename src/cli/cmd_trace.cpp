@@ -1,26 +1,65 @@
-// prime trace DIR: render a scene as RayTrace.c did, to DIR/graph_scr.
+// prime trace DIR: render a scene as RayTrace.c did, to DIR/graph_scr, while
+// the emulated 8514/A screen shows each row where PutPixel put it.
+//
+// With a display, a window shows the whole screen as the render proceeds; Esc
+// (or closing it, or Ctrl-C) aborts like ExitOnEsc; when the render is done
+// the window stays until Esc or close, like WaitForEsc. Without one (no
+// DISPLAY, or --no-window) it runs headless, says so, and Ctrl-C aborts.
+//
+// An aborted render never leaves a graph file that looks complete: the target
+// is removed (an older one too), and TARGET.partial holds the header and the
+// rows finished from the top, as the listing's exit(1) would have left it.
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <sstream>
+#include <thread>
 
 #include "legacy_io/graph_file.h"
-#include "palette/dac.h"
+#include "palette/export.h"
+#include "palette/window/screen_window.h"
 #include "src/cli/commands.h"
+#include "src/cli/display_options.h"
 #include "src/cli/render_options.h"
 
 namespace prime::cli {
 
 namespace {
 
-Image8 graphToImage(const io::GraphFile& g, const PaletteTable& table) {
-  Image8 img;
-  img.width = g.width();
-  img.height = g.height();
-  img.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
-  for (std::size_t i = 0; i < g.pixels.size(); ++i) indexToRgb8(table, g.pixels[i], &img.rgb[i * 3]);
-  return img;
+// Headless Ctrl-C / SIGTERM: set the render's abort flag (an atomic store is
+// async-signal-safe). With a window, SDL turns both into a quit event instead.
+std::atomic<bool>* gAbortOnSignal = nullptr;
+extern "C" void abortOnSignal(int) {
+  if (gAbortOnSignal != nullptr) gAbortOnSignal->store(true);
 }
+
+class SignalsAbort {
+ public:
+  explicit SignalsAbort(std::atomic<bool>& flag) {
+    gAbortOnSignal = &flag;
+    struct sigaction sa {};
+    sa.sa_handler = abortOnSignal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &oldInt_);
+    sigaction(SIGTERM, &sa, &oldTerm_);
+  }
+  ~SignalsAbort() {
+    sigaction(SIGINT, &oldInt_, nullptr);
+    sigaction(SIGTERM, &oldTerm_, nullptr);
+    gAbortOnSignal = nullptr;
+  }
+  SignalsAbort(const SignalsAbort&) = delete;
+  SignalsAbort& operator=(const SignalsAbort&) = delete;
+
+ private:
+  struct sigaction oldInt_ {}, oldTerm_ {};
+};
 
 void printSummary(const RenderResult& r, const std::string& out) {
   const auto& s = r.stats;
@@ -49,11 +88,23 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto dir = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto png = std::make_shared<std::string>();
+  auto trueColourPng = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
+  auto noWait = std::make_shared<bool>(false);
   auto options = std::make_shared<RenderOptions>();
+  auto display = std::make_shared<DisplayOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)");
-  cmd->add_option("--png", *png, "Also write the screen image as PNG (8514/A palette)");
+  cmd->add_option("--png", *png, "Also write the picture as PNG, through the display palette (see --png-area)");
+  cmd->add_option("--true-color-png", *trueColourPng,
+                  "Also write the unquantised colours as PNG (same area as --png): what the 256 colours cost");
+  addAreaOption(cmd, *display, "--png-area");
+  cmd->add_option("--display-palette", display->palette,
+                  "Palette for the window and PNG: listing, plate3, vga or a palette file (default: the one "
+                  "--palette implies)");
+  addDacOption(cmd, *display);
+  addWindowOptions(cmd, *display);
+  cmd->add_flag("--no-wait", *noWait, "Close the window when the render is done instead of waiting for Esc");
   cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
@@ -63,24 +114,129 @@ void addTraceCommand(CLI::App& app, Action& action) {
       finishRenderOptions(*options);
       const Scene scene = prepareScene(*dir, *options);
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
-      const bool tty = isatty(STDERR_FILENO) && !*quiet;
+      const std::string partial = target + ".partial";
+      const RenderSettings& settings = options->settings;
+      const ListingCamera camera(settings.camera);
+      const Placement at{camera.screenX(0), camera.screenY(0)};
+      const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+      const Palette palette = paletteOf(*display, settings.mapping == ColorMapping::Plate3
+                                                      ? "plate3"
+                                                      : paletteNameForGraphType(settings.graphType));
+
+      // The window, if there can be one.
+      auto headless = display::headlessReason(display->noWindow);
+      std::unique_ptr<display::LiveScreen> live;
+      std::unique_ptr<display::ScreenWindow> window;
+      if (!headless) {
+        try {
+          live = std::make_unique<display::LiveScreen>(screenW, screenH);
+          window = std::make_unique<display::ScreenWindow>(
+              *live, display::WindowConfig{*dir, windowPalettes(palette), dacOf(*display), display->zoom, "."});
+        } catch (const std::exception& e) {
+          headless = e.what();
+          window.reset();
+          live.reset();
+        }
+      }
+      if (!window && !*quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
+      if (window && !*quiet)
+        std::cerr << (std::ostringstream() << "prime: drawing in window 0x" << std::hex << window->nativeId()
+                                           << "; Esc aborts (keys: + - zoom, P palette, D DAC, S screenshot)\n")
+                         .str()
+                  << std::flush;
+
+      std::atomic<bool> abort{false};
+      std::atomic<int> rowsDone{0}, rowsTotal{camera.rows()};
+      std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);  // rowDone runs on one thread
       RenderCallbacks cb;
+      cb.abort = &abort;
+      const bool tty = isatty(STDERR_FILENO) && !*quiet;
       const auto start = std::chrono::steady_clock::now();
-      if (tty)
-        cb.progress = [start](int done, int rows, std::uint64_t rays) {
-          const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          const double left = done > 0 ? s * (rows - done) / done : 0.0;
-          std::fprintf(stderr, "\rrows %d/%d  %.0f rays/s  %.0f s left   ", done, rows, s > 0 ? rays / s : 0.0, left);
-          std::fflush(stderr);
-        };
-      const RenderResult result = render(scene, options->settings, cb);
+      cb.progress = [&, start](int done, int rows, std::uint64_t rays) {
+        rowsDone = done;
+        rowsTotal = rows;
+        if (!tty) return;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double left = done > 0 ? s * (rows - done) / done : 0.0;
+        std::fprintf(stderr, "\rrows %d/%d  %.0f rays/s  %.0f s left   ", done, rows, s > 0 ? rays / s : 0.0, left);
+        std::fflush(stderr);
+      };
+      cb.rowDone = [&](int row, const std::vector<std::int16_t>& indices) {
+        finished[static_cast<std::size_t>(row)] = 1;
+        if (live) live->drawRow(at, row, indices);  // PutPixel(j, i, color)
+      };
+
+      RenderResult result;
+      if (window) {
+        // The render on its own thread; this one keeps the window alive.
+        std::exception_ptr error;
+        std::atomic<bool> done{false};
+        std::thread worker([&] {
+          try {
+            result = render(scene, settings, cb);
+          } catch (...) {
+            error = std::current_exception();
+          }
+          done = true;
+        });
+        while (!done) {
+          if (window->poll(30)) abort = true;  // Esc, close, Ctrl-C: ExitOnEsc
+          const int d = rowsDone, n = rowsTotal;
+          window->setStatus(abort ? "aborting"
+                                  : "rows " + std::to_string(d) + "/" + std::to_string(n) + " (" +
+                                        std::to_string(n > 0 ? 100 * d / n : 0) + "%)");
+        }
+        worker.join();
+        if (error) std::rethrow_exception(error);
+      } else {
+        SignalsAbort signals(abort);
+        result = render(scene, settings, cb);
+      }
       if (tty) std::fprintf(stderr, "\n");
+
+      if (result.aborted) {
+        window.reset();  // ExitOnEsc: the screen goes at once
+        std::size_t prefix = 0;
+        while (prefix < finished.size() && finished[prefix]) ++prefix;
+        std::error_code ec;
+        const bool removed = std::filesystem::remove(target, ec);
+        io::GraphFile head = result.graph;
+        head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
+        io::writeGraphFile(partial, head);
+        const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
+        std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size() << " rows: " << target << " not written" << (removed ? " (the old one was removed)" : "")
+                  << "; the " << prefix << " rows finished from the top are in " << partial
+                  << " (prime view shows it); no PNG written\n";
+        if (!*quiet) printSummary(result, partial);
+        return 1;  // as ExitOnEsc's exit(1)
+      }
+
       io::writeGraphFile(target, result.graph);
-      if (!png->empty())
-        writePng(*png, graphToImage(result.graph, options->settings.mapping == ColorMapping::Plate3
-                                                      ? plate3Palette()
-                                                      : initPalette()));
+      std::error_code ec;
+      std::filesystem::remove(partial, ec);  // an older aborted run's
+      if (!png->empty() || !trueColourPng->empty()) {
+        const ImageArea area = areaOf(*display);
+        if (!png->empty()) {
+          Screen screen(screenW, screenH);
+          drawGraph(screen, result.graph, at);
+          writePng(*png, exportImage(screen, result.graph, result.graph.pixels.size(), at,
+                                     present(palette.dac, dacOf(*display)), area));
+        }
+        if (!trueColourPng->empty())
+          writePng(*trueColourPng, exportTrueColour(screenW, screenH, result.graph, result.rgb, at, area));
+      }
       if (!*quiet) printSummary(result, target);
+      std::fflush(stdout);
+      if (window && !*noWait) {
+        char status[64];
+        std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);
+        window->setStatus(status);
+        if (!*quiet)
+          std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); --no-wait or --no-window "
+                       "to skip this\n";
+        while (!window->poll(100)) {
+        }
+      }
       return 0;
     };
   });

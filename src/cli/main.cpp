@@ -14,6 +14,14 @@ int main(int argc, char** argv) {
   prime::cli::addDumpCommand(app, action);
   prime::cli::addTraceCommand(app, action);
   prime::cli::addProbeCommand(app, action);
+  prime::cli::addViewCommand(app, action);
+  prime::cli::addExportCommand(app, action);
+  prime::cli::addDiffCommand(app, action);
+  prime::cli::addPaletteCommand(app, action);
+  prime::cli::addExportPovCommand(app, action);
+  prime::cli::addBenchCommand(app, action);
+  prime::cli::addPlate1Command(app, action);
+  prime::cli::addStressCommand(app, action);
   CLI11_PARSE(app, argc, argv);
   try {
     return action ? action() : 0;

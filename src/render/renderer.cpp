@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -106,6 +107,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
   std::atomic<int> nextRow{0}, rowsDone{0};
   std::atomic<std::uint64_t> raysSoFar{0};
   std::mutex mutex;  // guards the shared counters, the finished-row queue and the first error
+  std::condition_variable wake;  // the last row is done, or an error: no need to sleep out the 200 ms
   TraceStats total;
   std::vector<int> finished;
   std::exception_ptr error;
@@ -127,16 +129,23 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
           result.graph.pixels[at] = static_cast<std::int16_t>(paletteIndex(color, settings, local));
         }
       } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
-        nextRow = rows;  // stop everyone
+        {
+          std::lock_guard lock(mutex);
+          if (!error) error = std::current_exception();
+          nextRow = rows;  // stop everyone
+        }
+        wake.notify_all();
         break;
       }
       raysSoFar += local.rays() - raysReported;
       raysReported = local.rays();
-      std::lock_guard lock(mutex);
-      finished.push_back(i);
-      ++rowsDone;
+      bool last = false;
+      {
+        std::lock_guard lock(mutex);
+        finished.push_back(i);
+        last = ++rowsDone == rows;
+      }
+      if (last) wake.notify_all();
     }
     std::lock_guard lock(mutex);
     total += local;
@@ -158,8 +167,14 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
       }
     if (callbacks.progress) callbacks.progress(rowsDone.load(), rows, raysSoFar.load());
   };
-  while (rowsDone.load() < rows && !error && !(callbacks.abort && callbacks.abort->load())) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  auto stop = [&] { return rowsDone.load() >= rows || error || (callbacks.abort && callbacks.abort->load()); };
+  for (;;) {
+    {
+      std::unique_lock lock(mutex);
+      if (stop()) break;
+      wake.wait_for(lock, std::chrono::milliseconds(200), stop);
+      if (stop()) break;
+    }
     report();
   }
   for (auto& t : pool) t.join();

@@ -43,6 +43,53 @@ double texel(const SceneTexture& m, int c, double u, double v) {
 
 }  // namespace
 
+Matrix4 accurateInverse(const Matrix4& m) {
+  // Affine row-vector matrix: p' = p A + tr. A^-1 by cofactors in long
+  // double, one Newton step X <- X (2I - A X) in long double, then the
+  // translation row -tr A^-1; every entry rounded to double once.
+  using LD = long double;
+  LD a[3][3], x[3][3], c[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = m[i][j];
+  c[0][0] = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+  c[0][1] = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+  c[0][2] = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+  c[1][0] = a[0][2] * a[2][1] - a[0][1] * a[2][2];
+  c[1][1] = a[0][0] * a[2][2] - a[0][2] * a[2][0];
+  c[1][2] = a[0][1] * a[2][0] - a[0][0] * a[2][1];
+  c[2][0] = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+  c[2][1] = a[0][2] * a[1][0] - a[0][0] * a[1][2];
+  c[2][2] = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+  const LD det = a[0][0] * c[0][0] + a[0][1] * c[0][1] + a[0][2] * c[0][2];
+  Matrix4 inv = identity4();
+  if (!(det != 0) || !std::isfinite(static_cast<double>(det))) {
+    inverse(m, inv);  // degenerate: the database's inverse is all there is
+    return inv;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) x[i][j] = c[j][i] / det;
+  LD ax[3][3], y[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      ax[i][j] = 0;
+      for (int k = 0; k < 3; ++k) ax[i][j] += a[i][k] * x[k][j];
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      LD s = 0;  // X (2I - A X)
+      for (int k = 0; k < 3; ++k) s += x[i][k] * ((k == j ? 2 : 0) - ax[k][j]);
+      y[i][j] = s;
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) inv[i][j] = static_cast<double>(y[i][j]);
+  for (int j = 0; j < 3; ++j) {
+    LD t = 0;
+    for (int k = 0; k < 3; ++k) t -= static_cast<LD>(m[3][k]) * y[k][j];
+    inv[3][j] = static_cast<double>(t);
+  }
+  return inv;
+}
+
 Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w) {
   const double d = dot(absV(n), pError);
   Vec3 offset = n * d;
@@ -58,6 +105,8 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
 TracerModern::TracerModern(const Scene& scene, TraceOptions options)
     : scene_(scene), options_(options), bvh_(scene) {
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+  inverse_.reserve(scene.prims.size());
+  for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
 }
 
 TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const {
@@ -66,7 +115,7 @@ TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, Trac
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
     Interval in;
-    if (!intersectModern(p.type, transformRay(ray, p.inverse), in)) return std::nullopt;
+    if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
     return in;
   };
   return csgModern(obj.entries, leaf);
@@ -82,7 +131,9 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
       Interval in;
-      if (!intersectModern(b.type, transformRay(ray, b.inverse), in) || !(in.tOut > 0.0)) return;
+      if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
+          !(in.tOut > 0.0))
+        return;
     }
     const TList list = objectIntervals(obj, ray, stats);
     for (const TNode& node : list) {
@@ -99,7 +150,8 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   if (bestObj < 0) return false;
 
   const ScenePrim& prim = scene_.prims[bestNode.prim];
-  const Ray local = transformRay(ray, prim.inverse);
+  const Matrix4& inv = inverse_[bestNode.prim];
+  const Ray local = transformRay(ray, inv);
   hit.t = nearest;
   hit.obj = bestObj;
   hit.prim = bestNode.prim;
@@ -112,7 +164,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   // primitive-space computation behind it (transform, solve): 32 roundings
   // of the magnitudes involved is a safe bound for every primitive here.
   for (int i = 0; i < 3; ++i) hit.pointError[i] = gamma(32) * (std::abs(ray.o[i]) + std::abs(nearest * ray.d[i]));
-  Vec3 n = normalToWorld(bestNode.norm, prim.inverse);
+  Vec3 n = normalToWorld(bestNode.norm, inv);
   // Which side of the PRIMITIVE's own surface the ray is on picks the
   // outside or inside map (a difference's cut face shows B's inside).
   Interval own;
@@ -158,11 +210,10 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
       return r;
     }
     distance += exit->t;
-    const ScenePrim& p = scene_.prims[exit->prim];
     const Vec3 pt = r.o + r.d * exit->t;
     Vec3 pErr;
     for (int i = 0; i < 3; ++i) pErr[i] = gamma(32) * (std::abs(r.o[i]) + std::abs(exit->t * r.d[i]));
-    Vec3 nOut = normalToWorld(exit->norm, p.inverse);  // outward of the solid
+    Vec3 nOut = normalToWorld(exit->norm, inverse_[exit->prim]);  // outward of the solid
     if (dot(nOut, r.d) < 0) nOut = -nOut;
     const double c = clamp1(dot(r.d, nOut));
     const double k2 = 1.0 - indx * indx * (1.0 - c * c);

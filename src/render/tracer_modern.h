@@ -49,7 +49,14 @@ class TracerModern {
   TraceOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
+  std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform
 };
+
+// The inverse of an affine row-vector transform, accurate to about one
+// rounding per entry (long double cofactors and one Newton step), instead of
+// the database's unpivoted Gauss-Jordan inverse (K42, M18: good to 1.5e-9
+// only for a 90-degree rotation). A singular matrix gives prime::inverse's.
+Matrix4 accurateInverse(const Matrix4& m);
 
 // A point moved off its surface along `n` (the side the new ray leaves on)
 // by more than its error bound, so the new ray cannot re-hit the surface it

@@ -1,0 +1,69 @@
+// intersectPrimitive1991 and boundHit1991 per primitive type, for a ray that
+// hits and one that misses (rays in primitive space, as IntersectPrim gets them).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "src/geom/primitives_1991.h"
+
+namespace {
+
+using prime::PrimHit;
+using prime::Ray;
+
+struct Case {
+  const char* name;
+  char type;
+  Ray hit, miss;
+};
+
+// Every hit ray crosses the primitive's body away from edges; every miss
+// ray passes 5 units beside it.
+const Case kCases[] = {
+    {"sphere", 'S', {{0.1, 0.2, -5.0}, {0.01, 0.02, 1.0}}, {{5.0, 0.2, -5.0}, {0.01, 0.02, 1.0}}},
+    {"cube", 'B', {{0.5, 0.4, -5.0}, {0.01, 0.02, 1.0}}, {{5.5, 0.4, -5.0}, {0.01, 0.02, 1.0}}},
+    {"cylinder", 'C', {{-5.0, 0.1, 0.5}, {1.0, 0.01, 0.02}}, {{-5.0, 5.1, 0.5}, {1.0, 0.01, 0.02}}},
+    {"cone", 'N', {{-5.0, 0.1, 0.7}, {1.0, 0.01, 0.01}}, {{-5.0, 5.1, 0.7}, {1.0, 0.01, 0.01}}},
+    {"pyramid", 'Y', {{0.5, 0.3, -5.0}, {0.0, 0.01, 1.0}}, {{5.5, 0.3, -5.0}, {0.0, 0.01, 1.0}}},
+};
+
+void intersect(benchmark::State& state, char type, Ray ray, bool expectHit) {
+  PrimHit hit;
+  if (prime::intersectPrimitive1991(type, ray, hit) != expectHit) {
+    state.SkipWithError("the ray does not do what the benchmark expects");
+    return;
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ray);
+    const bool h = prime::intersectPrimitive1991(type, ray, hit);
+    benchmark::DoNotOptimize(h);
+    benchmark::DoNotOptimize(hit);
+  }
+}
+
+void bound(benchmark::State& state, char type, Ray ray, bool expectHit) {
+  if (prime::boundHit1991(type, ray) != expectHit) {
+    state.SkipWithError("the ray does not do what the benchmark expects");
+    return;
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ray);
+    const bool h = prime::boundHit1991(type, ray);
+    benchmark::DoNotOptimize(h);
+  }
+}
+
+const int kRegistered = [] {
+  for (const Case& c : kCases) {
+    const std::string n = c.name;
+    benchmark::RegisterBenchmark(("intersect/" + n + "/hit").c_str(), intersect, c.type, c.hit,
+                                 true);
+    benchmark::RegisterBenchmark(("intersect/" + n + "/miss").c_str(), intersect, c.type, c.miss,
+                                 false);
+    benchmark::RegisterBenchmark(("bound/" + n + "/hit").c_str(), bound, c.type, c.hit, true);
+    benchmark::RegisterBenchmark(("bound/" + n + "/miss").c_str(), bound, c.type, c.miss, false);
+  }
+  return 0;
+}();
+
+}  // namespace

@@ -1,0 +1,71 @@
+// The emulated 8514/A in a real window (SDL2): the whole screen, each index
+// through the palette's DAC table and a 6-to-8-bit conversion, scaled by an
+// integer zoom. It draws with SDL's window surface (no GPU renderer), sending
+// only the band of rows that changed, so what the X server shows is exactly
+// the converted indices.
+//
+// Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, P next
+// palette, D next DAC conversion, S or F12 save a screenshot PNG. The close
+// button, SIGINT and SIGTERM count as Esc.
+#pragma once
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "palette/dac.h"
+#include "palette/palettes.h"
+#include "palette/window/live_screen.h"
+
+namespace prime::display {
+
+class WindowError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Why no window should be tried (`--no-window`, or neither DISPLAY nor
+// WAYLAND_DISPLAY set), or nullopt.
+std::optional<std::string> headlessReason(bool noWindowFlag);
+
+struct WindowConfig {
+  std::string caption;            // first part of the title: scene or file
+  std::vector<Palette> palettes;  // P cycles through them; the first is shown first
+  DacTo8 dac = kDefaultDacTo8;
+  int zoom = 1;                   // 1..8
+  std::string screenshotDir = ".";
+};
+
+class ScreenWindow {
+ public:
+  // Opens the window; throws WindowError when SDL cannot.
+  ScreenWindow(LiveScreen& screen, WindowConfig config);
+  ~ScreenWindow();
+  ScreenWindow(const ScreenWindow&) = delete;
+  ScreenWindow& operator=(const ScreenWindow&) = delete;
+
+  // Handles the events that arrive within `timeoutMs` (at least the pending
+  // ones) and sends the rows that changed to the display. Returns true once
+  // the user has asked to stop.
+  bool poll(int timeoutMs);
+  // The last part of the title (progress, "done", ...).
+  void setStatus(const std::string& status);
+  // The display has everything drawn so far: the window has been exposed and
+  // no changed row is waiting.
+  bool upToDate() const;
+  // The X11 window id (0 on other video drivers), for tools such as xwd.
+  unsigned long nativeId() const;
+  const Palette& palette() const;
+  DacTo8 dac() const;
+  int zoom() const;
+  // Saves the window's pixels, as sent to the display, as a PNG in the
+  // screenshot directory; returns the path.
+  std::string saveScreenshot();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace prime::display
