@@ -144,7 +144,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
          "--screen", o->screen,
          "Screen size W H for the scenes (default 512 x 384: 176 x 385 pixels; 1024 768 is the "
          "listing's 350 x 769)")
-      ->expected(2)
+      ->expected(2)->allow_extra_args(false)
       ->check(CLI::Range(8, 4096));
   cmd->add_flag("--scale", o->scale,
                 "Also run the scale study (generated scenes of 1 .. 10,000 objects)");

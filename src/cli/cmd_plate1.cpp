@@ -34,18 +34,18 @@ void addPlate1Command(CLI::App& app, Action& action) {
   cmd->add_option("--png", o->png, "Also write the picture as PNG (listing palette)");
   cmd->add_option("--png-area", o->area, "image (the viewport, default) or screen (all 1024 x 768)")
       ->check(CLI::IsMember({"image", "screen"}));
-  cmd->add_option("--eye", o->eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3);
+  cmd->add_option("--eye", o->eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3)->allow_extra_args(false);
   cmd->add_option("--window-left", o->windowLeft,
                   "World window top-left corner (listing: 0 1000 0)")
-      ->expected(3);
+      ->expected(3)->allow_extra_args(false);
   cmd->add_option("--window-right", o->windowRight,
                   "World window top-right corner (listing: 1000 1000 0)")
-      ->expected(3);
+      ->expected(3)->allow_extra_args(false);
   cmd->add_option("--viewport", o->viewport,
                   "Screen viewport xMin yMin xMax yMax, normalised (listing: 0.66 0 1 1)")
-      ->expected(4);
+      ->expected(4)->allow_extra_args(false);
   cmd->add_option("--screen", o->screen, "Screen size in pixels W H (8514/A: 1024 768)")
-      ->expected(2);
+      ->expected(2)->allow_extra_args(false);
   cmd->add_option("--curves", o->wire.curvesPerPatch,
                   "Curves per patch in each direction (default 4)")
       ->check(CLI::Range(1, 64));

@@ -17,8 +17,8 @@ void addProbeCommand(CLI::App& app, Action& action) {
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
   auto* px = cmd->add_option("--pixel", *pixel,
                              "Column and row of the rendered image, 0-based from its top-left (graph-file order)")
-                 ->expected(2);
-  auto* rx = cmd->add_option("--ray", *ray, "A world-space ray: origin x y z, direction x y z")->expected(6);
+                 ->expected(2)->allow_extra_args(false);
+  auto* rx = cmd->add_option("--ray", *ray, "A world-space ray: origin x y z, direction x y z")->expected(6)->allow_extra_args(false);
   px->excludes(rx);
   cmd->add_flag("--json", *asJson, "Print JSON (one object with an events array)");
   addRenderOptions(cmd, *options);

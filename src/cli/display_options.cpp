@@ -22,11 +22,11 @@ void addAreaOption(CLI::App* cmd, DisplayOptions& o, const std::string& name) {
 }
 
 void addGeometryOptions(CLI::App* cmd, DisplayOptions& o) {
-  cmd->add_option("--screen", o.screen, "Emulated screen size W H (default: 1024 768, the 8514/A)")->expected(2);
+  cmd->add_option("--screen", o.screen, "Emulated screen size W H (default: 1024 768, the 8514/A)")->expected(2)->allow_extra_args(false);
   cmd->add_option("--at", o.at,
                   "Screen position X Y of the file's first pixel (default: where RayTrace.c drew, "
                   "AssignScrPts(0.66, 0, ...): 675 0)")
-      ->expected(2);
+      ->expected(2)->allow_extra_args(false);
 }
 
 void addWindowOptions(CLI::App* cmd, DisplayOptions& o) {

@@ -9,14 +9,14 @@
 namespace prime::cli {
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("--eye", o.eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3);
-  cmd->add_option("--window-left", o.windowLeft, "World window top-left corner (listing: 0 1000 0)")->expected(3);
+  cmd->add_option("--eye", o.eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3)->allow_extra_args(false);
+  cmd->add_option("--window-left", o.windowLeft, "World window top-left corner (listing: 0 1000 0)")->expected(3)->allow_extra_args(false);
   cmd->add_option("--window-right", o.windowRight, "World window top-right corner (listing: 1000 1000 0)")
-      ->expected(3);
+      ->expected(3)->allow_extra_args(false);
   cmd->add_option("--viewport", o.viewport,
                   "Screen viewport xMin yMin xMax yMax, normalised (listing: 0.66 0 1 1)")
-      ->expected(4);
-  cmd->add_option("--screen", o.screen, "Screen size in pixels W H (8514/A: 1024 768)")->expected(2);
+      ->expected(4)->allow_extra_args(false);
+  cmd->add_option("--screen", o.screen, "Screen size in pixels W H (8514/A: 1024 768)")->expected(2)->allow_extra_args(false);
   cmd->add_option("--max-depth", o.settings.trace.maxDepth, "Recursion depth limit (listing MaxDepth: 5)")
       ->check(CLI::Range(0, 64));
   cmd->add_option("--tir-cap", o.settings.trace.tirCap,

@@ -74,6 +74,16 @@ TEST(PrimeCommand, ProbeExplainsTheCentrePixel) {
   EXPECT_THAT(r.output, HasSubstr("outside the image (350 x 769)"));
 }
 
+TEST(PrimeCommand, VectorOptionsMayComeBeforeTheDirectory) {
+  // --viewport takes exactly four numbers; the scene directory after it is
+  // the positional argument, not a fifth number.
+  prime::test::TempScene s;
+  sphere(s);
+  const CommandResult r = prime("trace --viewport 0.125 0 0.875 1 --screen 512 384 --model --no-window " + s.path().string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("traced 385 x 385 pixels"));
+}
+
 TEST(PrimeCommand, DumpNamesTheKindOrAsksForIt) {
   prime::test::TempScene s;
   sphere(s);
