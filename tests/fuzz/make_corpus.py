@@ -25,6 +25,28 @@ SCENES = {"default": os.path.join(ROOT, "scenes", "default"),
 TEXT_SUBDIRS = ["", "prim", "bound", "obj", "obj/Copy", "map", "light"]
 
 
+# A scene with O entries (CopyPrim, prim/A<n>.txt), CopyObj, a pyramid and a
+# bound: modelled and seeded like the two real scenes.
+EDGE_COPIES = [
+    ("Model.txt", b"AddObj d1.txt\nAddObj d2.txt\nAddToObjList 2\nCopyObj O2 O3 c1.txt\n"
+                  b"AddToObjList 3\nAddMap m.txt\nAddMap m0.txt\n"),
+    ("obj/H1.txt", b"0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n"),
+    ("obj/D1.txt", b"3\n- 1 2\nB 1\nS 1\nNULL\n"),
+    ("obj/H2.txt", b"0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n"),
+    ("obj/D2.txt", b"3\n+ 1 2\nO 1 1\nY 1\nB 2\n"),
+    ("obj/Copy/c1.txt", b"1 1 1\n0 -400 0\n0 0 90\n0 0 0\n"),
+    ("prim/A1.txt", b"2 2 2\n10 0 0\n0 45 0\n0.5 0.5 0.5\n"),
+    ("prim/B1.txt", b"B\n100 100 100\n0 0 0\n0 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n"),
+    ("prim/S1.txt", b"S\n60 60 60\n50 50 0\n0 0 0\n0 0 0\n1 1\n0\n"),
+    ("prim/Y1.txt", b"Y\n50 80 50\n0 0 200\n30 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1\n2\n"),
+    ("bound/B2.txt", b"B\n400 400 400\n-10 -10 -10\n0 0 0\n0 0 0\n"),
+    ("map/m.txt", b"1\n2 1\n0.1 0.2\n0.3 0.4\n0.5 0.6\n"),
+    # Map 0: the copies of the sphere become pyramids (K33), whose other surfaces name map 0.
+    ("map/m0.txt", b"0\n1 1\n0.5\n0.5\n0.5\n"),
+    ("light/light.txt", b"0.2 0.2 0.2\n1\n0 1000 -1000\n1 1 1\n"),
+]
+
+
 def model(prime, src, dst):
     """Copies the text inputs of scene `src` to `dst` and runs prime model there."""
     for sub in TEXT_SUBDIRS:
@@ -93,6 +115,15 @@ def main():
         for name, src in SCENES.items():
             built[name] = os.path.join(tmp, name)
             model(prime, src, built[name])
+        edge = os.path.join(tmp, "edge-copies-src")
+        for rel, data in EDGE_COPIES:
+            os.makedirs(os.path.dirname(os.path.join(edge, rel)), exist_ok=True)
+            with open(os.path.join(edge, rel), "wb") as f:
+                f.write(data)
+        for sub in TEXT_SUBDIRS:
+            os.makedirs(os.path.join(edge, sub), exist_ok=True)
+        built["edge-copies"] = os.path.join(tmp, "edge-copies")
+        model(prime, edge, built["edge-copies"])
         write_all(built)
     finally:
         shutil.rmtree(tmp)
@@ -163,23 +194,6 @@ def write_all(built):
     add("text_inputs", "edge-obj-ocopy", b"d3\n+ 1 2\nO 1 1\nO 1 2\nNULL\n")
     add("text_inputs", "edge-light-crlf", b"l0.1 0.1 0.1\r\n1\r\n+1e3 -2.5E2 0\r\n1 1 1\r\n")
     add("text_inputs", "edge-reader-words", b"r+150 1.5e2 -32768 32768 nan inf 0x10 word\t\n1.5x")
-    # A scene with O entries (CopyPrim, prim/A<n>.txt), CopyObj and a bound.
-    add("model_builder", "edge-copies", bundle([
-        ("Model.txt", b"AddObj d1.txt\nAddObj d2.txt\nAddToObjList 2\nCopyObj O2 O3 c1.txt\n"
-                      b"AddToObjList 3\nAddMap m.txt\n"),
-        ("obj/H1.txt", b"0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n"),
-        ("obj/D1.txt", b"3\n- 1 2\nB 1\nS 1\nNULL\n"),
-        ("obj/H2.txt", b"0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n"),
-        ("obj/D2.txt", b"3\n+ 1 2\nO 1 1\nY 1\nB 2\n"),
-        ("obj/Copy/c1.txt", b"1 1 1\n0 -400 0\n0 0 90\n0 0 0\n"),
-        ("prim/A1.txt", b"2 2 2\n10 0 0\n0 45 0\n0.5 0.5 0.5\n"),
-        ("prim/B1.txt", b"B\n100 100 100\n0 0 0\n0 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n"),
-        ("prim/S1.txt", b"S\n60 60 60\n50 50 0\n0 0 0\n0 0 0\n1 1\n0\n"),
-        ("prim/Y1.txt", b"Y\n50 80 50\n0 0 200\n30 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1\n2\n"),
-        ("bound/B2.txt", b"B\n400 400 400\n-10 -10 -10\n0 0 0\n0 0 0\n"),
-        ("map/m.txt", b"1\n2 1\n0.1 0.2\n0.3 0.4\n0.5 0.6\n"),
-        ("light/light.txt", b"0.2 0.2 0.2\n1\n0 1000 -1000\n1 1 1\n"),
-    ]))
 
     # The inputs of tests/unit/legacy_io/fuzz_regressions_test.cpp that are small.
     add("dump", "regression-shared-subtrees",

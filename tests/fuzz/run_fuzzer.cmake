@@ -1,5 +1,6 @@
 # One bounded fuzzing run, as the ctest test fuzz.<name> (tests/fuzz/CMakeLists.txt):
 #   cmake -DFUZZER=exe -DSEEDS=dir -DWORK=dir [-DDICT=file] -DSECONDS=n -P run_fuzzer.cmake
+# A fixed -seed keeps CI runs comparable (the time budget still varies).
 # Copies the seed corpus to WORK/corpus (libFuzzer adds what it finds there,
 # never to the source tree), fuzzes for SECONDS, and fails on any finding;
 # the input that caused it is left in WORK/artifacts/.
@@ -17,7 +18,7 @@ if(NOT seeds)
 endif()
 file(COPY ${seeds} DESTINATION ${WORK}/corpus)
 
-set(args -max_total_time=${SECONDS} -rss_limit_mb=1024 -malloc_limit_mb=512 -timeout=5
+set(args -seed=1 -max_total_time=${SECONDS} -rss_limit_mb=1024 -malloc_limit_mb=512 -timeout=5
          -max_len=16384 -print_final_stats=1 -artifact_prefix=${WORK}/artifacts/)
 if(DICT)
   list(APPEND args -dict=${DICT})
