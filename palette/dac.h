@@ -28,7 +28,9 @@ struct Dac6 {
 using DacTable = std::array<Dac6, 256>;
 
 // What setrgbpalette loads into the DAC from one 0..255 argument.
-constexpr std::uint8_t setrgbToDac6(int v) { return static_cast<std::uint8_t>((v & 0xFF) >> 2); }
+constexpr std::uint8_t setrgbToDac6(int v) {
+  return static_cast<std::uint8_t>((v & 0xFF) >> 2);
+}
 
 // The DAC after setrgbpalette(i, t[i].r, t[i].g, t[i].b) for every i.
 DacTable loadDac(const PaletteTable& setrgbpaletteCalls);
@@ -55,7 +57,7 @@ constexpr std::uint8_t dacTo8(int v6, DacTo8 how) {
   return static_cast<std::uint8_t>((v * 255 + 31) / 63);
 }
 
-std::string_view dacTo8Name(DacTo8 how);                       // "round", "replicate", "truncate"
+std::string_view dacTo8Name(DacTo8 how);                      // "round", "replicate", "truncate"
 std::optional<DacTo8> dacTo8FromName(std::string_view name);  // the inverse; nullopt if unknown
 
 // A colour on an 8-bit-per-channel display (PNG, window).

@@ -17,17 +17,20 @@ Image8 blank(int w, int h) {
 }
 
 void set(Image8& img, int x, int y, Rgb8 c) {
-  std::uint8_t* p = &img.rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + x) * 3];
+  std::uint8_t* p =
+      &img.rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + x) * 3];
   p[0] = c.r;
   p[1] = c.g;
   p[2] = c.b;
 }
 
 Rect imageAreaOrThrow(int screenWidth, int screenHeight, const io::GraphFile& graph, Placement at) {
-  const Rect area = intersect({0, 0, screenWidth, screenHeight}, {at.left, at.top, graph.width(), graph.height()});
+  const Rect area = intersect({0, 0, screenWidth, screenHeight},
+                              {at.left, at.top, graph.width(), graph.height()});
   if (area.empty())
-    throw std::runtime_error("the " + std::to_string(graph.width()) + " x " + std::to_string(graph.height()) +
-                             " image at (" + std::to_string(at.left) + ", " + std::to_string(at.top) +
+    throw std::runtime_error("the " + std::to_string(graph.width()) + " x " +
+                             std::to_string(graph.height()) + " image at (" +
+                             std::to_string(at.left) + ", " + std::to_string(at.top) +
                              ") lies entirely off the " + std::to_string(screenWidth) + " x " +
                              std::to_string(screenHeight) + " screen; use --area file or --at");
   return area;
@@ -58,13 +61,14 @@ Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area) {
   Image8 img = blank(area.w, area.h);
   for (int y = 0; y < area.h; ++y) {
     const auto row = screen.row(area.y + y);
-    for (int x = 0; x < area.w; ++x) set(img, x, y, colours[row[static_cast<std::size_t>(area.x + x)]]);
+    for (int x = 0; x < area.w; ++x)
+      set(img, x, y, colours[row[static_cast<std::size_t>(area.x + x)]]);
   }
   return img;
 }
 
-Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent, Placement at,
-                   const Rgb8Table& colours, ImageArea area) {
+Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent,
+                   Placement at, const Rgb8Table& colours, ImageArea area) {
   switch (area) {
     case ImageArea::Screen:
       return screenImage(screen, colours, screen.bounds());
@@ -73,7 +77,8 @@ Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t
       for (std::size_t i = 0; i < graph.pixels.size(); ++i) {
         const int index = i < pixelsPresent ? (graph.pixels[i] & 0xFF) : 0;  // Q12
         const int w = graph.width();
-        set(img, static_cast<int>(i % static_cast<std::size_t>(w)), static_cast<int>(i / static_cast<std::size_t>(w)),
+        set(img, static_cast<int>(i % static_cast<std::size_t>(w)),
+            static_cast<int>(i / static_cast<std::size_t>(w)),
             colours[static_cast<std::size_t>(index)]);
       }
       return img;
@@ -93,12 +98,14 @@ Rgb8 trueColour(const Rgb& c) {
   return {to8(c[0]), to8(c[1]), to8(c[2])};
 }
 
-Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph, std::span<const Rgb> rgb,
-                        Placement at, ImageArea area) {
+Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph,
+                        std::span<const Rgb> rgb, Placement at, ImageArea area) {
   const int gw = graph.width(), gh = graph.height();
   if (rgb.size() != static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh))
     throw std::invalid_argument("exportTrueColour: one colour per graph-file pixel expected");
-  auto colourAt = [&](int gx, int gy) { return trueColour(rgb[static_cast<std::size_t>(gy) * gw + gx]); };
+  auto colourAt = [&](int gx, int gy) {
+    return trueColour(rgb[static_cast<std::size_t>(gy) * gw + gx]);
+  };
   if (area == ImageArea::File) {
     Image8 img = blank(gw, gh);
     for (int y = 0; y < gh; ++y)
@@ -109,7 +116,8 @@ Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& 
   const Rect frame = area == ImageArea::Screen ? Rect{0, 0, screenWidth, screenHeight} : on;
   Image8 img = blank(frame.w, frame.h);
   for (int y = on.y; y < on.y + on.h; ++y)
-    for (int x = on.x; x < on.x + on.w; ++x) set(img, x - frame.x, y - frame.y, colourAt(x - at.left, y - at.top));
+    for (int x = on.x; x < on.x + on.w; ++x)
+      set(img, x - frame.x, y - frame.y, colourAt(x - at.left, y - at.top));
   return img;
 }
 

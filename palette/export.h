@@ -32,8 +32,8 @@ Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area);
 // the file area, the first `pixelsPresent` pixels come from the file and the
 // rest show index 0 (a partial file). Throws std::runtime_error when the
 // image area is empty (the file lies entirely off the screen).
-Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent, Placement at,
-                   const Rgb8Table& colours, ImageArea area);
+Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent,
+                   Placement at, const Rgb8Table& colours, ImageArea area);
 
 // One unquantised colour on an 8-bit display: each channel clamped to 0..1
 // and rounded to the nearest of 0..255; NaN is 0.
@@ -41,7 +41,7 @@ Rgb8 trueColour(const Rgb& colour);
 // The render's unquantised colours (`rgb`, one per graph-file pixel, same
 // order) over the same area as exportImage; the rest of a screen-area image
 // is black.
-Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph, std::span<const Rgb> rgb,
-                        Placement at, ImageArea area);
+Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph,
+                        std::span<const Rgb> rgb, Placement at, ImageArea area);
 
 }  // namespace prime

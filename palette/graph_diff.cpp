@@ -21,7 +21,8 @@ int channelDifference(const Rgb8& p, const Rgb8& q) {
 GraphDiff diffGraphs(const io::GraphFile& a, const io::GraphFile& b, const Rgb8Table& colours) {
   GraphDiff d;
   d.sameGraphType = a.graphType == b.graphType;
-  d.sameSize = a.width() == b.width() && a.height() == b.height() && a.pixels.size() == b.pixels.size();
+  d.sameSize =
+      a.width() == b.width() && a.height() == b.height() && a.pixels.size() == b.pixels.size();
   if (!d.sameSize) return d;
   d.pixels = a.pixels.size();
   const std::size_t w = static_cast<std::size_t>(std::max(1, a.width()));
@@ -32,7 +33,8 @@ GraphDiff diffGraphs(const io::GraphFile& a, const io::GraphFile& b, const Rgb8T
       d.firstX = x;
       d.firstY = y;
     }
-    const int diff = channelDifference(colourOf(colours, a.pixels[i]), colourOf(colours, b.pixels[i]));
+    const int diff =
+        channelDifference(colourOf(colours, a.pixels[i]), colourOf(colours, b.pixels[i]));
     if (diff > 0) ++d.lookDifferent;
     if (diff > d.maxColourDifference) {
       d.maxColourDifference = diff;

@@ -16,17 +16,19 @@
 namespace prime {
 
 struct GraphDiff {
-  bool sameSize = false;        // same pixel grid; nothing else is compared otherwise
+  bool sameSize = false;  // same pixel grid; nothing else is compared otherwise
   bool sameGraphType = false;
-  std::size_t pixels = 0;       // pixels compared
-  std::size_t differing = 0;    // raw values differ
+  std::size_t pixels = 0;         // pixels compared
+  std::size_t differing = 0;      // raw values differ
   std::size_t lookDifferent = 0;  // ... and their screen colours differ too
-  int maxColourDifference = 0;  // 0..255, over all pixels and channels
-  int maxX = -1, maxY = -1;     // the first pixel (row by row) with that difference (-1: none)
-  int firstX = -1, firstY = -1; // the first differing pixel (-1: none)
+  int maxColourDifference = 0;    // 0..255, over all pixels and channels
+  int maxX = -1, maxY = -1;       // the first pixel (row by row) with that difference (-1: none)
+  int firstX = -1, firstY = -1;   // the first differing pixel (-1: none)
 
   bool identical() const { return sameSize && sameGraphType && differing == 0; }
-  double share() const { return pixels ? static_cast<double>(differing) / static_cast<double>(pixels) : 0.0; }
+  double share() const {
+    return pixels ? static_cast<double>(differing) / static_cast<double>(pixels) : 0.0;
+  }
 };
 
 GraphDiff diffGraphs(const io::GraphFile& a, const io::GraphFile& b, const Rgb8Table& colours);

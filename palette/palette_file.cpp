@@ -78,24 +78,28 @@ class Parser {
       std::string_view line = text_.substr(pos, eol - pos);
       pos = eol + 1;
       ++line_;
-      if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      if (const auto hash = line.find('#'); hash != std::string_view::npos)
+        line = line.substr(0, hash);
       const auto w = words(line);
       if (w.empty()) continue;
       if (!header) {
         if (w[0] != "prime-palette")
-          fail("header", "\"prime-palette 1\" as the first line that is not a comment", shown(line));
+          fail("header", "\"prime-palette 1\" as the first line that is not a comment",
+               shown(line));
         if (w.size() != 2 || w[1] != "1")
-          fail("version", "1", w.size() < 2 ? "nothing" : shown(w[1]) + (w.size() > 2 ? " and more" : ""));
+          fail("version", "1",
+               w.size() < 2 ? "nothing" : shown(w[1]) + (w.size() > 2 ? " and more" : ""));
         header = true;
         continue;
       }
       if (!integer(w[0])) {  // a directive
         if (entries)
-          fail(std::string(w[0]), "an entry INDEX RED GREEN BLUE (directives come before the entries)",
-               shown(w[0]));
+          fail(std::string(w[0]),
+               "an entry INDEX RED GREEN BLUE (directives come before the entries)", shown(w[0]));
         if (w[0] == "name") {
           if (w.size() < 2) fail("name", "a name after \"name\"", "nothing");
-          p.name = std::string(trim(line.substr(static_cast<std::size_t>(w[1].data() - line.data()))));
+          p.name =
+              std::string(trim(line.substr(static_cast<std::size_t>(w[1].data() - line.data()))));
           p.description = "user palette " + file_;
         } else if (w[0] == "values") {
           if (w.size() != 2 || (w[1] != "setrgbpalette" && w[1] != "dac"))
@@ -103,7 +107,8 @@ class Parser {
                  w.size() < 2 ? "nothing" : shown(w[1]) + (w.size() > 2 ? " and more" : ""));
           values = w[1] == "dac" ? Values::Dac : Values::Setrgbpalette;
         } else if (w[0] == "base") {
-          if (w.size() != 2) fail("base", "one built-in palette name", w.size() < 2 ? "nothing" : "more");
+          if (w.size() != 2)
+            fail("base", "one built-in palette name", w.size() < 2 ? "nothing" : "more");
           base = findBuiltinPalette(w[1]);
           if (!base) fail("base", "listing, plate3 or vga", shown(w[1]));
           p.dac = base->dac;
@@ -126,13 +131,15 @@ class Parser {
                  std::to_string(seenOn[static_cast<std::size_t>(index)]) + ")");
       seenOn[static_cast<std::size_t>(index)] = line_;
       const int top = values == Values::Dac ? 63 : 255;
-      const std::string range = "an integer 0.." + std::to_string(top) +
-                                (values == Values::Dac ? " (values dac)" : " (values setrgbpalette)");
+      const std::string range =
+          "an integer 0.." + std::to_string(top) +
+          (values == Values::Dac ? " (values dac)" : " (values setrgbpalette)");
       std::array<int, 3> c{};
       static const char* const kChannel[3] = {"red", "green", "blue"};
       for (int k = 0; k < 3; ++k) {
         const auto v = integer(w[static_cast<std::size_t>(k) + 1]);
-        if (!v || *v < 0 || *v > top) fail(kChannel[k], range, shown(w[static_cast<std::size_t>(k) + 1]));
+        if (!v || *v < 0 || *v > top)
+          fail(kChannel[k], range, shown(w[static_cast<std::size_t>(k) + 1]));
         c[static_cast<std::size_t>(k)] = *v;
       }
       p.dac[static_cast<std::size_t>(index)] =
@@ -161,12 +168,15 @@ class Parser {
 
  private:
   static std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+      s.remove_suffix(1);
     return s;
   }
-  [[noreturn]] void fail(const std::string& field, const std::string& expected, const std::string& found) const {
-    throw io::InputError({file_, line_ > 0 ? std::optional<int>(line_) : std::nullopt, std::nullopt}, field,
-                         expected, found);
+  [[noreturn]] void fail(const std::string& field, const std::string& expected,
+                         const std::string& found) const {
+    throw io::InputError(
+        {file_, line_ > 0 ? std::optional<int>(line_) : std::nullopt, std::nullopt}, field,
+        expected, found);
   }
 
   std::string_view text_;
@@ -183,10 +193,12 @@ Palette parsePaletteText(std::string_view text, const std::string& fileName) {
 Palette readPaletteFile(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
-  if (ec) throw io::InputError({path, std::nullopt, std::nullopt}, "cannot read the palette file: " + ec.message());
+  if (ec)
+    throw io::InputError({path, std::nullopt, std::nullopt},
+                         "cannot read the palette file: " + ec.message());
   if (size > kMaxFileBytes)
-    throw io::InputError({path, std::nullopt, std::nullopt}, "size", "a palette file of at most 1 MiB",
-                         std::to_string(size) + " bytes");
+    throw io::InputError({path, std::nullopt, std::nullopt}, "size",
+                         "a palette file of at most 1 MiB", std::to_string(size) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw io::InputError({path, std::nullopt, std::nullopt}, "cannot open the palette file");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -194,15 +206,16 @@ Palette readPaletteFile(const std::string& path) {
 }
 
 std::string formatPaletteText(const Palette& palette, DacTo8 how) {
-  std::string out = "# " + palette.description + "\n# shown with the " + std::string(dacTo8Name(how)) +
-                    " 6-to-8-bit conversion as #rrggbb\nprime-palette 1\nname " + palette.name +
-                    "\nvalues dac\n";
+  std::string out =
+      "# " + palette.description + "\n# shown with the " + std::string(dacTo8Name(how)) +
+      " 6-to-8-bit conversion as #rrggbb\nprime-palette 1\nname " + palette.name + "\nvalues dac\n";
   const Rgb8Table shownAs = present(palette.dac, how);
   char buf[64];
   for (std::size_t i = 0; i < palette.dac.size(); ++i) {
     const Dac6& d = palette.dac[i];
     const Rgb8& s = shownAs[i];
-    std::snprintf(buf, sizeof buf, "%3zu %2d %2d %2d  # #%02x%02x%02x\n", i, d.r, d.g, d.b, s.r, s.g, s.b);
+    std::snprintf(buf, sizeof buf, "%3zu %2d %2d %2d  # #%02x%02x%02x\n", i, d.r, d.g, d.b, s.r,
+                  s.g, s.b);
     out += buf;
   }
   return out;

@@ -31,9 +31,13 @@ const std::array<Dac6, 16>& egaVgaDefaultColours() {
   return colours;
 }
 
-DacTable listingDac() { return loadDac(initPalette()); }
+DacTable listingDac() {
+  return loadDac(initPalette());
+}
 
-DacTable plate3Dac() { return loadDac(plate3Palette()); }
+DacTable plate3Dac() {
+  return loadDac(plate3Palette());
+}
 
 DacTable vgaDac() {
   DacTable dac{};
@@ -59,7 +63,9 @@ std::optional<Palette> findBuiltinPalette(std::string_view name) {
   return std::nullopt;
 }
 
-std::string paletteNameForGraphType(int graphType) { return graphType == 0 ? "vga" : "listing"; }
+std::string paletteNameForGraphType(int graphType) {
+  return graphType == 0 ? "vga" : "listing";
+}
 
 Palette resolvePalette(const std::string& nameOrFile) {
   if (auto builtin = findBuiltinPalette(nameOrFile)) return *builtin;

@@ -9,24 +9,30 @@ namespace prime {
 
 Rect intersect(const Rect& a, const Rect& b) {
   const long long x0 = std::max<long long>(a.x, b.x), y0 = std::max<long long>(a.y, b.y);
-  const long long x1 = std::min<long long>(static_cast<long long>(a.x) + a.w, static_cast<long long>(b.x) + b.w);
-  const long long y1 = std::min<long long>(static_cast<long long>(a.y) + a.h, static_cast<long long>(b.y) + b.h);
+  const long long x1 =
+      std::min<long long>(static_cast<long long>(a.x) + a.w, static_cast<long long>(b.x) + b.w);
+  const long long y1 =
+      std::min<long long>(static_cast<long long>(a.y) + a.h, static_cast<long long>(b.y) + b.h);
   if (x1 <= x0 || y1 <= y0) return {};
-  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0), static_cast<int>(y1 - y0)};
+  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
+          static_cast<int>(y1 - y0)};
 }
 
 Screen::Screen(int width, int height) : width_(width), height_(height) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw std::invalid_argument("screen size " + std::to_string(width) + " x " + std::to_string(height) +
-                                ": expected 1..16384 pixels each way");
+    throw std::invalid_argument("screen size " + std::to_string(width) + " x " +
+                                std::to_string(height) + ": expected 1..16384 pixels each way");
   pixels_.assign(static_cast<std::size_t>(width) * height, 0);
 }
 
-void Screen::clear(std::uint8_t index) { std::fill(pixels_.begin(), pixels_.end(), index); }
+void Screen::clear(std::uint8_t index) {
+  std::fill(pixels_.begin(), pixels_.end(), index);
+}
 
 bool Screen::putPixel(int x, int y, int color) {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
-  pixels_[static_cast<std::size_t>(y) * width_ + x] = static_cast<std::uint8_t>(color & 0xFF);  // Q12
+  pixels_[static_cast<std::size_t>(y) * width_ + x] =
+      static_cast<std::uint8_t>(color & 0xFF);  // Q12
   return true;
 }
 
@@ -49,7 +55,8 @@ void Screen::line(int x0, int y0, int x1, int y1, int color) {
   const long long m = xMajor ? dy : dx;  // |m| <= n
   const long long a0 = xMajor ? x0 : y0, b0 = xMajor ? y0 : x0;
   const long long size = xMajor ? width_ : height_;
-  const long long tBegin = std::max<long long>(0, -a0), tEnd = std::min<long long>(n, size - 1 - a0);
+  const long long tBegin = std::max<long long>(0, -a0),
+                  tEnd = std::min<long long>(n, size - 1 - a0);
   for (long long t = tBegin; t <= tEnd; ++t) {
     // nearest integer to t*m/n, ties up: floor((2tm + n) / 2n)
     long long minor = 0;
@@ -61,7 +68,8 @@ void Screen::line(int x0, int y0, int x1, int y1, int color) {
     }
     const long long a = a0 + t, b = b0 + minor;
     const long long x = xMajor ? a : b, y = xMajor ? b : a;
-    if (x >= 0 && y >= 0 && x < width_ && y < height_) putPixel(static_cast<int>(x), static_cast<int>(y), color);
+    if (x >= 0 && y >= 0 && x < width_ && y < height_)
+      putPixel(static_cast<int>(x), static_cast<int>(y), color);
   }
 }
 
@@ -76,7 +84,8 @@ void drawGraphRow(Screen& screen, Placement at, int row, std::span<const std::in
   if (y < 0 || y >= screen.height()) return;
   for (std::size_t j = 0; j < values.size(); ++j) {
     const long long x = static_cast<long long>(at.left) + static_cast<long long>(j);
-    if (x >= 0 && x < screen.width()) screen.putPixel(static_cast<int>(x), static_cast<int>(y), values[j]);
+    if (x >= 0 && x < screen.width())
+      screen.putPixel(static_cast<int>(x), static_cast<int>(y), values[j]);
   }
 }
 

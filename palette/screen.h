@@ -51,7 +51,8 @@ class Screen {
   void line(int x0, int y0, int x1, int y1, int color);
 
   std::span<const std::uint8_t> row(int y) const {
-    return {pixels_.data() + static_cast<std::size_t>(y) * width_, static_cast<std::size_t>(width_)};
+    return {pixels_.data() + static_cast<std::size_t>(y) * width_,
+            static_cast<std::size_t>(width_)};
   }
   std::span<const std::uint8_t> pixels() const { return pixels_; }
 

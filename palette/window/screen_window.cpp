@@ -57,14 +57,15 @@ struct ScreenWindow::Impl {
     // TrueColor visual shows the pixel values as they are. A user's own
     // setting of the variable wins.
     setenv("SDL_VIDEO_X11_NODIRECTCOLOR", "1", 0);
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) throw WindowError(std::string("SDL cannot start video: ") + SDL_GetError());
+    if (SDL_Init(SDL_INIT_VIDEO) != 0)
+      throw WindowError(std::string("SDL cannot start video: ") + SDL_GetError());
     // The window surface in plain system memory (X11: shared-memory images),
     // not a GPU texture: exact pixels, no GL context (under Xvfb that would
     // be llvmpipe taking CPU from the render), and no re-creation of the
     // window behind our back.
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, screen.width() * zoom,
-                              screen.height() * zoom, SDL_WINDOW_SHOWN);
+    window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                              screen.width() * zoom, screen.height() * zoom, SDL_WINDOW_SHOWN);
     if (window == nullptr) {
       const std::string why = SDL_GetError();
       SDL_Quit();
@@ -90,14 +91,16 @@ struct ScreenWindow::Impl {
 
   void rebuildLut() {
     const Rgb8Table colours = present(palette().dac, dac);
-    for (std::size_t i = 0; i < 256; ++i) lut[i] = SDL_MapRGB(frame->format, colours[i].r, colours[i].g, colours[i].b);
+    for (std::size_t i = 0; i < 256; ++i)
+      lut[i] = SDL_MapRGB(frame->format, colours[i].r, colours[i].g, colours[i].b);
   }
 
   void rebuildFrame() {
     if (frame != nullptr) SDL_FreeSurface(frame);
     frame = SDL_CreateRGBSurfaceWithFormat(0, screen.width() * zoom, screen.height() * zoom, 32,
                                            SDL_PIXELFORMAT_RGB888);
-    if (frame == nullptr) throw WindowError(std::string("SDL cannot make a surface: ") + SDL_GetError());
+    if (frame == nullptr)
+      throw WindowError(std::string("SDL cannot make a surface: ") + SDL_GetError());
     rebuildLut();
     screen.markAllDirty();
   }
@@ -117,29 +120,27 @@ struct ScreenWindow::Impl {
   // Converts the changed band into `frame` and sends it to the display.
   void refresh(bool everything) {
     SDL_Surface* target = SDL_GetWindowSurface(window);
-    if (target == nullptr) return;  // not mapped yet: the changed rows wait for EXPOSED
-    int top = 0, bottom = 0;
-    const bool changed = screen.takeDirty([&](const Screen& s, int t, int b) {
-      top = t;
-      bottom = b;
+    if (target == nullptr) return;  // not mapped yet: the changes wait for EXPOSED
+    Rect changed;
+    screen.takeDirty([&](const Screen& s, Rect r) {
+      changed = r;
       if (SDL_MUSTLOCK(frame)) SDL_LockSurface(frame);
       auto* base = static_cast<std::uint8_t*>(frame->pixels);
-      for (int y = t; y < b; ++y) {
+      const auto line = [&](int zy) {
+        return reinterpret_cast<Uint32*>(base + static_cast<std::size_t>(zy) * frame->pitch) +
+               r.x * zoom;
+      };
+      for (int y = r.y; y < r.y + r.h; ++y) {
         const auto src = s.row(y);
-        for (int zy = 0; zy < zoom; ++zy) {
-          auto* out = reinterpret_cast<Uint32*>(base + static_cast<std::size_t>(y * zoom + zy) * frame->pitch);
-          if (zy > 0) {
-            std::copy_n(reinterpret_cast<Uint32*>(base + static_cast<std::size_t>(y * zoom) * frame->pitch),
-                        s.width() * zoom, out);
-            continue;
-          }
-          for (int x = 0; x < s.width(); ++x) std::fill_n(out + x * zoom, zoom, lut[src[static_cast<std::size_t>(x)]]);
-        }
+        Uint32* out = line(y * zoom);
+        for (int x = 0; x < r.w; ++x)
+          std::fill_n(out + x * zoom, zoom, lut[src[static_cast<std::size_t>(r.x + x)]]);
+        for (int zy = 1; zy < zoom; ++zy) std::copy_n(out, r.w * zoom, line(y * zoom + zy));
       }
       if (SDL_MUSTLOCK(frame)) SDL_UnlockSurface(frame);
     });
-    if (!changed && !everything) return;
-    SDL_Rect r{0, top * zoom, frame->w, (bottom - top) * zoom};
+    if (changed.empty() && !everything) return;
+    SDL_Rect r{changed.x * zoom, changed.y * zoom, changed.w * zoom, changed.h * zoom};
     if (everything) r = {0, 0, frame->w, frame->h};
     SDL_BlitSurface(frame, &r, target, &r);
     SDL_UpdateWindowSurfaceRects(window, &r, 1);
@@ -153,12 +154,6 @@ struct ScreenWindow::Impl {
     // Centre it again: without a window manager (Xvfb) SDL keeps a grown
     // window inside the display from where it was, and it comes out smaller.
     SDL_SetWindowPosition(window, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED);
-    if (SDL_GetWindowSurface(window) == nullptr) {
-      const std::string why = SDL_GetError();
-      SDL_DestroyWindow(window);
-      SDL_Quit();
-      throw WindowError("SDL cannot draw into the window: " + why);
-    }
     rebuildFrame();
     updateTitle();
   }
@@ -184,7 +179,9 @@ struct ScreenWindow::Impl {
         updateTitle();
         return;
       case SDLK_d:
-        dac = dac == DacTo8::Round ? DacTo8::Replicate : dac == DacTo8::Replicate ? DacTo8::Truncate : DacTo8::Round;
+        dac = dac == DacTo8::Round       ? DacTo8::Replicate
+              : dac == DacTo8::Replicate ? DacTo8::Truncate
+                                         : DacTo8::Round;
         rebuildLut();
         screen.markAllDirty();
         updateTitle();
@@ -213,7 +210,8 @@ struct ScreenWindow::Impl {
         break;
       case SDL_WINDOWEVENT:
         if (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SHOWN ||
-            e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED || e.window.event == SDL_WINDOWEVENT_RESTORED) {
+            e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED ||
+            e.window.event == SDL_WINDOWEVENT_RESTORED) {
           exposed = exposed || e.window.event == SDL_WINDOWEVENT_EXPOSED;
           everything = true;
         } else if (e.window.event == SDL_WINDOWEVENT_CLOSE) {
@@ -271,14 +269,18 @@ ScreenWindow::ScreenWindow(LiveScreen& screen, WindowConfig config)
 
 ScreenWindow::~ScreenWindow() = default;
 
-bool ScreenWindow::poll(int timeoutMs) { return impl_->poll(timeoutMs); }
+bool ScreenWindow::poll(int timeoutMs) {
+  return impl_->poll(timeoutMs);
+}
 
 void ScreenWindow::setStatus(const std::string& status) {
   impl_->status = status;
   impl_->updateTitle();
 }
 
-bool ScreenWindow::upToDate() const { return impl_->exposed && !impl_->screen.dirty(); }
+bool ScreenWindow::upToDate() const {
+  return impl_->exposed && !impl_->screen.dirty();
+}
 
 unsigned long ScreenWindow::nativeId() const {
   SDL_SysWMinfo info;
@@ -290,9 +292,17 @@ unsigned long ScreenWindow::nativeId() const {
   return 0;
 }
 
-const Palette& ScreenWindow::palette() const { return impl_->palette(); }
-DacTo8 ScreenWindow::dac() const { return impl_->dac; }
-int ScreenWindow::zoom() const { return impl_->zoom; }
-std::string ScreenWindow::saveScreenshot() { return impl_->saveScreenshot(); }
+const Palette& ScreenWindow::palette() const {
+  return impl_->palette();
+}
+DacTo8 ScreenWindow::dac() const {
+  return impl_->dac;
+}
+int ScreenWindow::zoom() const {
+  return impl_->zoom;
+}
+std::string ScreenWindow::saveScreenshot() {
+  return impl_->saveScreenshot();
+}
 
 }  // namespace prime::display

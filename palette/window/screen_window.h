@@ -33,7 +33,7 @@ struct WindowConfig {
   std::string caption;            // first part of the title: scene or file
   std::vector<Palette> palettes;  // P cycles through them; the first is shown first
   DacTo8 dac = kDefaultDacTo8;
-  int zoom = 1;                   // 1..8
+  int zoom = 1;  // 1..8
   std::string screenshotDir = ".";
 };
 

@@ -131,7 +131,7 @@ ChildRun runInChild(const std::function<std::vector<double>()>& work) {
   if (bytes.size() != 1 + sizeof n + n * sizeof(double))
     throw std::runtime_error("benchmark child: short reply");
   run.values.resize(n);
-  std::memcpy(run.values.data(), bytes.data() + 1 + sizeof n, n * sizeof(double));
+  if (n > 0) std::memcpy(run.values.data(), bytes.data() + 1 + sizeof n, n * sizeof(double));
   run.maxRssKb = ru.ru_maxrss;
   return run;
 }

@@ -27,7 +27,8 @@ std::string colourText(const Rgb8& c) {
 
 void addDiffCommand(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand(
-      "diff", "Compare two graph files pixel by pixel (exit 0: identical, 1: they differ, 2: trouble)");
+      "diff",
+      "Compare two graph files pixel by pixel (exit 0: identical, 1: they differ, 2: trouble)");
   auto a = std::make_shared<std::string>();
   auto b = std::make_shared<std::string>();
   auto image = std::make_shared<std::string>();
@@ -35,9 +36,10 @@ void addDiffCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<DisplayOptions>();
   cmd->add_option("A", *a, "First graph file")->required();
   cmd->add_option("B", *b, "Second graph file")->required();
-  cmd->add_option("--image", *image,
-                  "Write a PNG of A's pixel grid: equal pixels dim grey, differing pixels magenta (cyan when "
-                  "the two values show the same colour)");
+  cmd->add_option(
+      "--image", *image,
+      "Write a PNG of A's pixel grid: equal pixels dim grey, differing pixels magenta (cyan when "
+      "the two values show the same colour)");
   addPaletteOption(cmd, *o, "from A's graphType (0: vga, else listing)");
   addDacOption(cmd, *o);
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing; only the exit status tells");
@@ -52,12 +54,14 @@ void addDiffCommand(CLI::App& app, Action& action) {
         if (!*quiet) {
           std::printf("A: %s: %s\nB: %s: %s\n", a->c_str(), describeGraph(ga).c_str(), b->c_str(),
                       describeGraph(gb).c_str());
-          if (!d.sameGraphType) std::printf("graphType differs: %d and %d\n", ga.graphType, gb.graphType);
+          if (!d.sameGraphType)
+            std::printf("graphType differs: %d and %d\n", ga.graphType, gb.graphType);
           if (!d.sameSize) {
             std::printf("sizes differ: no pixels compared\n");
           } else {
-            std::printf("pixels differing: %zu of %zu (%.4f%%); %zu of them look different on the screen\n",
-                        d.differing, d.pixels, 100.0 * d.share(), d.lookDifferent);
+            std::printf(
+                "pixels differing: %zu of %zu (%.4f%%); %zu of them look different on the screen\n",
+                d.differing, d.pixels, 100.0 * d.share(), d.lookDifferent);
             if (d.differing > 0) {
               const auto at = [&](const io::GraphFile& g, int x, int y) { return g.at(x, y); };
               std::printf("first difference at (%d, %d): %d and %d\n", d.firstX, d.firstY,
@@ -66,7 +70,8 @@ void addDiffCommand(CLI::App& app, Action& action) {
             if (d.maxColourDifference > 0) {
               const std::int16_t va = ga.at(d.maxX, d.maxY), vb = gb.at(d.maxX, d.maxY);
               std::printf(
-                  "largest colour difference: %d of 255 (palette %s, DAC %s) at (%d, %d): %d %s and %d %s\n",
+                  "largest colour difference: %d of 255 (palette %s, DAC %s) at (%d, %d): %d %s "
+                  "and %d %s\n",
                   d.maxColourDifference, palette.name.c_str(), o->dac.c_str(), d.maxX, d.maxY, va,
                   colourText(colours[static_cast<std::size_t>(va & 0xFF)]).c_str(), vb,
                   colourText(colours[static_cast<std::size_t>(vb & 0xFF)]).c_str());

@@ -8,7 +8,8 @@
 namespace prime::cli {
 
 void addExportCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("export", "Write the picture of a graph file as PNG, through a palette");
+  auto* cmd =
+      app.add_subcommand("export", "Write the picture of a graph file as PNG, through a palette");
   auto file = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
@@ -29,14 +30,15 @@ void addExportCommand(CLI::App& app, Action& action) {
       const Palette palette = paletteOf(*o, paletteNameForGraphType(f.graph.graphType));
       Screen screen(g.width, g.height);
       drawGraph(screen, f.graph, g.at, f.pixelsPresent);
-      const Image8 img =
-          exportImage(screen, f.graph, f.pixelsPresent, g.at, present(palette.dac, dacOf(*o)), areaOf(*o));
+      const Image8 img = exportImage(screen, f.graph, f.pixelsPresent, g.at,
+                                     present(palette.dac, dacOf(*o)), areaOf(*o));
       writePng(*out, img);
       if (!*quiet)
         std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
-                  << " area; the file's " << f.graph.width() << " x " << f.graph.height() << " pixels at ("
-                  << g.at.left << ", " << g.at.top << ") on a " << g.width << " x " << g.height
-                  << " screen), palette " << palette.name << ", DAC " << o->dac << "\n";
+                  << " area; the file's " << f.graph.width() << " x " << f.graph.height()
+                  << " pixels at (" << g.at.left << ", " << g.at.top << ") on a " << g.width
+                  << " x " << g.height << " screen), palette " << palette.name << ", DAC " << o->dac
+                  << "\n";
       return 0;
     };
   });

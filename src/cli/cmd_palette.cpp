@@ -9,11 +9,13 @@
 namespace prime::cli {
 
 void addPaletteCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("palette", "Print a palette's 256 DAC entries in the palette-file format");
+  auto* cmd =
+      app.add_subcommand("palette", "Print a palette's 256 DAC entries in the palette-file format");
   auto name = std::make_shared<std::string>("listing");
   auto list = std::make_shared<bool>(false);
   auto o = std::make_shared<DisplayOptions>();
-  cmd->add_option("NAME", *name, "listing (default), plate3, vga, or a palette file to check and print");
+  cmd->add_option("NAME", *name,
+                  "listing (default), plate3, vga, or a palette file to check and print");
   cmd->add_flag("--list", *list, "List the built-in palettes");
   addDacOption(cmd, *o);
   cmd->callback([=, &action] {

@@ -58,33 +58,42 @@ class SignalsAbort {
   SignalsAbort& operator=(const SignalsAbort&) = delete;
 
  private:
-  struct sigaction oldInt_ {}, oldTerm_ {};
+  struct sigaction oldInt_ {
+  }, oldTerm_{};
 };
 
 void printSummary(const RenderResult& r, const std::string& out) {
   const auto& s = r.stats;
   std::printf("%s %d x %d pixels (graph file header %d x %d) in %.2f s with %d thread(s): %s\n",
-              r.aborted ? "ABORTED after" : "traced", r.graph.width(), r.graph.height(), r.graph.numPixAcross,
-              r.graph.numPixDown, r.seconds, r.threads, out.c_str());
+              r.aborted ? "ABORTED after" : "traced", r.graph.width(), r.graph.height(),
+              r.graph.numPixAcross, r.graph.numPixDown, r.seconds, r.threads, out.c_str());
   std::printf("rays: %llu (primary %llu, reflected %llu, transmitted %llu), %.0f rays/s\n",
-              static_cast<unsigned long long>(s.rays()), static_cast<unsigned long long>(s.primaryRays),
-              static_cast<unsigned long long>(s.reflectedRays), static_cast<unsigned long long>(s.transmittedRays),
+              static_cast<unsigned long long>(s.rays()),
+              static_cast<unsigned long long>(s.primaryRays),
+              static_cast<unsigned long long>(s.reflectedRays),
+              static_cast<unsigned long long>(s.transmittedRays),
               r.seconds > 0 ? s.rays() / r.seconds : 0.0);
-  std::printf("tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu\n",
-              static_cast<unsigned long long>(s.boundTests), static_cast<unsigned long long>(s.objectTests),
-              static_cast<unsigned long long>(s.primitiveTests), static_cast<unsigned long long>(s.hits),
-              static_cast<unsigned long long>(s.totalInternalReflections));
-  std::printf("1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 failed "
-              "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",
-              static_cast<unsigned long long>(s.emptyTransmitLists), static_cast<unsigned long long>(s.cappedTirLoops),
-              static_cast<unsigned long long>(s.failedTexelReads), static_cast<unsigned long long>(s.noFaceMatched),
-              static_cast<unsigned long long>(s.nanColours), static_cast<unsigned long long>(s.indicesOutOfRange));
+  std::printf(
+      "tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu\n",
+      static_cast<unsigned long long>(s.boundTests), static_cast<unsigned long long>(s.objectTests),
+      static_cast<unsigned long long>(s.primitiveTests), static_cast<unsigned long long>(s.hits),
+      static_cast<unsigned long long>(s.totalInternalReflections));
+  std::printf(
+      "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 failed "
+      "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",
+      static_cast<unsigned long long>(s.emptyTransmitLists),
+      static_cast<unsigned long long>(s.cappedTirLoops),
+      static_cast<unsigned long long>(s.failedTexelReads),
+      static_cast<unsigned long long>(s.noFaceMatched),
+      static_cast<unsigned long long>(s.nanColours),
+      static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
 }  // namespace
 
 void addTraceCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("trace", "Render a modelled scene as RayTrace.c did (1991 profile)");
+  auto* cmd =
+      app.add_subcommand("trace", "Render a modelled scene as RayTrace.c did (1991 profile)");
   auto dir = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto png = std::make_shared<std::string>();
@@ -95,16 +104,20 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto display = std::make_shared<DisplayOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)");
-  cmd->add_option("--png", *png, "Also write the picture as PNG, through the display palette (see --png-area)");
-  cmd->add_option("--true-color-png", *trueColourPng,
-                  "Also write the unquantised colours as PNG (same area as --png): what the 256 colours cost");
+  cmd->add_option("--png", *png,
+                  "Also write the picture as PNG, through the display palette (see --png-area)");
+  cmd->add_option(
+      "--true-color-png", *trueColourPng,
+      "Also write the unquantised colours as PNG (same area as --png): what the 256 colours cost");
   addAreaOption(cmd, *display, "--png-area");
-  cmd->add_option("--display-palette", display->palette,
-                  "Palette for the window and PNG: listing, plate3, vga or a palette file (default: the one "
-                  "--palette implies)");
+  cmd->add_option(
+      "--display-palette", display->palette,
+      "Palette for the window and PNG: listing, plate3, vga or a palette file (default: the one "
+      "--palette implies)");
   addDacOption(cmd, *display);
   addWindowOptions(cmd, *display);
-  cmd->add_flag("--no-wait", *noWait, "Close the window when the render is done instead of waiting for Esc");
+  cmd->add_flag("--no-wait", *noWait,
+                "Close the window when the render is done instead of waiting for Esc");
   cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
@@ -119,9 +132,10 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const ListingCamera camera(settings.camera);
       const Placement at{camera.screenX(0), camera.screenY(0)};
       const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
-      const Palette palette = paletteOf(*display, settings.mapping == ColorMapping::Plate3
-                                                      ? "plate3"
-                                                      : paletteNameForGraphType(settings.graphType));
+      const Palette palette =
+          paletteOf(*display, settings.mapping == ColorMapping::Plate3
+                                  ? "plate3"
+                                  : paletteNameForGraphType(settings.graphType));
 
       // The window, if there can be one.
       auto headless = display::headlessReason(display->noWindow);
@@ -131,7 +145,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
         try {
           live = std::make_unique<display::LiveScreen>(screenW, screenH);
           window = std::make_unique<display::ScreenWindow>(
-              *live, display::WindowConfig{*dir, windowPalettes(palette), dacOf(*display), display->zoom, "."});
+              *live, display::WindowConfig{*dir, windowPalettes(palette), dacOf(*display),
+                                           display->zoom, "."});
         } catch (const std::exception& e) {
           headless = e.what();
           window.reset();
@@ -139,15 +154,20 @@ void addTraceCommand(CLI::App& app, Action& action) {
         }
       }
       if (!window && !*quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
+      // InitGraph before the render: the window mapped and its first full
+      // picture sent (up to 1 s), so that cost does not fall inside it.
+      for (int i = 0; window && i < 100 && !window->upToDate(); ++i) window->poll(10);
       if (window && !*quiet)
-        std::cerr << (std::ostringstream() << "prime: drawing in window 0x" << std::hex << window->nativeId()
-                                           << "; Esc aborts (keys: + - zoom, P palette, D DAC, S screenshot)\n")
+        std::cerr << (std::ostringstream()
+                      << "prime: drawing in window 0x" << std::hex << window->nativeId()
+                      << "; Esc aborts (keys: + - zoom, P palette, D DAC, S screenshot)\n")
                          .str()
                   << std::flush;
 
       std::atomic<bool> abort{false};
       std::atomic<int> rowsDone{0}, rowsTotal{camera.rows()};
-      std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);  // rowDone runs on one thread
+      // Which rows are done (rowDone runs on one thread, the render's caller).
+      std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);
       RenderCallbacks cb;
       cb.abort = &abort;
       const bool tty = isatty(STDERR_FILENO) && !*quiet;
@@ -156,9 +176,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
         rowsDone = done;
         rowsTotal = rows;
         if (!tty) return;
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double left = done > 0 ? s * (rows - done) / done : 0.0;
-        std::fprintf(stderr, "\rrows %d/%d  %.0f rays/s  %.0f s left   ", done, rows, s > 0 ? rays / s : 0.0, left);
+        std::fprintf(stderr, "\rrows %d/%d  %.0f rays/s  %.0f s left   ", done, rows,
+                     s > 0 ? rays / s : 0.0, left);
         std::fflush(stderr);
       };
       cb.rowDone = [&](int row, const std::vector<std::int16_t>& indices) {
@@ -204,8 +226,10 @@ void addTraceCommand(CLI::App& app, Action& action) {
         head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
         io::writeGraphFile(partial, head);
         const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
-        std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size() << " rows: " << target << " not written" << (removed ? " (the old one was removed)" : "")
-                  << "; the " << prefix << " rows finished from the top are in " << partial
+        std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size()
+                  << " rows: " << target << " not written"
+                  << (removed ? " (the old one was removed)" : "") << "; the " << prefix
+                  << " rows finished from the top are in " << partial
                   << " (prime view shows it); no PNG written\n";
         if (!*quiet) printSummary(result, partial);
         return 1;  // as ExitOnEsc's exit(1)
@@ -223,17 +247,20 @@ void addTraceCommand(CLI::App& app, Action& action) {
                                      present(palette.dac, dacOf(*display)), area));
         }
         if (!trueColourPng->empty())
-          writePng(*trueColourPng, exportTrueColour(screenW, screenH, result.graph, result.rgb, at, area));
+          writePng(*trueColourPng,
+                   exportTrueColour(screenW, screenH, result.graph, result.rgb, at, area));
       }
       if (!*quiet) printSummary(result, target);
       std::fflush(stdout);
-      if (window && !*noWait) {
+      // Esc (or close) pressed as the last rows finished: the user has had
+      // the WaitForEsc already.
+      if (window && !*noWait && !abort.load()) {
         char status[64];
         std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);
         window->setStatus(status);
         if (!*quiet)
-          std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); --no-wait or --no-window "
-                       "to skip this\n";
+          std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); "
+                       "--no-wait or --no-window to skip this\n";
         while (!window->poll(100)) {
         }
       }

@@ -67,7 +67,7 @@ bool solveQuadratic(double a, double b, double c, double& t0, double& t1) {
   return true;
 }
 
-bool sphereModern(const Ray& r, Interval& out) {
+static bool sphereAt(const Ray& r, Interval& out) {
   double t0, t1;
   const double a = dot(r.d, r.d), b = dot(r.o, r.d), c = dot(r.o, r.o) - 1.0;
   if (!solveQuadratic(a, b, c, t0, t1) || t0 == t1) return false;
@@ -75,7 +75,7 @@ bool sphereModern(const Ray& r, Interval& out) {
   return true;
 }
 
-bool cylinderModern(const Ray& r, Interval& out) {
+static bool cylinderAt(const Ray& r, Interval& out) {
   double t0 = -kInf, t1 = kInf;
   Vec3 n0{}, n1{};
   const double a = r.d[X] * r.d[X] + r.d[Y] * r.d[Y];
@@ -97,7 +97,7 @@ bool cylinderModern(const Ray& r, Interval& out) {
   return true;
 }
 
-bool coneModern(const Ray& r, Interval& out) {
+static bool coneAt(const Ray& r, Interval& out) {
   // Solid: x^2 + y^2 <= z^2 with 0 <= z <= 1 (apex at the origin, cap z = 1).
   // f(t) = a t^2 + 2 b t + c; the upper nappe is convex, so the line meets
   // the solid in one interval.
@@ -149,6 +149,42 @@ bool coneModern(const Ray& r, Interval& out) {
   return true;
 }
 
+namespace {
+
+// The quadrics are solved from the point of the line nearest their centre,
+// axis or apex (o' = o + s d), and s is added back to the roots. From there
+// the coefficients are small where the roots are ill-conditioned (a line
+// grazing the sphere or the cylinder, passing near the cone's apex), so a
+// near-double root is found to O(u) instead of O(sqrt(u)) (Ray Tracing Gems
+// ch. 7; the remaining error is the line's own position, u |o|).
+template <class Solve>
+bool shifted(const Ray& r, double num, double den, Solve solve, Interval& out) {
+  // A line (nearly) parallel to the cylinder's axis has no useful nearest
+  // point (den ~ 0): solved as it is.
+  const double s = den > 1e-6 * dot(r.d, r.d) ? -num / den : 0.0;
+  if (!std::isfinite(s) || s == 0.0) return solve(r, out);
+  const Ray near{r.o + r.d * s, r.d};
+  if (!solve(near, out)) return false;
+  out.tIn += s;
+  out.tOut += s;
+  return out.tIn < out.tOut;
+}
+
+}  // namespace
+
+bool sphereModern(const Ray& r, Interval& out) {
+  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), sphereAt, out);
+}
+
+bool cylinderModern(const Ray& r, Interval& out) {
+  return shifted(r, r.o[X] * r.d[X] + r.o[Y] * r.d[Y], r.d[X] * r.d[X] + r.d[Y] * r.d[Y],
+                 cylinderAt, out);
+}
+
+bool coneModern(const Ray& r, Interval& out) {
+  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), coneAt, out);
+}
+
 bool cubeModern(const Ray& r, Interval& out) {
   static const Vec3 n[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
   static const double c[6] = {0, 1, 0, 1, 0, 1};
@@ -160,6 +196,105 @@ bool pyramidModern(const Ray& r, Interval& out) {
   static const Vec3 n[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
   static const double c[5] = {0, 0, 1, 0, 1};
   return convex(r, n, c, 5, out);
+}
+
+namespace {
+
+constexpr double kUnit = std::numeric_limits<double>::epsilon() * 0.5;
+constexpr double gammaN(int n) {
+  return (n * kUnit) / (1 - n * kUnit);
+}
+
+// One constraint g(p) <= 0 of a solid, evaluated at p with its error bound.
+struct Constraint {
+  double g, err;
+  Vec3 normal;  // outward (gradient direction)
+};
+
+Constraint plane(const Vec3& n, double c, const Vec3& p, const Vec3& e) {
+  double g = -c, mag = std::abs(c), de = 0;
+  for (int i = 0; i < 3; ++i) {
+    g += n[i] * p[i];
+    mag += std::abs(n[i] * p[i]);
+    de += std::abs(n[i]) * e[i];
+  }
+  return {g, de + gammaN(4) * mag, n};
+}
+
+// g = s0 x^2 + s1 y^2 + s2 z^2 + k with signs s (a quadric through the origin's axes).
+Constraint quadric(const Vec3& s, double k, const Vec3& p, const Vec3& e, const Vec3& grad) {
+  double g = k, mag = std::abs(k), de = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (s[i] == 0) continue;
+    g += s[i] * p[i] * p[i];
+    mag += p[i] * p[i];
+    de += 2 * std::abs(p[i]) * e[i] + e[i] * e[i];
+  }
+  return {g, de + gammaN(5) * mag, grad};
+}
+
+}  // namespace
+
+int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int max) {
+  Constraint c[6];
+  int n = 0;
+  switch (type) {
+    case 'S':
+      c[n++] = quadric({1, 1, 1}, -1, p, e, p);
+      break;
+    case 'B':
+      for (int k = 0; k < 3; ++k) {
+        Vec3 a{0, 0, 0};
+        a[k] = -1;
+        c[n++] = plane(a, 0, p, e);
+        a[k] = 1;
+        c[n++] = plane(a, 1, p, e);
+      }
+      break;
+    case 'C':
+      c[n++] = quadric({1, 1, 0}, -1, p, e, {p[X], p[Y], 0});
+      c[n++] = plane({0, 0, -1}, 0, p, e);
+      c[n++] = plane({0, 0, 1}, 1, p, e);
+      break;
+    case 'N':
+      c[n++] = quadric({1, 1, -1}, 0, p, e, {p[X], p[Y], -p[Z]});
+      c[n++] = plane({0, 0, -1}, 0, p, e);  // only the apex: z >= 0 touches the solid there
+      c[n++] = plane({0, 0, 1}, 1, p, e);
+      break;
+    case 'Y': {
+      static const Vec3 nn[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
+      static const double cc[5] = {0, 0, 1, 0, 1};
+      for (int k = 0; k < 5; ++k) c[n++] = plane(nn[k], cc[k], p, e);
+      break;
+    }
+    default:
+      return -1;
+  }
+  int count = 0;
+  if (type == 'N' && std::abs(p[X]) + std::abs(p[Y]) + std::abs(p[Z]) <= 4 * (e[X] + e[Y] + e[Z])) {
+    // The apex: the body has no normal there. Its tangent planes at eight
+    // azimuths (and the plane z = 0) stand in, so that a ray leaving the
+    // apex steps to the right side of the cone whichever way it goes.
+    if (c[0].g > 16 * c[0].err) return -1;
+    static const double r = std::sqrt(0.5);
+    for (int k = 0; k < 8 && count < max; ++k) {
+      const double f = k * 0.7853981633974483;
+      out[count++] = {r * std::cos(f), r * std::sin(f), -r};
+    }
+    if (count < max) out[count++] = {0, 0, -1};
+    return count;
+  }
+  for (int k = 0; k < n; ++k) {
+    // "Near" reaches 16 error bounds: stepping off one surface moves the
+    // point by about one bound, which must not carry it across another
+    // surface that was just outside the bound (the cone's rim).
+    if (c[k].g > 16 * c[k].err) return -1;  // outside beyond doubt
+    if (c[k].g >= -16 * c[k].err && count < max) {
+      const Vec3 u = normalized(c[k].normal);
+      if (dot(u, u) > 0) out[count++] = u;
+    }
+  }
+  return count;
 }
 
 bool intersectModern(char type, const Ray& local, Interval& out) {

@@ -30,6 +30,14 @@ bool coneModern(const Ray& local, Interval& out);
 bool cubeModern(const Ray& local, Interval& out);
 bool pyramidModern(const Ray& local, Interval& out);
 
+// The surfaces of the solid that pass within 16 times the error bound `err`
+// (per axis, local units) of the local point p, for spawning secondary rays off
+// edges and corners as well as faces. Writes the outward unit normal of each
+// such surface (at most `max`) and returns their number; returns -1 when p
+// is farther than that outside the solid (no surface of it is near). Every constraint of the solid
+// is evaluated with a bound on its own rounding error, so "within err" is conservative.
+int nearSurfacesModern(char type, const Vec3& p, const Vec3& err, Vec3* out, int max);
+
 // Both roots of a t^2 + 2 b t + c = 0 (the listing's half-b form), ordered,
 // computed without cancellation. False when there are none (D < 0) or a = 0.
 bool solveQuadratic(double a, double b, double c, double& t0, double& t1);

@@ -121,6 +121,119 @@ TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, Trac
   return csgModern(obj.entries, leaf);
 }
 
+// The hit point o + t d of `node` and a bound on its distance from the true
+// surface, derived from the computation that found it (Ray Tracing Gems
+// ch. 6, pbrt-v4 3.9): the ray's transform into primitive space (one
+// rounding per product and sum of the accurate inverse), the root or plane
+// clip (a few roundings of the magnitudes involved), mapped back to the world
+// by |A|, plus the rounding of o + t d itself. Then every surface of every
+// primitive of the object that passes within that bound of the point (one at
+// a face, two or three at an edge or corner, those of other operands where
+// CSG faces meet), so that secondary rays can step off all of them.
+void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node,
+                             SurfaceHit& hit) const {
+  const ScenePrim& prim = scene_.prims[node.prim];
+  const Matrix4& inv = inverse_[node.prim];
+  const Matrix4& a = prim.transform;
+  const Ray local = transformRay(ray, inv);
+  const double t = node.t;
+  hit.t = t;
+  hit.prim = node.prim;
+  hit.exitsObject = node.surfType == kSurfIn;
+  double pl = 1.0;  // 1 + |local point|
+  for (int i = 0; i < 3; ++i) {
+    hit.point[i] = ray.o[i] + t * ray.d[i];
+    hit.local[i] = local.o[i] + t * local.d[i];
+    pl = std::max(pl, 1.0 + std::abs(hit.local[i]));
+  }
+  Vec3 el{};  // local error bound per axis
+  for (int i = 0; i < 3; ++i) {
+    double eo = std::abs(inv[3][i]), ed = 0;
+    for (int k = 0; k < 3; ++k) {
+      eo += std::abs(ray.o[k] * inv[k][i]);
+      ed += std::abs(ray.d[k] * inv[k][i]);
+    }
+    el[i] = gamma(4) * (eo + std::abs(t) * ed) +
+            gamma(10) * (std::abs(local.o[i]) + std::abs(t * local.d[i]) + pl);
+  }
+  for (int j = 0; j < 3; ++j) {
+    double e = gamma(2) * (std::abs(ray.o[j]) + std::abs(t * ray.d[j]));
+    for (int i = 0; i < 3; ++i) e += std::abs(a[i][j]) * el[i];
+    hit.pointError[j] = e;
+  }
+  hit.normal = normalToWorld(node.norm, inv);  // outward of the primitive (not faced yet)
+  // Surfaces near the point, in every primitive of the object.
+  hit.nearCount = 0;
+  for (const CsgEntry& e : obj.entries) {
+    if (e.op != 'P' || e.l < 0 || e.l >= static_cast<int>(scene_.prims.size())) continue;
+    const ScenePrim& q = scene_.prims[e.l];
+    const Matrix4& qi = inverse_[e.l];
+    const Vec3 ql = e.l == node.prim ? hit.local : pointMatrixMul(hit.point, qi);
+    Vec3 qe{};
+    for (int i = 0; i < 3; ++i) {
+      double spread = 0, mag = std::abs(qi[3][i]);
+      for (int k = 0; k < 3; ++k) {
+        spread += hit.pointError[k] * std::abs(qi[k][i]);
+        mag += std::abs(hit.point[k] * qi[k][i]);
+      }
+      qe[i] = e.l == node.prim ? el[i] : spread + gamma(4) * mag;
+    }
+    Vec3 normals[10];
+    const int n = nearSurfacesModern(q.type, ql, qe, normals, 10);
+    for (int k = 0; k < n && hit.nearCount < static_cast<int>(hit.near.size()); ++k) {
+      const Vec3 nw = normalToWorld(normals[k], qi);
+      // World distance to step off this surface: the point's error along
+      // the normal, and the next ray's transform error at the point.
+      double step = 0;
+      for (int j = 0; j < 3; ++j) {
+        double m = 0;  // |A_q|^T (|P| |inv_q| + |inv_q[3]|), along axis j
+        for (int i = 0; i < 3; ++i) {
+          double li = std::abs(qi[3][i]);
+          for (int k2 = 0; k2 < 3; ++k2) li += std::abs(hit.point[k2] * qi[k2][i]);
+          m += std::abs(q.transform[i][j]) * li;
+        }
+        step += std::abs(nw[j]) * (hit.pointError[j] + gamma(4) * m);
+      }
+      hit.near[static_cast<std::size_t>(hit.nearCount)] = nw;
+      hit.nearStep[static_cast<std::size_t>(hit.nearCount)] = step;
+      ++hit.nearCount;
+    }
+  }
+}
+
+Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
+  if (hit.nearCount == 0) {  // no surface found near: the hit's own normal
+    return offsetRayOrigin(hit.point, hit.pointError, hit.normal, w);
+  }
+  // Step to the side of every near surface that w travels into, far enough
+  // that the step survives the other surfaces' tilt (a few rounds).
+  Vec3 offset{0, 0, 0};
+  for (int round = 0; round < 64; ++round) {
+    bool ok = true;
+    for (int k = 0; k < hit.nearCount; ++k) {
+      const Vec3& n = hit.near[static_cast<std::size_t>(k)];
+      const double wn = dot(w, n);
+      if (wn == 0) continue;  // along the surface: either side is as good
+      const double side = wn > 0 ? 1.0 : -1.0;
+      const double want = hit.nearStep[static_cast<std::size_t>(k)];
+      const double have = side * dot(n, offset);
+      if (have < want) {
+        offset = offset + n * (side * (want - have) * (round == 0 ? 1.0 : 1.5));
+        ok = false;
+      }
+    }
+    if (ok) break;
+  }
+  Vec3 po = hit.point + offset;
+  for (int i = 0; i < 3; ++i) {  // round away from the point so the step survives rounding
+    if (offset[i] > 0)
+      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+    else if (offset[i] < 0)
+      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+  }
+  return po;
+}
+
 bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const {
   double nearest = std::numeric_limits<double>::infinity();
   int bestObj = -1;
@@ -149,26 +262,14 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   bvh_.traverse(ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
   if (bestObj < 0) return false;
 
-  const ScenePrim& prim = scene_.prims[bestNode.prim];
-  const Matrix4& inv = inverse_[bestNode.prim];
-  const Ray local = transformRay(ray, inv);
-  hit.t = nearest;
+  surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
   hit.obj = bestObj;
-  hit.prim = bestNode.prim;
-  hit.exitsObject = bestNode.surfType == kSurfIn;
-  for (int i = 0; i < 3; ++i) {
-    hit.point[i] = ray.o[i] + nearest * ray.d[i];
-    hit.local[i] = local.o[i] + nearest * local.d[i];
-  }
-  // Error bound of o + t d, with t itself off by a few roundings and the
-  // primitive-space computation behind it (transform, solve): 32 roundings
-  // of the magnitudes involved is a safe bound for every primitive here.
-  for (int i = 0; i < 3; ++i) hit.pointError[i] = gamma(32) * (std::abs(ray.o[i]) + std::abs(nearest * ray.d[i]));
-  Vec3 n = normalToWorld(bestNode.norm, inv);
+  Vec3 n = hit.normal;
   // Which side of the PRIMITIVE's own surface the ray is on picks the
   // outside or inside map (a difference's cut face shows B's inside).
   Interval own;
-  if (intersectModern(prim.type, local, own))
+  if (intersectModern(scene_.prims[bestNode.prim].type, transformRay(ray, inverse_[bestNode.prim]),
+                      own))
     hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
   if (dot(n, ray.d) > 0) n = -n;  // face the ray
   hit.normal = n;
@@ -190,7 +291,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
   if (!(k >= 0.0)) return {};  // total internal reflection: nothing transmitted
   Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
-  r.o = offsetRayOrigin(hit.point, hit.pointError, hit.normal, r.d);
+  r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
     return r;
@@ -210,21 +311,20 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
       return r;
     }
     distance += exit->t;
-    const Vec3 pt = r.o + r.d * exit->t;
-    Vec3 pErr;
-    for (int i = 0; i < 3; ++i) pErr[i] = gamma(32) * (std::abs(r.o[i]) + std::abs(exit->t * r.d[i]));
-    Vec3 nOut = normalToWorld(exit->norm, inverse_[exit->prim]);  // outward of the solid
+    SurfaceHit at;
+    surfaceAt(obj, r, *exit, at);
+    Vec3 nOut = at.normal;  // outward of the solid
     if (dot(nOut, r.d) < 0) nOut = -nOut;
     const double c = clamp1(dot(r.d, nOut));
     const double k2 = 1.0 - indx * indx * (1.0 - c * c);
     if (k2 < 0.0) {  // total internal reflection: stay inside
       ++stats.totalInternalReflections;
       r.d = unit(r.d - nOut * (2.0 * c));
-      r.o = offsetRayOrigin(pt, pErr, nOut, r.d);
+      r.o = spawnOrigin(at, r.d);
       continue;
     }
     r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
-    r.o = offsetRayOrigin(pt, pErr, nOut, r.d);
+    r.o = spawnOrigin(at, r.d);
     through = true;
     return r;
   }
@@ -262,8 +362,8 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind, d
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
-      iSR = castRay({offsetRayOrigin(hit.point, hit.pointError, n, refl), refl}, depth + 1, stats,
-                    RayKind::Reflected, weight * std::abs(kSR));
+      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, RayKind::Reflected,
+                    weight * std::abs(kSR));
     if (through && weight * std::abs(kST) >= options_.minWeight)
       iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
   }

@@ -11,6 +11,7 @@
 //     dot products and inverse trigonometry, world-frame refraction;
 //   - no NaN or Inf ever reaches a pixel.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "src/render/hall.h"
@@ -27,7 +28,13 @@ struct SurfaceHit {
   bool fromInsidePrim = false;  // the ray meets the primitive's surface from inside (inside map)
   bool exitsObject = false;     // the ray starts inside the object's solid and leaves it here
   Vec3 point{}, local{}, normal{};  // world point, primitive-space point, unit normal facing the ray
-  Vec3 pointError{};                // bound on |point - exact point| per axis
+  Vec3 pointError{};  // bound on the point's distance from the exact surface, per axis
+  // Every surface of the object's primitives that passes within the error
+  // bound of `point` (the hit surface, and the other faces at an edge or a
+  // corner): world unit normals and how far to step off each.
+  std::array<Vec3, 12> near{};
+  std::array<double, 12> nearStep{};
+  int nearCount = 0;
 };
 
 class TracerModern {
@@ -43,6 +50,7 @@ class TracerModern {
   const Scene& scene() const { return scene_; }
 
  private:
+  void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
   Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
                TraceStats& stats) const;
   const Scene& scene_;
@@ -62,5 +70,12 @@ Matrix4 accurateInverse(const Matrix4& m);
 // by more than its error bound, so the new ray cannot re-hit the surface it
 // starts on (Ray Tracing Gems ch. 6 / pbrt-v4 OffsetRayOrigin).
 Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w);
+
+// The origin of a secondary ray leaving `hit` in direction w: the hit point
+// stepped, for every surface near it (hit.near), to the side w travels into,
+// by that surface's step, so that the new ray sees none of them at t ~ 0
+// (an edge or corner needs steps along two or three normals; one along the
+// hit normal alone leaves the point on the other face).
+Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w);
 
 }  // namespace prime

@@ -1,6 +1,8 @@
 // Tables and CSV of the stress suite's figures.
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "src/stress/stress.h"
 
@@ -66,7 +68,73 @@ const Column kColumns[] = {
 
 }  // namespace
 
+// Markdown: three tables (decisions; errors; secondary rays, chains and the
+// listing's design differences), one row per class, every cell "1991 / modern".
+std::string markdownTables(const std::vector<ClassResult>& results) {
+  struct Part {
+    const char* title;
+    std::vector<std::pair<const char*, std::string (*)(const Figures&)>> cols;
+  };
+  const std::vector<Part> parts{
+      {"Decisions (1991 / modern)",
+       {{"rays", [](const Figures& f) { return num(f.rays); }},
+        {"ref. hits", [](const Figures& f) { return num(f.refHits); }},
+        {"wrong hit/miss", [](const Figures& f) { return num(f.wrongHitMiss); }},
+        {"wrong in/out", [](const Figures& f) { return num(f.wrongInOut); }},
+        {"wrong surface", [](const Figures& f) { return num(f.wrongSurface); }},
+        {"within tolerance",
+         [](const Figures& f) {
+           return num(f.ambiguousHitMiss + f.ambiguousInOut + f.ambiguousSurface);
+         }},
+        {"NaN/Inf", [](const Figures& f) { return num(f.nanInf); }},
+        {"ld != f128", [](const Figures& f) { return num(f.refDisagree); }}}},
+      {"Errors where the decisions agree (1991 / modern)",
+       {{"compared", [](const Figures& f) { return num(f.compared); }},
+        {"t rel. p50", [](const Figures& f) { return sci(f.tRel.quantile(0.5)); }},
+        {"t rel. p99", [](const Figures& f) { return sci(f.tRel.quantile(0.99)); }},
+        {"t rel. max", [](const Figures& f) { return sci(f.tRel.max); }},
+        {"normal p99 (rad)", [](const Figures& f) { return sci(f.normalAngle.quantile(0.99)); }},
+        {"normal max", [](const Figures& f) { return sci(f.normalAngle.max); }},
+        {"(u,v) p99", [](const Figures& f) { return sci(f.uv.quantile(0.99)); }},
+        {"(u,v) max", [](const Figures& f) { return sci(f.uv.max); }},
+        {"other face", [](const Figures& f) { return num(f.uvFaceChanges); }},
+        {"(u,v) NaN", [](const Figures& f) { return num(f.uvNan); }}}},
+      {"Secondary rays, chains, the listing's design (1991 / modern)",
+       {{"secondary", [](const Figures& f) { return num(f.secondary); }},
+        {"self-hits", [](const Figures& f) { return num(f.selfHits); }},
+        {"wrong side", [](const Figures& f) { return num(f.wrongSide); }},
+        {"chains complete",
+         [](const Figures& f) {
+           return f.chains ? num(f.chainsComplete) + " of " + num(f.chains) : std::string("-");
+         }},
+        {"K7", [](const Figures& f) { return num(f.semanticK7); }},
+        {"K4", [](const Figures& f) { return num(f.semanticK4); }},
+        {"Q3/K30/K31", [](const Figures& f) { return num(f.semanticCsg); }},
+        {"E57", [](const Figures& f) { return num(f.listingErrors); }}}},
+  };
+  std::string s;
+  for (const Part& part : parts) {
+    s += std::string("**") + part.title + "**\n\n| class |";
+    for (const auto& c : part.cols) s += std::string(" ") + c.first + " |";
+    s += "\n|---|";
+    for (std::size_t i = 0; i < part.cols.size(); ++i) s += "---|";
+    s += "\n";
+    for (const ClassResult& r : results) {
+      s += "| " + r.name + " |";
+      for (const auto& c : part.cols) {
+        const std::string a = r.f1991.rays ? c.second(r.f1991) : "-";
+        const std::string b = r.modern.rays ? c.second(r.modern) : "-";
+        s += " " + a + " / " + b + " |";
+      }
+      s += "\n";
+    }
+    s += "\n";
+  }
+  return s;
+}
+
 std::string formatTable(const std::vector<ClassResult>& results, bool markdown) {
+  if (markdown) return markdownTables(results);
   std::string s;
   auto row = [&](const std::vector<std::string>& cells) {
     if (markdown) {
@@ -140,20 +208,25 @@ std::string formatCsv(const std::vector<ClassResult>& results) {
 std::string formatStability(const std::vector<StabilityRow>& rows, bool markdown) {
   std::string s;
   if (markdown)
-    s += "| scene | transform | pixels | changed 1991 | changed modern | NaN colours 1991 | NaN "
-         "colours modern |\n|---|---|---|---|---|---|---|\n";
+    s += "| scene | transform | pixels | changed 1991 | of which colour > 0.01 | changed modern | "
+         "of which "
+         "colour > 0.01 | NaN colours 1991 | NaN colours modern "
+         "|\n|---|---|---|---|---|---|---|---|---|\n";
   for (const StabilityRow& r : rows) {
     if (markdown) {
       s += "| " + r.scene + " | " + r.transform + " | " + num(r.pixels) + " | " +
-           pct(r.changed1991, r.pixels) + " | " + pct(r.changedModern, r.pixels) + " | " +
+           pct(r.changed1991, r.pixels) + " | " + pct(r.big1991, r.pixels) + " | " +
+           pct(r.changedModern, r.pixels) + " | " + pct(r.bigModern, r.pixels) + " | " +
            num(r.nan1991) + " | " + num(r.nanModern) + " |\n";
     } else {
-      char b[256];
-      std::snprintf(b, sizeof b,
-                    "%-16s %-14s %8llu pixels  1991 %9s  modern %9s  NaN %llu / %llu\n",
-                    r.scene.c_str(), r.transform.c_str(), (unsigned long long)r.pixels,
-                    pct(r.changed1991, r.pixels).c_str(), pct(r.changedModern, r.pixels).c_str(),
-                    (unsigned long long)r.nan1991, (unsigned long long)r.nanModern);
+      char b[320];
+      std::snprintf(
+          b, sizeof b,
+          "%-16s %-14s %8llu pixels  1991 %9s (%9s big)  modern %9s (%9s big)  NaN %llu / %llu\n",
+          r.scene.c_str(), r.transform.c_str(), static_cast<unsigned long long>(r.pixels),
+          pct(r.changed1991, r.pixels).c_str(), pct(r.big1991, r.pixels).c_str(),
+          pct(r.changedModern, r.pixels).c_str(), pct(r.bigModern, r.pixels).c_str(),
+          static_cast<unsigned long long>(r.nan1991), static_cast<unsigned long long>(r.nanModern));
       s += b;
     }
   }

@@ -3,6 +3,7 @@
 // moved to match; the share of pixels whose palette index changes.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
@@ -29,11 +30,18 @@ Scene transformScene(const Scene& in, const Matrix4& t) {
   return s;
 }
 
+struct Image {
+  std::vector<int> index;
+  std::vector<Rgb> colour;
+};
+
 template <class Tracer>
-std::vector<int> renderIndices(const Tracer& tracer, const ListingCamera& cam, const Matrix4& t,
-                               const RenderSettings& settings, int threads, std::uint64_t& nan) {
+Image renderIndices(const Tracer& tracer, const ListingCamera& cam, const Matrix4& t,
+                    const RenderSettings& settings, int threads, std::uint64_t& nan) {
   const int rows = cam.rows(), cols = cam.columns();
-  std::vector<int> out(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols));
+  Image out;
+  out.index.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols));
+  out.colour.resize(out.index.size());
   std::atomic<int> next{0};
   std::atomic<std::uint64_t> nanCount{0};
   auto work = [&] {
@@ -43,8 +51,10 @@ std::vector<int> renderIndices(const Tracer& tracer, const ListingCamera& cam, c
         const Ray p = cam.primaryRay(r, c);
         const Ray ray{pointMatrixMul(p.o, t), vectorMatrixMul(p.d, t)};
         const Rgb color = tracer.castRay(ray, 0, stats);
-        out[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) +
-            static_cast<std::size_t>(c)] = paletteIndex(color, settings, stats);
+        const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) +
+                               static_cast<std::size_t>(c);
+        out.index[at] = paletteIndex(color, settings, stats);
+        out.colour[at] = color;
       }
     nanCount += stats.nanColours;
   };
@@ -62,7 +72,10 @@ std::vector<StabilityRow> runStability(const StabilityOptions& o) {
   namespace fs = std::filesystem;
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(o.scenesDir))
-    if (e.is_directory() && fs::exists(e.path() / "Model.txt")) dirs.push_back(e.path());
+    if (e.is_directory() && fs::exists(e.path() / "Model.txt") &&
+        (o.scenes.empty() || std::find(o.scenes.begin(), o.scenes.end(),
+                                       e.path().filename().string()) != o.scenes.end()))
+      dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());
 
   struct Named {
@@ -101,7 +114,7 @@ std::vector<StabilityRow> runStability(const StabilityOptions& o) {
     settings.camera.screenHeight /= o.screenDivisor;
     const ListingCamera cam(settings.camera);
     std::uint64_t nan = 0;
-    std::vector<int> base91, baseModern;
+    Image base91, baseModern;
     if (o.run1991)
       base91 = renderIndices(Tracer1991(scene), cam, identity4(), settings, threads, nan);
     if (o.runModern)
@@ -110,17 +123,28 @@ std::vector<StabilityRow> runStability(const StabilityOptions& o) {
       const Scene moved = transformScene(scene, t.m);
       StabilityRow row{d.filename().string(), t.name,
                        static_cast<std::uint64_t>(cam.rows()) * cam.columns()};
-      auto changed = [](const std::vector<int>& a, const std::vector<int>& b) {
+      // Changed palette indices, and those whose colour moved by more than
+      // 0.01 in a channel (not just across a ColorNum step by rounding).
+      auto changed = [](const Image& a, const Image& b, std::uint64_t& big) {
         std::uint64_t n = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+        for (std::size_t i = 0; i < a.index.size(); ++i) {
+          if (a.index[i] == b.index[i]) continue;
+          ++n;
+          double d = 0;
+          for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(a.colour[i][k] - b.colour[i][k]));
+          if (!(d <= 0.01)) ++big;
+        }
         return n;
       };
       if (o.run1991)
         row.changed1991 = changed(
-            base91, renderIndices(Tracer1991(moved), cam, t.m, settings, threads, row.nan1991));
+            base91, renderIndices(Tracer1991(moved), cam, t.m, settings, threads, row.nan1991),
+            row.big1991);
       if (o.runModern)
-        row.changedModern = changed(baseModern, renderIndices(TracerModern(moved), cam, t.m,
-                                                              settings, threads, row.nanModern));
+        row.changedModern =
+            changed(baseModern,
+                    renderIndices(TracerModern(moved), cam, t.m, settings, threads, row.nanModern),
+                    row.bigModern);
       if (o.log)
         o.log("scene " + row.scene + ", " + row.transform + ": " + std::to_string(row.changed1991) +
               " / " + std::to_string(row.changedModern) + " of " + std::to_string(row.pixels) +

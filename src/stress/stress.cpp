@@ -506,6 +506,7 @@ struct ProfileHit {
   double t = 0;
   int obj = -1, prim = -1;
   Vec3 point{}, local{}, normal{}, pointError{};
+  SurfaceHit surf;  // the modern profile's whole answer (spawnOrigin needs it)
 };
 
 ProfileHit modernHit(const TracerModern& tracer, const Ray& ray) {
@@ -515,6 +516,7 @@ ProfileHit modernHit(const TracerModern& tracer, const Ray& ray) {
   if (!tracer.nearestHit(ray, h, stats)) return p;
   p.hit = true, p.exit = h.exitsObject, p.t = h.t, p.obj = h.obj, p.prim = h.prim;
   p.point = h.point, p.local = h.local, p.normal = h.normal, p.pointError = h.pointError;
+  p.surf = h;
   return p;
 }
 
@@ -762,9 +764,11 @@ class Measurer {
       if (!amb && debugOn()) {
         debugRay("wrong-surface", describe(), ray, p.t, r.t, listing);
         const LD a = std::min(LD(p.t), r.t), b = std::max(LD(p.t), r.t);
-        std::fprintf(stderr, "  nsdf(p.t) %.3Lg nsdf(r.t) %.3Lg min %.3Lg max %.3Lg exit %d prim %d/%d\n",
-                     objectNsdf(r.obj, ray, p.t), objectNsdf(r.obj, ray, r.t), extreme(r.obj, ray, a, b, true),
-                     extreme(r.obj, ray, a, b, false), r.exit, p.prim, r.prim);
+        std::fprintf(stderr,
+                     "  nsdf(p.t) %.3Lg nsdf(r.t) %.3Lg min %.3Lg max %.3Lg exit %d prim %d/%d\n",
+                     objectNsdf(r.obj, ray, p.t), objectNsdf(r.obj, ray, r.t),
+                     extreme(r.obj, ray, a, b, true), extreme(r.obj, ray, a, b, false), r.exit,
+                     p.prim, r.prim);
       }
       return false;
     }
@@ -779,7 +783,7 @@ class Measurer {
       for (const V3<LD>& c : cands) {
         const V3<LD> cw = listing ? rp.normalByForward(c) : rp.normalToWorld(c);
         LD a = angleBetween(pn, cw);
-        if (listing || std::abs(dot3(cw, d)) < 1e-9L)
+        if (listing || std::abs(dot3(cw, d)) < 1e-6L)
           a = std::min(a, kPi - a);  // up to sign
         else if (dot3(cw, d) > 0)
           a = kPi - a;  // the profile faces it to the ray
@@ -834,6 +838,21 @@ class Measurer {
   }
 
   const Subject& subject() const { return s_; }
+  // World unit normals of every face of the reference hit's primitive within
+  // the tolerance of the reference hit point.
+  std::vector<Vec3> worldNormalsAt(const RefResult& r, const Ray& ray) const {
+    std::vector<Vec3> out;
+    if (!r.hit) return out;
+    const RefPrim<LD>& rp = s_.refLd[static_cast<std::size_t>(r.prim)];
+    const RefRay<LD> w{cast3<LD>(ray.o), cast3<LD>(ray.d)};
+    const RefRay<LD> l{rp.toLocalPoint(w.o), rp.toLocalVector(w.d)};
+    const V3<LD> pl = l.at(r.t);
+    for (const V3<LD>& c : refNormals(rp.type, pl, tolerance(r.prim, ray, r.t, pl))) {
+      const V3<LD> n = rp.normalToWorld(c);
+      out.push_back({double(n[0]), double(n[1]), double(n[2])});
+    }
+    return out;
+  }
   std::string describe() const {
     std::string d;
     for (const auto& p : s_.scene.prims) d += p.type;
@@ -1042,9 +1061,18 @@ Config makeConfig(const std::string& cls, Kind kind, int which, int rays, Rng& r
   for (int i = 0; i < rays; ++i) {
     const int k = rng.below(static_cast<int>(prims.size()));
     const char type = prims[static_cast<std::size_t>(k)].type;
-    if (c.chainTir) {
-      Vec3 p = interiorPoint(prims[0].type, rng);
-      c.rays.push_back(toWorld({p, rng.unitVector()}, prims[0].m));
+    if (c.chainTir) {  // start inside the object's solid (an operand's interior may not be)
+      for (int attempt = 0; attempt < 32; ++attempt) {
+        const int q = rng.below(static_cast<int>(prims.size()));
+        const Ray r =
+            toWorld({interiorPoint(prims[static_cast<std::size_t>(q)].type, rng), rng.unitVector()},
+                    prims[static_cast<std::size_t>(q)].m);
+        const RefResult ref = refNearest(c.subject, c.subject.refLd, r, false);
+        if (ref.hit && ref.exit) {
+          c.rays.push_back(r);
+          break;
+        }
+      }
       continue;
     }
     const LocalRay l = classRay(cls, type, rng);
@@ -1079,34 +1107,53 @@ bool refInside(const Measurer& m, int obj, const Ray& ray) {
 void runModern(const Config& c, const Measurer& m, Figures& f) {
   TracerModern tracer(c.subject.scene);
   const double tau = 1e-6 * c.subject.size;
+  std::vector<Vec3> refWorldNormals;
   auto secondary = [&](const ProfileHit& p, const Ray& from, const Vec3& dir, bool wantInside) {
     ++f.secondary;
-    const Ray sec{offsetRayOrigin(p.point, p.pointError, p.normal, dir), dir};
+    const Ray sec{spawnOrigin(p.surf, dir), dir};
     const bool inside = refInside(m, p.obj, sec);
-    if (inside != wantInside) {
+    // A direction within 1e-6 rad of a surface through the point (the
+    // reference's faces there) has no defined side: not counted.
+    bool grazing = false;
+    for (const Vec3& n : refWorldNormals) grazing = grazing || std::abs(dot(n, dir)) < 1e-6;
+    if (inside != wantInside && !grazing && !refWorldNormals.empty()) {
       ++f.wrongSide;
       if (debugOn()) {
         debugRay("wrong-side", m.describe(), from, p.t, wantInside, false);
-        std::fprintf(stderr, "  sec o=(%.17g,%.17g,%.17g) d=(%.17g,%.17g,%.17g) n=(%.6g,%.6g,%.6g) err=(%.3g,%.3g,%.3g)\n",
-                     sec.o[0], sec.o[1], sec.o[2], dir[0], dir[1], dir[2], p.normal[0], p.normal[1], p.normal[2],
-                     p.pointError[0], p.pointError[1], p.pointError[2]);
+        std::fprintf(stderr,
+                     "  sec o=(%.17g,%.17g,%.17g) d=(%.17g,%.17g,%.17g) n=(%.6g,%.6g,%.6g) "
+                     "err=(%.3g,%.3g,%.3g)\n",
+                     sec.o[0], sec.o[1], sec.o[2], dir[0], dir[1], dir[2], p.normal[0], p.normal[1],
+                     p.normal[2], p.pointError[0], p.pointError[1], p.pointError[2]);
       }
     }
     const ProfileHit q = modernHit(tracer, sec);
-    if (q.hit && q.prim == p.prim && q.t < tau) {
+    if (q.hit && q.obj == p.obj && q.t < tau) {
       Figures scratch;
       const RefResult r2 = m.reference(sec, false, scratch);
-      if (!(r2.hit && r2.prim == p.prim && r2.t < 2 * tau)) {
+      // Not a self-hit when the reference meets the surface there too, or
+      // when the difference is within the tolerance (a sliver, a near touch).
+      m.compare(q, r2, sec, false, scratch);
+      if (!(r2.hit && r2.obj == p.obj && r2.t < 2 * tau) && scratch.wrongDecisions() > 0) {
         ++f.selfHits;
         debugRay("self-hit", m.describe(), sec, q.t, r2.hit ? r2.t : -1, false);
         if (debugOn()) {
           TraceStats st;
-          const TList l = tracer.objectIntervals(c.subject.scene.objects[static_cast<std::size_t>(p.obj)], sec, st);
-          for (const TNode& nd : l) std::fprintf(stderr, "  node t=%.17g prim %d surf %d\n", nd.t, nd.prim, nd.surfType);
-          const Ray loc = transformRay(sec, accurateInverse(c.subject.scene.prims[static_cast<std::size_t>(p.prim)].transform));
-          const Ray loc0 = transformRay(from, accurateInverse(c.subject.scene.prims[static_cast<std::size_t>(p.prim)].transform));
-          std::fprintf(stderr, "  primary hit exit %d local hit (%.17g %.17g %.17g) sec local o (%.17g %.17g %.17g) d (%.6g %.6g %.6g) n=(%.6g,%.6g,%.6g)\n", p.exit,
-                       p.local[0], p.local[1], p.local[2], loc.o[0], loc.o[1], loc.o[2], loc.d[0], loc.d[1], loc.d[2], p.normal[0], p.normal[1], p.normal[2]);
+          const TList l = tracer.objectIntervals(
+              c.subject.scene.objects[static_cast<std::size_t>(p.obj)], sec, st);
+          for (const TNode& nd : l)
+            std::fprintf(stderr, "  node t=%.17g prim %d surf %d\n", nd.t, nd.prim, nd.surfType);
+          const Ray loc = transformRay(
+              sec,
+              accurateInverse(c.subject.scene.prims[static_cast<std::size_t>(p.prim)].transform));
+          const Ray loc0 = transformRay(
+              from,
+              accurateInverse(c.subject.scene.prims[static_cast<std::size_t>(p.prim)].transform));
+          std::fprintf(stderr,
+                       "  primary hit exit %d local hit (%.17g %.17g %.17g) sec local o (%.17g "
+                       "%.17g %.17g) d (%.6g %.6g %.6g) n=(%.6g,%.6g,%.6g)\n",
+                       p.exit, p.local[0], p.local[1], p.local[2], loc.o[0], loc.o[1], loc.o[2],
+                       loc.d[0], loc.d[1], loc.d[2], p.normal[0], p.normal[1], p.normal[2]);
           (void)loc0;
         }
       }
@@ -1122,9 +1169,12 @@ void runModern(const Config& c, const Measurer& m, Figures& f) {
         const ProfileHit p = modernHit(tracer, ray);
         const bool clean = m.compare(p, r, ray, false, f);
         ++f.chainSteps;
+        if (debugOn() && (!p.hit || !clean))
+          std::fprintf(stderr, "chain-break %s step %d p.hit %d r.hit %d r.exit %d p.exit %d\n",
+                       m.describe().c_str(), step, p.hit, r.hit, r.exit, p.exit);
         if (!p.hit || !clean) break;
         const Vec3 d = reflect(ray.d, p.normal);
-        ray = {offsetRayOrigin(p.point, p.pointError, p.normal, d), d};
+        ray = {spawnOrigin(p.surf, d), d};
       }
       if (step == 16) ++f.chainsComplete;
       continue;
@@ -1133,6 +1183,7 @@ void runModern(const Config& c, const Measurer& m, Figures& f) {
     const ProfileHit p = modernHit(tracer, start);
     if (!m.compare(p, r, start, false, f)) continue;
     if (m.thin(r.obj, start, r.exit ? 0 : r.a, r.b)) continue;
+    refWorldNormals = m.worldNormalsAt(r, start);
     secondary(p, start, reflect(start.d, p.normal), p.exit);  // reflected: stays on its side
     secondary(p, start, start.d, !p.exit);                    // transmitted: crosses
   }
@@ -1159,7 +1210,8 @@ void run1991(const Config& c, const Measurer& m, Figures& f) {
         }
         const bool clean = m.compare(p, r, ray, true, f);
         ++f.chainSteps;
-        const RefResult rFull = m.reference(ray, false, f);
+        Figures scratchFull;
+        const RefResult rFull = m.reference(ray, false, scratchFull);
         if (rFull.hit && !r.hit) ++f.semanticK7;
         if (!p.hit || !clean) break;
         if (c.chainTir) {
@@ -1200,7 +1252,8 @@ void run1991(const Config& c, const Measurer& m, Figures& f) {
       ++f.listingErrors;
       continue;
     }
-    const RefResult rFull = m.reference(start, false, f);
+    Figures scratchFull;  // (its ld/f128 disagreements are counted once, above)
+    const RefResult rFull = m.reference(start, false, scratchFull);
     if (rFull.hit && (!r.hit || std::abs(rFull.t - r.t) > 1e-9L * (std::abs(r.t) + c.subject.size)))
       ++f.semanticK7;
     Figures probe;
@@ -1222,15 +1275,31 @@ void run1991(const Config& c, const Measurer& m, Figures& f) {
     ++f.secondary;
     const Ray sec = tracer.reflectedRay(start, p.t, p.normal);  // K18: one unit along
     const ProfileHit q = listingHit(scene, sec);
-    if (q.hit && q.prim == p.prim && q.t < tau) {
+    if (q.hit && q.obj == p.obj && q.t < tau) {
       Figures scratch;
       const RefResult r2 = m.reference(sec, true, scratch);
-      if (!(r2.hit && r2.prim == p.prim && r2.t < 2 * tau)) ++f.selfHits;
+      m.compare(q, r2, sec, true, scratch);
+      if (!(r2.hit && r2.obj == p.obj && r2.t < 2 * tau) && scratch.wrongDecisions() > 0)
+        ++f.selfHits;
     }
   }
 }
 
 }  // namespace
+
+Figures measureRays(char type, const Matrix4& m, const std::vector<RayCase>& rays, bool listing,
+                    const StressOptions& options) {
+  Config c;
+  c.subject = makeSubject({{type, m}}, {{{'P', 0, 0}}});
+  for (const RayCase& r : rays) c.rays.push_back({r.o, unitV(r.d)});
+  const Measurer meas(c.subject, options);
+  Figures f;
+  if (listing)
+    run1991(c, meas, f);
+  else
+    runModern(c, meas, f);
+  return f;
+}
 
 std::vector<ClassResult> runStress(const StressOptions& options) {
   std::vector<ClassResult> out;

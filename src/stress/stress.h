@@ -72,15 +72,26 @@ struct ClassResult {
 
 std::vector<ClassResult> runStress(const StressOptions& options);
 
+// The same measurements for rays of your own against one primitive ('S',
+// 'B', 'C', 'N', 'Y') placed by the row-vector matrix m (for tests).
+struct RayCase {
+  std::array<double, 3> o, d;
+};
+Figures measureRays(char type, const std::array<std::array<double, 4>, 4>& m,
+                    const std::vector<RayCase>& rays, bool listing,
+                    const StressOptions& options = {});
+
 // Whole-image stability: every scene rendered after a world transform.
 struct StabilityRow {
   std::string scene, transform;
   std::uint64_t pixels = 0, changed1991 = 0, changedModern = 0;
+  std::uint64_t big1991 = 0, bigModern = 0;  // of those, colour moved by > 0.01 in a channel
   std::uint64_t nan1991 = 0, nanModern = 0;
 };
 struct StabilityOptions {
   std::string scenesDir;
-  int screenDivisor = 4;  // CameraSettings screen size divided by this
+  std::vector<std::string> scenes;  // only these scene directories (empty: all)
+  int screenDivisor = 4;            // CameraSettings screen size divided by this
   int threads = 0;
   bool run1991 = true, runModern = true;
   std::function<void(const std::string&)> log;

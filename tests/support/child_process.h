@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,12 +25,14 @@ class ChildProcess {
  public:
   // Starts argv[0] (looked up in PATH) with `env` added to (or, for an empty
   // value, removed from) this process's environment. Throws on failure.
-  ChildProcess(const std::vector<std::string>& argv, const std::map<std::string, std::string>& env = {}) {
+  ChildProcess(const std::vector<std::string>& argv,
+               const std::map<std::string, std::string>& env = {}) {
     int out[2], err[2];
     if (pipe(out) != 0 || pipe(err) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
     if (pid_ < 0) throw std::runtime_error("fork failed");
     if (pid_ == 0) {
+      prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the test (an X server, a window)
       dup2(out[1], 1);
       dup2(err[1], 2);
       close(out[0]);
@@ -79,14 +82,17 @@ class ChildProcess {
     for (;;) {
       drain();
       if (pred(out_, err_)) return true;
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          end - std::chrono::steady_clock::now());
       if (left.count() <= 0 || (outClosed_ && errClosed_)) return pred(out_, err_);
       pollfd fds[2] = {{outFd_, POLLIN, 0}, {errFd_, POLLIN, 0}};
       poll(fds, 2, static_cast<int>(std::min<long long>(left.count(), 50)));
     }
   }
   bool waitForErr(const std::string& text, int ms) {
-    return readUntil([&](const std::string&, const std::string& e) { return e.find(text) != std::string::npos; }, ms);
+    return readUntil(
+        [&](const std::string&, const std::string& e) { return e.find(text) != std::string::npos; },
+        ms);
   }
 
   // The exit status (128 + signal if killed), or nullopt if it is still

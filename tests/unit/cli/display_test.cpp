@@ -44,7 +44,8 @@ prime::io::GraphFile smallGraph(std::int16_t graphType = 1) {
   g.numPixAcross = 11;
   g.numPixDown = 5;
   for (int y = 0; y < 6; ++y)
-    for (int x = 0; x < 12; ++x) g.pixels.push_back(static_cast<std::int16_t>(40 * y + 23 * x - 60));
+    for (int x = 0; x < 12; ++x)
+      g.pixels.push_back(static_cast<std::int16_t>(40 * y + 23 * x - 60));
   return g;
 }
 
@@ -54,7 +55,8 @@ prime::Rgb8 at(const prime::Image8& img, int x, int y) {
 }
 
 prime::Rgb8 shown(const std::string& palette, int value) {
-  return prime::present(prime::findBuiltinPalette(palette)->dac)[static_cast<std::size_t>(value & 0xFF)];
+  return prime::present(
+      prime::findBuiltinPalette(palette)->dac)[static_cast<std::size_t>(value & 0xFF)];
 }
 
 TEST(PrimeExport, ImageScreenAndFileAreas) {
@@ -62,15 +64,21 @@ TEST(PrimeExport, ImageScreenAndFileAreas) {
   prime::io::writeGraphFile(d.path("g").string(), smallGraph());
   Outcome r = prime({"export", d.path("g").string(), d.path("image.png").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("12 x 6 (image area; the file's 12 x 6 pixels at (675, 0) on a 1024 x 768 screen), "
-                               "palette listing, DAC round"));
+  EXPECT_THAT(
+      r.out,
+      HasSubstr("12 x 6 (image area; the file's 12 x 6 pixels at (675, 0) on a 1024 x 768 screen), "
+                "palette listing, DAC round"));
   const prime::Image8 image = prime::readPng(d.path("image.png").string());
   EXPECT_EQ(image.width, 12);
   EXPECT_EQ(image.height, 6);
   for (int y = 0; y < 6; ++y)
-    for (int x = 0; x < 12; ++x) ASSERT_EQ(at(image, x, y), shown("listing", 40 * y + 23 * x - 60)) << x << "," << y;
+    for (int x = 0; x < 12; ++x)
+      ASSERT_EQ(at(image, x, y), shown("listing", 40 * y + 23 * x - 60)) << x << "," << y;
 
-  ASSERT_EQ(prime({"export", d.path("g").string(), d.path("screen.png").string(), "--area", "screen"}).status, 0);
+  ASSERT_EQ(
+      prime({"export", d.path("g").string(), d.path("screen.png").string(), "--area", "screen"})
+          .status,
+      0);
   const prime::Image8 screen = prime::readPng(d.path("screen.png").string());
   EXPECT_EQ(screen.width, 1024);
   EXPECT_EQ(screen.height, 768);
@@ -84,8 +92,8 @@ TEST(PrimeExport, ImageScreenAndFileAreas) {
   ASSERT_EQ(r.status, 0);
   EXPECT_THAT(r.err, HasSubstr("does not fit the 1024 x 768 screen"));
   EXPECT_EQ(prime::readPng(d.path("clip.png").string()).width, 4);
-  ASSERT_EQ(prime({"export", d.path("g").string(), d.path("file.png").string(), "--area", "file", "--at", "1020",
-                   "764"})
+  ASSERT_EQ(prime({"export", d.path("g").string(), d.path("file.png").string(), "--area", "file",
+                   "--at", "1020", "764"})
                 .status,
             0);
   EXPECT_EQ(prime::readPng(d.path("file.png").string()).width, 12);
@@ -95,30 +103,41 @@ TEST(PrimeExport, PalettesByNameByGraphTypeAndFromAFile) {
   prime::test::TempScene d;
   prime::io::writeGraphFile(d.path("vga").string(), smallGraph(0));
   ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("a.png").string()}).status, 0);
-  EXPECT_EQ(at(prime::readPng(d.path("a.png").string()), 3, 0), shown("vga", 9));  // graphType 0 -> vga
-  ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("b.png").string(), "--palette", "plate3"}).status, 0);
+  EXPECT_EQ(at(prime::readPng(d.path("a.png").string()), 3, 0),
+            shown("vga", 9));  // graphType 0 -> vga
+  ASSERT_EQ(
+      prime({"export", d.path("vga").string(), d.path("b.png").string(), "--palette", "plate3"})
+          .status,
+      0);
   EXPECT_EQ(at(prime::readPng(d.path("b.png").string()), 3, 0), shown("plate3", 9));
 
   d.write("grey.pal", "prime-palette 1\nbase listing\nvalues dac\n9 10 20 30\n");
-  ASSERT_EQ(
-      prime({"export", d.path("vga").string(), d.path("c.png").string(), "--palette", d.path("grey.pal").string()})
-          .status,
-      0);
-  EXPECT_EQ(at(prime::readPng(d.path("c.png").string()), 3, 0), (prime::Rgb8{40, 81, 121}));  // 10, 20, 30 rounded
+  ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("c.png").string(), "--palette",
+                   d.path("grey.pal").string()})
+                .status,
+            0);
+  EXPECT_EQ(at(prime::readPng(d.path("c.png").string()), 3, 0),
+            (prime::Rgb8{40, 81, 121}));  // 10, 20, 30 rounded
   ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("d.png").string(), "--palette",
                    d.path("grey.pal").string(), "--dac", "replicate"})
                 .status,
             0);
-  EXPECT_EQ(at(prime::readPng(d.path("d.png").string()), 3, 0), (prime::Rgb8{40, 81, 121}));  // 40|0, 80|1, 120|1
+  EXPECT_EQ(at(prime::readPng(d.path("d.png").string()), 3, 0),
+            (prime::Rgb8{40, 81, 121}));  // 40|0, 80|1, 120|1
 
   d.write("bad.pal", "prime-palette 1\nvalues dac\n0 0 0 70\n");
-  Outcome r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--palette", d.path("bad.pal").string()});
+  Outcome r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--palette",
+                     d.path("bad.pal").string()});
   EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.err, HasSubstr("bad.pal:3: blue: expected an integer 0..63 (values dac), found \"70\""));
+  EXPECT_THAT(r.err,
+              HasSubstr("bad.pal:3: blue: expected an integer 0..63 (values dac), found \"70\""));
   EXPECT_FALSE(d.exists("e.png"));
   r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--palette", "sepia"});
   EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.err, HasSubstr("sepia: palette: expected a built-in palette (listing, plate3, vga) or a palette file"));
+  EXPECT_THAT(
+      r.err,
+      HasSubstr(
+          "sepia: palette: expected a built-in palette (listing, plate3, vga) or a palette file"));
   r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--dac", "nearest"});
   EXPECT_NE(r.status, 0);
 }
@@ -144,7 +163,7 @@ TEST(PrimeDiff, ExitStatusCountsAndImage) {
   prime::test::TempScene d;
   const prime::io::GraphFile a = smallGraph();
   prime::io::GraphFile b = a;
-  b.pixels[13] = 300;            // (1, 1): 300 & 0xFF = 44 vs 3
+  b.pixels[13] = 300;                 // (1, 1): 300 & 0xFF = 44 vs 3
   b.pixels[14] = b.pixels[14] + 256;  // (2, 1): same on the screen
   prime::io::writeGraphFile(d.path("a").string(), a);
   prime::io::writeGraphFile(d.path("b").string(), b);
@@ -155,14 +174,19 @@ TEST(PrimeDiff, ExitStatusCountsAndImage) {
   EXPECT_THAT(r.out, HasSubstr("pixels differing: 0 of 72 (0.0000%)"));
   EXPECT_THAT(r.out, HasSubstr("\nidentical\n"));
 
-  r = prime({"diff", d.path("a").string(), d.path("b").string(), "--image", d.path("diff.png").string()});
+  r = prime(
+      {"diff", d.path("a").string(), d.path("b").string(), "--image", d.path("diff.png").string()});
   EXPECT_EQ(r.status, 1) << r.out << r.err;
-  EXPECT_THAT(r.out, HasSubstr("pixels differing: 2 of 72 (2.7778%); 1 of them look different on the screen"));
+  EXPECT_THAT(
+      r.out,
+      HasSubstr("pixels differing: 2 of 72 (2.7778%); 1 of them look different on the screen"));
   EXPECT_THAT(r.out, HasSubstr("first difference at (1, 1): 3 and 300"));
   // 3 is overridden (K17): (150, 239, 130) -> DAC (37, 59, 32) -> (150, 239, 130);
   // 44 = 32 + 3*4 -> (32, 96, 0) -> DAC (8, 24, 0) -> (32, 97, 0). Green: 239 - 97 = 142.
-  EXPECT_THAT(r.out, HasSubstr("largest colour difference: 142 of 255 (palette listing, DAC round) at (1, 1): 3 "
-                               "(150, 239, 130) and 300 (32, 97, 0)"));
+  EXPECT_THAT(
+      r.out,
+      HasSubstr("largest colour difference: 142 of 255 (palette listing, DAC round) at (1, 1): 3 "
+                "(150, 239, 130) and 300 (32, 97, 0)"));
   EXPECT_THAT(r.out, HasSubstr("the files differ"));
   const prime::Image8 img = prime::readPng(d.path("diff.png").string());
   EXPECT_EQ(img.width, 12);
@@ -228,23 +252,23 @@ TEST(PrimeTrace, HeadlessPngTrueColourAndStalePartialRemoved) {
   prime::test::TempScene s;
   sphere(s);
   s.write("graph_scr.partial", "stale");
-  Outcome r = prime({"trace", "--model", s.path().string(), "--png", s.path("a.png").string(), "--true-color-png",
-                 s.path("t.png").string()});
+  Outcome r = prime({"trace", "--model", s.path().string(), "--png", s.path("a.png").string(),
+                     "--true-color-png", s.path("t.png").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("prime: running headless (no DISPLAY)"));
   EXPECT_FALSE(s.exists("graph_scr.partial"));
   const prime::Image8 png = prime::readPng(s.path("a.png").string());
   EXPECT_EQ(png.width, 349);  // the image area: 350 x 769 less the off-screen column and row (K21)
   EXPECT_EQ(png.height, 768);
-  EXPECT_EQ(at(png, 0, 0), shown("listing", 1));      // the background (K16, K17)
+  EXPECT_EQ(at(png, 0, 0), shown("listing", 1));       // the background (K16, K17)
   EXPECT_EQ(at(png, 174, 384), shown("listing", 68));  // the sphere (replay_sphere_test)
   const prime::Image8 tc = prime::readPng(s.path("t.png").string());
   EXPECT_EQ(tc.width, 349);
   EXPECT_EQ(at(tc, 0, 0), (prime::Rgb8{0, 0, 0}));
   EXPECT_EQ(at(tc, 174, 384), (prime::Rgb8{102, 51, 26}));  // (0.4, 0.2, 0.1) * 255 = 102, 51, 25.5
 
-  r = prime({"trace", s.path().string(), "-q", "--no-window", "--png", s.path("f.png").string(), "--png-area",
-             "file", "--palette", "plate3"});
+  r = prime({"trace", s.path().string(), "-q", "--no-window", "--png", s.path("f.png").string(),
+             "--png-area", "file", "--palette", "plate3"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, Not(HasSubstr("headless")));  // -q
   const prime::Image8 file = prime::readPng(s.path("f.png").string());
@@ -260,7 +284,9 @@ TEST(PrimeTrace, CtrlCAbortsHeadlessAndLeavesOnlyAPartialFile) {
   ASSERT_EQ(prime({"model", s.path().string()}).status, 0);
   s.write("graph_scr", "an older, complete-looking render");
   // Sixteen times the pixels on one thread: long enough to interrupt.
-  ChildProcess p({PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"}, kHeadless);
+  ChildProcess p(
+      {PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"},
+      kHeadless);
   ASSERT_TRUE(p.waitForErr("running headless", 60000)) << p.err();
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   p.signal(SIGINT);
@@ -272,10 +298,11 @@ TEST(PrimeTrace, CtrlCAbortsHeadlessAndLeavesOnlyAPartialFile) {
   EXPECT_THAT(p.out(), HasSubstr("ABORTED after"));
   EXPECT_FALSE(s.exists("graph_scr"));
   ASSERT_TRUE(s.exists("graph_scr.partial"));
-  const prime::io::GraphFilePrefix part = prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
+  const prime::io::GraphFilePrefix part =
+      prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
   EXPECT_FALSE(part.complete());
   EXPECT_EQ(part.graph.numPixAcross, 1393);  // (int)(4096*1.0) - (int)(4096*0.66) = 4096 - 2703
-  EXPECT_EQ(part.pixelsPresent % 1394, 0u);   // whole rows from the top
+  EXPECT_EQ(part.pixelsPresent % 1394, 0u);  // whole rows from the top
   EXPECT_THROW(prime::io::readGraphFile(s.path("graph_scr.partial").string()), std::exception);
 }
 

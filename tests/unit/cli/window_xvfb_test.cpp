@@ -50,8 +50,8 @@ class XvfbTest : public ::testing::Test {
       return;
     }
     // 2560 x 2048: room for the 1024 x 768 screen at zoom 2.
-    server_ = new ChildProcess({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0", "2560x2048x24",
-                                "-nolisten", "tcp", "-noreset"});
+    server_ = new ChildProcess({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0",
+                                "2560x2048x24", "-nolisten", "tcp", "-noreset"});
     close(fds[1]);
     std::string number;
     pollfd pfd{fds[0], POLLIN, 0};
@@ -88,7 +88,16 @@ class XvfbTest : public ::testing::Test {
     ASSERT_TRUE(onPath("xdotool")) << "xdotool is not installed (./prime.sh installs it)";
   }
 
-  std::map<std::string, std::string> env() const { return {{"DISPLAY", display_}, {"WAYLAND_DISPLAY", ""}}; }
+  // The children's environment: our server, and (for the ASan runs) the
+  // suppressions of SDL's third-party leaks.
+  std::map<std::string, std::string> env() const {
+    const char* lsan = std::getenv("LSAN_OPTIONS");
+    const std::string supp = (fs::path(PRIME_TEST_DATA).parent_path() / "support" / "lsan-sdl.supp").string();
+    return {{"DISPLAY", display_},
+            {"WAYLAND_DISPLAY", ""},
+            {"LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") + "suppressions=" + supp +
+                                 ":print_suppressions=0"}};
+  }
 
   // Runs a tool against the server and returns its exit status; what it
   // said on stderr is kept in lastErr_.
@@ -123,18 +132,21 @@ std::string windowId(const std::string& err) {
 // header is big-endian CARD32s; the pixels are in the header's byte order.
 prime::Image8 readXwd(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  const std::vector<std::uint8_t> b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::uint8_t> b((std::istreambuf_iterator<char>(in)),
+                                    std::istreambuf_iterator<char>());
   if (b.size() < 100) throw std::runtime_error(path + ": not an XWD file");
   auto card = [&](std::size_t i) {
-    return static_cast<std::uint32_t>(b[4 * i] << 24 | b[4 * i + 1] << 16 | b[4 * i + 2] << 8 | b[4 * i + 3]);
+    return static_cast<std::uint32_t>(b[4 * i] << 24 | b[4 * i + 1] << 16 | b[4 * i + 2] << 8 |
+                                      b[4 * i + 3]);
   };
   const std::uint32_t headerSize = card(0), format = card(2), width = card(4), height = card(5),
-                      byteOrder = card(7), bitsPerPixel = card(11), bytesPerLine = card(12), red = card(14),
-                      green = card(15), blue = card(16), ncolors = card(19);
+                      byteOrder = card(7), bitsPerPixel = card(11), bytesPerLine = card(12),
+                      red = card(14), green = card(15), blue = card(16), ncolors = card(19);
   if (card(1) != 7 || format != 2 || (bitsPerPixel != 32 && bitsPerPixel != 24))
     throw std::runtime_error(path + ": expected a version 7 ZPixmap of 24 or 32 bits per pixel");
   const std::size_t data = headerSize + 12u * ncolors;
-  if (b.size() < data + static_cast<std::size_t>(bytesPerLine) * height) throw std::runtime_error(path + ": short");
+  if (b.size() < data + static_cast<std::size_t>(bytesPerLine) * height)
+    throw std::runtime_error(path + ": short");
   auto shift = [](std::uint32_t mask) {
     int s = 0;
     while (mask != 0 && (mask & 1) == 0) mask >>= 1, ++s;
@@ -150,7 +162,8 @@ prime::Image8 readXwd(const std::string& path) {
       const std::uint8_t* p = &b[data + static_cast<std::size_t>(y) * bytesPerLine + x * bytes];
       std::uint32_t v = 0;
       for (std::size_t k = 0; k < bytes; ++k)
-        v |= static_cast<std::uint32_t>(p[k]) << (8 * (byteOrder == 0 ? k : bytes - 1 - k));  // 0: LSBFirst
+        v |= static_cast<std::uint32_t>(p[k])
+             << (8 * (byteOrder == 0 ? k : bytes - 1 - k));  // 0: LSBFirst
       std::uint8_t* o = &img.rgb[(static_cast<std::size_t>(y) * width + x) * 3];
       o[0] = static_cast<std::uint8_t>((v & red) >> shift(red));
       o[1] = static_cast<std::uint8_t>((v & green) >> shift(green));
@@ -160,7 +173,8 @@ prime::Image8 readXwd(const std::string& path) {
 }
 
 // How many pixels differ, and the first one.
-std::string compare(const prime::Image8& shown, const prime::Image8& want, int zoom, std::size_t& differing) {
+std::string compare(const prime::Image8& shown, const prime::Image8& want, int zoom,
+                    std::size_t& differing) {
   differing = 0;
   std::string first;
   if (shown.width != want.width * zoom || shown.height != want.height * zoom)
@@ -169,12 +183,14 @@ std::string compare(const prime::Image8& shown, const prime::Image8& want, int z
   for (int y = 0; y < shown.height; ++y)
     for (int x = 0; x < shown.width; ++x) {
       const std::uint8_t* s = &shown.rgb[(static_cast<std::size_t>(y) * shown.width + x) * 3];
-      const std::uint8_t* w = &want.rgb[(static_cast<std::size_t>(y / zoom) * want.width + x / zoom) * 3];
+      const std::uint8_t* w =
+          &want.rgb[(static_cast<std::size_t>(y / zoom) * want.width + x / zoom) * 3];
       if (s[0] != w[0] || s[1] != w[1] || s[2] != w[2]) {
         if (differing++ == 0)
-          first = "first at (" + std::to_string(x) + ", " + std::to_string(y) + "): shown " + std::to_string(s[0]) +
-                  "," + std::to_string(s[1]) + "," + std::to_string(s[2]) + ", exported " + std::to_string(w[0]) +
-                  "," + std::to_string(w[1]) + "," + std::to_string(w[2]);
+          first = "first at (" + std::to_string(x) + ", " + std::to_string(y) + "): shown " +
+                  std::to_string(s[0]) + "," + std::to_string(s[1]) + "," + std::to_string(s[2]) +
+                  ", exported " + std::to_string(w[0]) + "," + std::to_string(w[1]) + "," +
+                  std::to_string(w[2]);
       }
     }
   return first;
@@ -182,8 +198,9 @@ std::string compare(const prime::Image8& shown, const prime::Image8& want, int z
 
 // Captures the window from the server until it matches `want` (the window
 // may still be catching up), or returns the last mismatch.
-std::string captureMatches(const std::function<int(const std::vector<std::string>&)>& run, const std::string& id,
-                           const fs::path& xwd, const prime::Image8& want, int zoom) {
+std::string captureMatches(const std::function<int(const std::vector<std::string>&)>& run,
+                           const std::string& id, const fs::path& xwd, const prime::Image8& want,
+                           int zoom) {
   std::string why = "no capture";
   for (int attempt = 0; attempt < 25; ++attempt) {
     if (run({"xwd", "-silent", "-id", id, "-out", xwd.string()}) != 0) {
@@ -206,7 +223,8 @@ prime::io::GraphFile patternGraph() {
   g.numPixAcross = 63;
   g.numPixDown = 47;
   for (int y = 0; y < 48; ++y)
-    for (int x = 0; x < 64; ++x) g.pixels.push_back(static_cast<std::int16_t>(71 * x + 37 * y - 300));
+    for (int x = 0; x < 64; ++x)
+      g.pixels.push_back(static_cast<std::int16_t>(71 * x + 37 * y - 300));
   return g;
 }
 
@@ -215,8 +233,8 @@ TEST_F(XvfbTest, ViewShowsExactlyWhatExportWritesAtZoomOneAndTwo) {
   prime::io::writeGraphFile(d.path("g").string(), patternGraph());
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
   for (const std::string palette : {"listing", "plate3"}) {
-    ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area", "screen",
-                   "--palette", palette}),
+    ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area",
+                   "screen", "--palette", palette}),
               0);
     const prime::Image8 want = prime::readPng(d.path("want.png").string());
     for (const int zoom : {1, 2}) {
@@ -240,7 +258,9 @@ TEST_F(XvfbTest, ZoomAndScreenshotKeys) {
   prime::test::TempScene d;
   prime::io::writeGraphFile(d.path("g").string(), patternGraph());
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
-  ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area", "screen"}), 0);
+  ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area",
+                 "screen"}),
+            0);
   const prime::Image8 want = prime::readPng(d.path("want.png").string());
   // Screenshots go to the current directory: run prime from the temp dir.
   const fs::path cwd = fs::current_path();
@@ -275,7 +295,8 @@ TEST_F(XvfbTest, TraceDrawsEachPixelWherePutPixelPutItAndWaitsForEsc) {
   ChildProcess trace({PRIME_EXE, "trace", "--model", s.path().string()}, env());
   ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
   EXPECT_THAT(trace.out(), HasSubstr("traced 350 x 769 pixels"));
-  ASSERT_EQ(run({PRIME_EXE, "export", s.path("graph_scr").string(), s.path("want.png").string(), "--area", "screen"}),
+  ASSERT_EQ(run({PRIME_EXE, "export", s.path("graph_scr").string(), s.path("want.png").string(),
+                 "--area", "screen"}),
             0);
   const prime::Image8 want = prime::readPng(s.path("want.png").string());
   const std::string id = windowId(trace.err());
@@ -295,7 +316,8 @@ TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
   ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
   // Sixteen times the pixels on one thread (about 2 s): time to press Esc.
-  ChildProcess trace({PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"}, env());
+  ChildProcess trace(
+      {PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"}, env());
   ASSERT_TRUE(trace.waitForErr("Esc aborts", 60000)) << trace.err();
   const std::string id = windowId(trace.err());
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -306,7 +328,8 @@ TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
   EXPECT_THAT(trace.err(), HasSubstr("prime: trace aborted after "));
   EXPECT_FALSE(s.exists("graph_scr"));
   ASSERT_TRUE(s.exists("graph_scr.partial"));
-  const prime::io::GraphFilePrefix part = prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
+  const prime::io::GraphFilePrefix part =
+      prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
   EXPECT_FALSE(part.complete());
   EXPECT_EQ(part.pixelsPresent % 1394, 0u);
 }

@@ -31,15 +31,16 @@ Rgb8 pixel(const Image8& img, int x, int y) {
 Rgb8Table colours() {
   Rgb8Table t{};
   for (int i = 0; i < 256; ++i)
-    t[static_cast<std::size_t>(i)] = {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(255 - i), 7};
+    t[static_cast<std::size_t>(i)] = {static_cast<std::uint8_t>(i),
+                                      static_cast<std::uint8_t>(255 - i), 7};
   return t;
 }
 
 TEST(ExportImage, ThreeAreasOfTheListingsFile) {
   io::GraphFile g = graph(349, 768, 109);
-  g.pixels[0] = -146;                                    // top-left: index 110 on the screen (Q12)
-  g.pixels[349] = 5;                                     // column 349 of row 0: screen column 1024, off-screen
-  g.pixels[static_cast<std::size_t>(768) * 350] = 6;     // row 768: off-screen
+  g.pixels[0] = -146;  // top-left: index 110 on the screen (Q12)
+  g.pixels[349] = 5;   // column 349 of row 0: screen column 1024, off-screen
+  g.pixels[static_cast<std::size_t>(768) * 350] = 6;  // row 768: off-screen
   Screen s;
   const Placement at = listingPlacement(1024, 768);
   drawGraph(s, g, at);
@@ -64,7 +65,8 @@ TEST(ExportImage, ThreeAreasOfTheListingsFile) {
   EXPECT_EQ(pixel(file, 0, 768), (Rgb8{6, 249, 7}));
   EXPECT_EQ(pixel(file, 0, 0), (Rgb8{110, 145, 7}));
 
-  EXPECT_THROW(exportImage(s, g, g.pixels.size(), {1024, 0}, c, ImageArea::Image), std::runtime_error);
+  EXPECT_THROW(exportImage(s, g, g.pixels.size(), {1024, 0}, c, ImageArea::Image),
+               std::runtime_error);
   EXPECT_EQ(imageAreaFromName("screen"), ImageArea::Screen);
   EXPECT_FALSE(imageAreaFromName("window").has_value());
 }
@@ -73,7 +75,8 @@ TEST(ExportImage, PngRoundTrip) {
   const io::GraphFile g = graph(3, 2, 255);
   Screen s(8, 8);
   drawGraph(s, g, {1, 1});
-  const Image8 img = exportImage(s, g, g.pixels.size(), {1, 1}, present(listingDac()), ImageArea::Screen);
+  const Image8 img =
+      exportImage(s, g, g.pixels.size(), {1, 1}, present(listingDac()), ImageArea::Screen);
   const auto path = std::filesystem::temp_directory_path() / "prime-export-test.png";
   writePng(path.string(), img);
   const Image8 back = readPng(path.string());
@@ -93,7 +96,8 @@ TEST(TrueColour, ClampRoundAndNaN) {
   const io::GraphFile g = graph(2, 1);  // 3 x 2
   std::vector<Rgb> rgb(6, Rgb{1, 0, 0});
   rgb[5] = {0, 0, 1};
-  const Image8 img = exportTrueColour(5, 5, g, rgb, {3, 4}, ImageArea::Image);  // only 2 x 1 on screen
+  const Image8 img =
+      exportTrueColour(5, 5, g, rgb, {3, 4}, ImageArea::Image);  // only 2 x 1 on screen
   EXPECT_EQ(img.width, 2);
   EXPECT_EQ(img.height, 1);
   const Image8 all = exportTrueColour(5, 5, g, rgb, {3, 4}, ImageArea::File);

@@ -13,7 +13,8 @@ namespace {
 
 // A complete file: `values setrgbpalette`, entry i = (i, 255 - i, 4).
 std::string fullFile(const std::string& values = "setrgbpalette", const std::string& extra = "") {
-  std::string s = "# a test palette\nprime-palette 1\nname ramp  test \nvalues " + values + "\n" + extra;
+  std::string s =
+      "# a test palette\nprime-palette 1\nname ramp  test \nvalues " + values + "\n" + extra;
   for (int i = 0; i < 256; ++i)
     s += std::to_string(i) + " " + std::to_string(values == "dac" ? i / 4 : i) + "\t" +
          std::to_string(values == "dac" ? 63 - i / 4 : 255 - i) + " 4  # entry\r\n";
@@ -51,7 +52,8 @@ TEST(PaletteFile, NameDefaultsToTheFileName) {
 }
 
 TEST(PaletteFile, BaseFillsTheEntriesNotGiven) {
-  const Palette p = parsePaletteText("prime-palette 1\nbase listing\nvalues dac\n1 0 0 0\n", "my.pal");
+  const Palette p =
+      parsePaletteText("prime-palette 1\nbase listing\nvalues dac\n1 0 0 0\n", "my.pal");
   EXPECT_EQ(p.dac[1], (Dac6{0, 0, 0}));
   EXPECT_EQ(p.dac[8], (Dac6{63, 63, 63}));  // the listing's white
   EXPECT_EQ(p.dac[255], (Dac6{56, 56, 48}));
@@ -70,20 +72,26 @@ TEST(PaletteFile, FormatReadsBack) {
 
 TEST(PaletteFile, Errors) {
   EXPECT_EQ(errorOf(""), "my.pal: header: expected \"prime-palette 1\", found an empty file");
-  EXPECT_EQ(errorOf("# only a comment\n\n"), "my.pal: header: expected \"prime-palette 1\", found an empty file");
+  EXPECT_EQ(errorOf("# only a comment\n\n"),
+            "my.pal: header: expected \"prime-palette 1\", found an empty file");
   EXPECT_EQ(errorOf("\n0 0 0 0\n"),
-            "my.pal:2: header: expected \"prime-palette 1\" as the first line that is not a comment, found "
+            "my.pal:2: header: expected \"prime-palette 1\" as the first line that is not a "
+            "comment, found "
             "\"0 0 0 0\"");
   EXPECT_EQ(errorOf("prime-palette 2\n"), "my.pal:1: version: expected 1, found \"2\"");
   EXPECT_EQ(errorOf("prime-palette\n"), "my.pal:1: version: expected 1, found nothing");
   EXPECT_EQ(errorOf("prime-palette 1\n0 0 0 0\n"),
-            "my.pal:2: values: expected a \"values setrgbpalette\" or \"values dac\" line before the first "
+            "my.pal:2: values: expected a \"values setrgbpalette\" or \"values dac\" line before "
+            "the first "
             "entry, found an entry");
   EXPECT_EQ(errorOf("prime-palette 1\nvalues rgb\n"),
-            "my.pal:2: values: expected \"setrgbpalette\" (0..255 per channel) or \"dac\" (0..63), found \"rgb\"");
-  EXPECT_EQ(errorOf("prime-palette 1\nbase ega\n"), "my.pal:2: base: expected listing, plate3 or vga, found \"ega\"");
+            "my.pal:2: values: expected \"setrgbpalette\" (0..255 per channel) or \"dac\" (0..63), "
+            "found \"rgb\"");
+  EXPECT_EQ(errorOf("prime-palette 1\nbase ega\n"),
+            "my.pal:2: base: expected listing, plate3 or vga, found \"ega\"");
   EXPECT_EQ(errorOf("prime-palette 1\ncolour 1 2 3\n"),
-            "my.pal:2: directive: expected name, values, base, or an entry INDEX RED GREEN BLUE, found \"colour\"");
+            "my.pal:2: directive: expected name, values, base, or an entry INDEX RED GREEN BLUE, "
+            "found \"colour\"");
   EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n0 0 0\n"),
             "my.pal:3: entry: expected 4 fields: INDEX RED GREEN BLUE, found 3 fields");
   EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n256 0 0 0\n"),
@@ -101,20 +109,24 @@ TEST(PaletteFile, Errors) {
   EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n7 0 0 0\n\n7 1 1 1\n"),
             "my.pal:5: index: expected each index once, found 7 again (first on line 3)");
   EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n0 0 0 0\nname late\n"),
-            "my.pal:4: name: expected an entry INDEX RED GREEN BLUE (directives come before the entries), "
+            "my.pal:4: name: expected an entry INDEX RED GREEN BLUE (directives come before the "
+            "entries), "
             "found \"name\"");
   EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n0 0 0 0\n1 0 0 0\n"),
-            "my.pal: entries: expected all 256 indices 0..255 (or a \"base\" palette for the rest), found 2 "
+            "my.pal: entries: expected all 256 indices 0..255 (or a \"base\" palette for the "
+            "rest), found 2 "
             "(missing 2, 3, 4, 5, 6, 7, 8, 9, ...)");
   std::string most = fullFile();
   most.erase(most.find("\n17 17"), most.find("\n18 18") - most.find("\n17 17"));
   EXPECT_EQ(errorOf(most),
-            "my.pal: entries: expected all 256 indices 0..255 (or a \"base\" palette for the rest), found 255 "
+            "my.pal: entries: expected all 256 indices 0..255 (or a \"base\" palette for the "
+            "rest), found 255 "
             "(missing 17)");
   EXPECT_EQ(errorOf(std::string("prime-palette 1\nvalues dac\n0 \x01\xff 0 0\n")),
             "my.pal:3: red: expected an integer 0..63 (values dac), found \"\\x01\\xFF\"");
-  EXPECT_EQ(errorOf("prime-palette 1\nvalues dac\n0 99999999999999999999 0 0\n"),
-            "my.pal:3: red: expected an integer 0..63 (values dac), found \"99999999999999999999\"");
+  EXPECT_EQ(
+      errorOf("prime-palette 1\nvalues dac\n0 99999999999999999999 0 0\n"),
+      "my.pal:3: red: expected an integer 0..63 (values dac), found \"99999999999999999999\"");
 }
 
 TEST(PaletteFile, MissingFileAndLongNames) {
@@ -122,12 +134,14 @@ TEST(PaletteFile, MissingFileAndLongNames) {
     readPaletteFile("/nonexistent/dir/p.pal");
     FAIL();
   } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/p.pal: cannot read the palette file"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/p.pal: cannot read the palette file"),
+              std::string::npos)
         << e.what();
   }
   const std::string word(100, 'x');
   EXPECT_EQ(errorOf("prime-palette 1\n" + word + "\n"),
-            "my.pal:2: directive: expected name, values, base, or an entry INDEX RED GREEN BLUE, found \"" +
+            "my.pal:2: directive: expected name, values, base, or an entry INDEX RED GREEN BLUE, "
+            "found \"" +
                 std::string(40, 'x') + "...\"");
 }
 

@@ -53,7 +53,8 @@ TEST(Screen, PutPixelClipsAndMasksToEightBits) {
 
 TEST(ScreenLine, EndPointsIncludedAndNearestPixels) {
   Screen s(16, 8);
-  s.line(1, 1, 5, 3, 9);  // dx 4, dy 2: y = 1 + round(t/2), ties up: t=1 -> 1.5 -> 2, t=3 -> 2.5 -> 3
+  s.line(1, 1, 5, 3,
+         9);  // dx 4, dy 2: y = 1 + round(t/2), ties up: t=1 -> 1.5 -> 2, t=3 -> 2.5 -> 3
   EXPECT_EQ(lit(s), (Pixels{{1, 1}, {2, 2}, {3, 2}, {4, 3}, {5, 3}}));
   EXPECT_EQ(s.getPixel(3, 2), 9);
 }
@@ -69,7 +70,8 @@ TEST(ScreenLine, SymmetricAndAllOctants) {
       EXPECT_EQ(pa, lit(b)) << x0 << "," << y0 << " " << x1 << "," << y1;
       EXPECT_TRUE(pa.count({x0, y0}) && pa.count({x1, y1}));
       const int n = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
-      EXPECT_EQ(pa.size(), static_cast<std::size_t>(n + 1));  // one pixel per step on the longer axis
+      EXPECT_EQ(pa.size(),
+                static_cast<std::size_t>(n + 1));  // one pixel per step on the longer axis
     }
 }
 
@@ -93,7 +95,8 @@ TEST(ScreenLine, ClippedAgainstTheScreenWithoutChangingWhichPixelsAreOn) {
   big.line(-40 + 24, -10 + 24, 50 + 24, 30 + 24, 1);  // shifted by 24 to fit
   small.line(-40, -10, 50, 30, 1);
   for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x) EXPECT_EQ(small.getPixel(x, y), big.getPixel(x + 24, y + 24)) << x << "," << y;
+    for (int x = 0; x < 16; ++x)
+      EXPECT_EQ(small.getPixel(x, y), big.getPixel(x + 24, y + 24)) << x << "," << y;
   Screen huge(8, 8);
   huge.line(-2000000000, 3, 2000000000, 3, 2);  // bounded work, no overflow
   EXPECT_EQ(lit(huge).size(), 8u);
