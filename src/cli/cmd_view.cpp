@@ -68,8 +68,9 @@ void addViewCommand(CLI::App& app, Action& action) {
           due = std::min(rowsPresent, static_cast<int>(s * *rate) + 1);
         }
         for (; drawn < due; ++drawn) live.drawRow(g.at, drawn, rowSpan(drawn));
-        window->setStatus((drawn < rowsPresent ? "row " + std::to_string(drawn) + "/" : "") +
-                          std::to_string(rowsPresent) + " rows" +
+        window->setStatus((drawn < rowsPresent
+                               ? "row " + std::to_string(drawn) + "/" + std::to_string(rowsPresent)
+                               : std::to_string(rowsPresent) + " rows") +
                           (f.complete() ? "" : " (partial file)") + " - Esc to close");
         if (window->poll(drawn < rowsPresent ? 10 : 100)) break;
         if (!announced && drawn == rowsPresent && window->upToDate()) {

@@ -92,11 +92,12 @@ class XvfbTest : public ::testing::Test {
   // suppressions of SDL's third-party leaks.
   std::map<std::string, std::string> env() const {
     const char* lsan = std::getenv("LSAN_OPTIONS");
-    const std::string supp = (fs::path(PRIME_TEST_DATA).parent_path() / "support" / "lsan-sdl.supp").string();
+    const std::string supp =
+        (fs::path(PRIME_TEST_DATA).parent_path() / "support" / "lsan-sdl.supp").string();
     return {{"DISPLAY", display_},
             {"WAYLAND_DISPLAY", ""},
-            {"LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") + "suppressions=" + supp +
-                                 ":print_suppressions=0"}};
+            {"LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") +
+                                 "suppressions=" + supp + ":print_suppressions=0"}};
   }
 
   // Runs a tool against the server and returns its exit status; what it
