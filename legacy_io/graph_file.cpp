@@ -60,6 +60,13 @@ GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, co
     const std::size_t n = whole.pixels.size();
     return {std::move(whole), n};
   }
+  // A cut-short file is padded to the size its header claims: bound that
+  // claim (a 6-byte file must not make us allocate gigabytes).
+  constexpr std::size_t kMaxPartialPixels = std::size_t{8192} * 8192;
+  if (inclusiveCount > kMaxPartialPixels)
+    throw InputError({name, std::nullopt, 2}, "numPixAcross/numPixDown of a partial graph file",
+                     "at most 8192 x 8192 pixels", std::to_string(f.numPixAcross + 1) + " x " +
+                                                       std::to_string(f.numPixDown + 1));
   f.inclusive = true;
   f.pixels.reserve(inclusiveCount);
   for (std::size_t i = 0; i < present; ++i) f.pixels.push_back(r.getInt16("pixel"));

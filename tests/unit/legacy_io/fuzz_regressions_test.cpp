@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "legacy_io/dump.h"
+#include "legacy_io/graph_file.h"
 #include "legacy_io/model_builder.h"
 #include "legacy_io/text_inputs.h"
 #include "tests/support/temp_scene.h"
@@ -186,6 +187,23 @@ TEST(FuzzRegressions, NumbersTakeOneSignOnly) {
   (void)in.token("skip");
   EXPECT_EQ(in.int16("a"), 5);
   EXPECT_EQ(in.number("b"), -5.0);
+}
+
+}  // namespace
+}  // namespace prime::io
+
+namespace prime::io {
+namespace {
+
+TEST(FuzzRegressions, PartialGraphFileHeaderCannotAskForGigabytes) {
+  // A 6-byte "partial" file whose header claims 32767 x 32767 pixels.
+  const std::vector<std::uint8_t> bytes = {1, 0, 0xFF, 0x7F, 0xFF, 0x7F};
+  try {
+    graphFilePrefixFromBytes(bytes, "x.partial");
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 8192 x 8192 pixels"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
