@@ -201,16 +201,29 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
   }
 
   for (const BenchSetting& b : benchSettings(options.quick)) {
+    if (options.onlyThreads && b.threads == 1) continue;
     BenchRow r;
     r.scene = scene.name;
     r.setting = b;
     r.runs = std::max(1, options.runs);
-    std::vector<double> walls, cpus;
+    std::vector<double> walls, cpus, pairs, wallOnes;
+    BenchSetting one = b;
+    one.threads = 1;
     for (int run = 0; run < r.runs; ++run) {
+      double wallOne = 0;
+      if (b.threads > 1) {
+        const double t0 = wallSeconds();
+        render(scene, settingsOf(one));
+        wallOne = wallSeconds() - t0;
+      }
       const double w0 = wallSeconds(), c0 = processCpuSeconds();
       RenderResult res = render(scene, settingsOf(b));
       walls.push_back(wallSeconds() - w0);
       cpus.push_back(processCpuSeconds() - c0);
+      if (b.threads > 1) {
+        pairs.push_back(wallOne / walls.back());
+        wallOnes.push_back(wallOne);
+      }
       if (run == 0) {
         r.columns = res.graph.width();
         r.rows = res.graph.height();
@@ -224,6 +237,12 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
     r.wallMax = *std::max_element(walls.begin(), walls.end());
     r.cpuMin = *std::min_element(cpus.begin(), cpus.end());
     r.cpuMax = *std::max_element(cpus.begin(), cpus.end());
+    if (!pairs.empty()) {
+      r.pairedSpeedUp = median(pairs);
+      r.pairedWallOne = median(wallOnes);
+      r.pairedSpeedUpMin = *std::min_element(pairs.begin(), pairs.end());
+      r.pairedSpeedUpMax = *std::max_element(pairs.begin(), pairs.end());
+    }
     rows.push_back(r);
     log(scene.name + ": " + settingLabel(b) + ": " + fmt("%.4f s", r.wallMedian) + " wall, RMSE " +
         fmt("%.5f", r.error.rmse));
@@ -248,12 +267,14 @@ void markPareto(std::vector<BenchRow>& rows) {
 std::vector<SpeedUp> threadSpeedUps(const std::vector<BenchRow>& rows) {
   std::vector<SpeedUp> out;
   for (const auto& two : rows) {
-    if (two.setting.threads != 2 || two.setting.reference) continue;
+    if (two.setting.threads < 2 || two.setting.reference || two.pairedSpeedUp <= 0) continue;
+    SpeedUp u{two.scene,     two.setting,       two.pairedWallOne,    two.wallMedian,      0.0,
+              two.cpuMedian, two.pairedSpeedUp, two.pairedSpeedUpMin, two.pairedSpeedUpMax};
     for (const auto& one : rows)
       if (one.scene == two.scene && one.setting.threads == 1 &&
           sameSetting(one.setting, two.setting))
-        out.push_back(
-            {two.scene, two.setting, one.wallMedian, two.wallMedian, one.cpuMedian, two.cpuMedian});
+        u.cpu1 = one.cpuMedian;
+    out.push_back(u);
   }
   return out;
 }
@@ -274,7 +295,8 @@ void writeCsv(const fs::path& path, const std::vector<BenchRow>& rows) {
         << t.reflectedRays << "," << t.transmittedRays << "," << t.boundTests << ","
         << t.objectTests << "," << t.primitiveTests << "," << fmt("%.8g", r.error.rmse) << ","
         << fmt("%.8g", r.error.maxError) << "," << fmt("%.8g", r.error.indexShare) << ","
-        << (r.pareto ? 1 : 0) << "\n";
+        << (r.pareto ? 1 : 0) << ","
+        << (r.pairedSpeedUp > 0 ? fmt("%.4f", r.pairedSpeedUp) : std::string()) << "\n";
   }
   if (!out) throw std::runtime_error(path.string() + ": write failed");
 }
@@ -336,9 +358,10 @@ std::string markdownReport(const std::vector<BenchRow>& rows, const MachineFacts
         "differs from the reference's. `P` marks the Pareto front of CPU time against RMSE "
         "(single-thread rows); `1991` the listing's own settings (depth 5, no cut-off, one ray per "
         "pixel).\n\n";
-  md << "### Summary\n\nOther settings (depth 5, one thread unless named) as CPU time relative "
-        "to the 1991 profile / RMSE.\n\n"
-     << summaryTable(rows);
+  if (findRow(rows, rows.empty() ? "" : rows.front().scene, 5, 0, "single", 1))
+    md << "### Summary\n\nOther settings (depth 5, one thread unless named) as CPU time relative "
+          "to the 1991 profile / RMSE.\n\n"
+       << summaryTable(rows);
   std::string scene;
   for (const auto& r : rows) {
     if (r.scene != scene) {
@@ -360,14 +383,19 @@ std::string markdownReport(const std::vector<BenchRow>& rows, const MachineFacts
   }
   const auto ups = threadSpeedUps(rows);
   if (!ups.empty()) {
-    md << "\n### 1 -> 2 threads\n\n| scene | setting | wall 1 thread ms | wall 2 threads ms | "
-          "speed-up | CPU 2 threads / CPU 1 thread |\n|---|---|---:|---:|---:|---:|\n";
+    md << "\n### 1 -> 2 threads\n\nEach 2-thread run is paired with a 1-thread run of the "
+          "same setting just before it; `speed-up` is the median over the pairs of wall(1 "
+          "thread) / wall(2 threads), with its range.\n\n| scene | setting | wall 1 thread ms | "
+          "wall 2 threads ms | speed-up (min-max) | CPU 2 threads / CPU 1 thread "
+          "|\n|---|---|---:|---:|---:|---:|\n";
     std::vector<double> ratios;
     for (const auto& u : ups) {
       md << "| " << u.scene << " | " << samplingName(u.setting.sampling) << ", depth "
          << u.setting.maxDepth << " | " << fmt("%.1f", u.wall1 * 1e3) << " | "
-         << fmt("%.1f", u.wall2 * 1e3) << " | " << fmt("%.2f", u.ratio()) << " | "
-         << fmt("%.2f", u.cpu2 / u.cpu1) << " |\n";
+         << fmt("%.1f", u.wall2 * 1e3) << " | **" << fmt("%.2f", u.ratio()) << "**"
+         << (u.paired > 0 ? " (" + fmt("%.2f", u.pairedMin) + "-" + fmt("%.2f", u.pairedMax) + ")"
+                          : std::string())
+         << " | " << (u.cpu1 > 0 ? fmt("%.2f", u.cpu2 / u.cpu1) : std::string("-")) << " |\n";
       ratios.push_back(u.ratio());
     }
     md << "\nMedian speed-up over these rows: " << fmt("%.2f", median(ratios)) << "x.\n";

@@ -60,11 +60,17 @@ struct BenchRow {
   TraceStats stats;  // of the first run (every run casts the same rays)
   ImageError error;
   bool pareto = false;
+  // Rows with threads > 1: each run is paired with a run of the same
+  // setting on one thread just before it; the median (and range) over the
+  // pairs of wall(1 thread) / wall(this), robust to load that drifts.
+  double pairedSpeedUp = 0, pairedSpeedUpMin = 0, pairedSpeedUpMax = 0;
+  double pairedWallOne = 0;  // median wall time of the 1-thread partners
 };
 
 struct BenchOptions {
   int runs = 3;
   bool quick = false;
+  bool onlyThreads = false;  // the reference and the multi-thread settings (with their pairs) only
   CameraSettings camera = benchCamera(false);
   int referenceThreads = 0;                     // 0: all cores
   std::function<void(const std::string&)> log;  // progress lines
@@ -83,9 +89,11 @@ void markPareto(std::vector<BenchRow>& rows);
 // 1 thread over wall median with 2.
 struct SpeedUp {
   std::string scene;
-  BenchSetting setting;  // with threads = 2
-  double wall1 = 0, wall2 = 0, cpu1 = 0, cpu2 = 0;
-  double ratio() const { return wall1 / wall2; }
+  BenchSetting setting;         // with threads = 2
+  double wall1 = 0, wall2 = 0;  // medians: the 1-thread partners, this row
+  double cpu1 = 0, cpu2 = 0;    // medians of the 1-thread row (0 when not run) and this row
+  double paired = 0, pairedMin = 0, pairedMax = 0;  // BenchRow::pairedSpeedUp*
+  double ratio() const { return paired > 0 ? paired : wall1 / wall2; }
 };
 std::vector<SpeedUp> threadSpeedUps(const std::vector<BenchRow>& rows);
 
@@ -93,7 +101,7 @@ inline constexpr const char* kCsvHeader =
     "scene,setting,reference,max_depth,min_weight,sampling,threads,runs,columns,rows,"
     "wall_median_s,wall_min_s,wall_max_s,cpu_median_s,cpu_min_s,cpu_max_s,"
     "rays,primary_rays,reflected_rays,transmitted_rays,bound_tests,object_tests,primitive_tests,"
-    "rmse,max_error,index_diff_share,pareto";
+    "rmse,max_error,index_diff_share,pareto,paired_speedup";
 
 void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
 // Markdown: the machine, the command, one table per scene, the speed-ups.

@@ -21,6 +21,7 @@ struct BenchCliOptions {
   std::string out = "out/bench";
   int runs = 0;  // 0: 3, or 1 with --quick
   bool quick = false;
+  bool onlyThreads = false;
   bool scale = false, onlyScale = false;
   std::vector<int> scaleSizes;
   int scaleOffMax = -1;
@@ -36,6 +37,7 @@ std::string commandLine(const BenchCliOptions& o) {
   c << " --out " << o.out;
   if (o.runs > 0) c << " --runs " << o.runs;
   if (o.quick) c << " --quick";
+  if (o.onlyThreads) c << " --only-threads";
   if (o.scale) c << " --scale";
   if (o.onlyScale) c << " --only-scale";
   if (!o.scaleSizes.empty()) {
@@ -77,6 +79,7 @@ int runBench(const BenchCliOptions& o) {
     BenchOptions options;
     options.runs = runs;
     options.quick = o.quick;
+    options.onlyThreads = o.onlyThreads;
     options.camera = benchCamera(o.quick);
     if (o.screen.size() == 2) {
       options.camera.screenWidth = o.screen[0];
@@ -144,8 +147,13 @@ void addBenchCommand(CLI::App& app, Action& action) {
          "--screen", o->screen,
          "Screen size W H for the scenes (default 512 x 384: 176 x 385 pixels; 1024 768 is the "
          "listing's 350 x 769)")
-      ->expected(2)->allow_extra_args(false)
+      ->expected(2)
+      ->allow_extra_args(false)
       ->check(CLI::Range(8, 4096));
+  cmd->add_flag(
+      "--only-threads", o->onlyThreads,
+      "Only the reference and the 2-thread settings, each run paired with a 1-thread run: "
+      "the thread speed-up alone, for a quiet moment");
   cmd->add_flag("--scale", o->scale,
                 "Also run the scale study (generated scenes of 1 .. 10,000 objects)");
   cmd->add_flag("--only-scale", o->onlyScale, "Run only the scale study");

@@ -87,7 +87,8 @@ TEST(PrimeBench, QuickRunOnTheSphereWritesCsvMarkdownAndPlot) {
                                              "rmse",
                                              "max_error",
                                              "index_diff_share",
-                                             "pareto"};
+                                             "pareto",
+                                             "paired_speedup"};
   EXPECT_EQ(rows[0], expected);
   for (std::size_t i = 1; i < rows.size(); ++i)
     EXPECT_EQ(rows[i].size(), expected.size()) << "row " << i;
@@ -130,6 +131,16 @@ TEST(PrimeBench, QuickRunOnTheSphereWritesCsvMarkdownAndPlot) {
   }
   EXPECT_GE(pareto, 1);
   EXPECT_EQ(listing, 1);
+  // The 2-thread row carries the paired speed-up; the others leave it empty.
+  int paired = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i][column(h, "threads")] == "2" && rows[i][column(h, "reference")] == "0") {
+      ++paired;
+      EXPECT_GT(std::stod(rows[i][column(h, "paired_speedup")]), 0.0);
+    } else {
+      EXPECT_EQ(rows[i][column(h, "paired_speedup")], "");
+    }
+  EXPECT_EQ(paired, 1);
 
   std::ifstream md(out.path("res/bench.md"));
   std::stringstream text;
