@@ -54,36 +54,80 @@ Vec3 hjPrime1991(const Vec3& l, const Vec3& v, double indx) {
   return h;
 }
 
+namespace {
+
+// pow(x, y) for x = N.H in [-1, 1] and a finite y >= 0 is finite unless x is
+// negative and y not an integer (NaN); x outside [-1, 1] (including NaN)
+// also makes ACos NaN. Anything else (y < 0, y not finite) is not decided here.
+bool powAndAcosFinite(double x, double y) {
+  if (!(x >= -1.0 && x <= 1.0) || !(y >= 0.0 && std::isfinite(y))) return false;
+  return x >= 0.0 || std::floor(y) == y;
+}
+
+constexpr double kBound = 1e100;
+bool bounded(double v) {
+  return v >= -kBound && v <= kBound;
+}  // false for NaN and +-inf
+
+}  // namespace
+
+bool hallInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
+                       std::span<const HallLight> lights, const Rgb& ambient) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!bounded(surfColor[k]) || !bounded(iSR[k]) || !bounded(iST[k]) || !bounded(ambient[k]))
+      return false;
+  for (const HallLight& l : lights)
+    for (double v : l.intensity)
+      if (!bounded(v)) return false;
+  return true;
+}
+
 HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight> lights,
-                             double indx, double kRH, double kTH) {
+                             double indx, double kRH, double kTH, double tT, double sT,
+                             HallShortcut shortcut) {
   HallPrepared p;
   p.count = static_cast<int>(std::min(lights.size(), p.light.size()));
   const Vec3& n = geom.n;
+  std::array<double, 10> dotHj{}, dotHj_{};
+  bool zeroA = shortcut.zeroReflection, zeroB = shortcut.zeroTransmission;
   for (int i = 0; i < p.count; ++i) {  // calculate summations
+    const auto k = static_cast<std::size_t>(i);
     // MakeVector(light[i].pt, pt, l): l = pt - light (K10), then UnitVector;
     // a zero l (light at the point) stays zero.
-    Vec3 l = geom.pt - lights[i].pt;
+    Vec3 l = geom.pt - lights[k].pt;
     unitVector(l, l);
-    const Vec3 h = hj1991(l, geom.v);
-    const Vec3 h_ = hjPrime1991(l, geom.v, indx);
-    const double dotHj = dot(n, h);
-    const double dotHj_ = dot(n, h_);
-    HallPrepared::Light& out = p.light[static_cast<std::size_t>(i)];
-    out.cosHj = cosDeg(acosDeg(dotHj));    // FSR's Cos(ACos(N.Hj))
-    out.cosHj_ = cosDeg(acosDeg(dotHj_));
-    out.powHj = std::pow(dotHj, kRH);
-    out.powHj_ = std::pow(dotHj_, kTH);
-    out.vD = dot(n, l);  // E16: a double
+    dotHj[k] = dot(n, hj1991(l, geom.v));
+    dotHj_[k] = dot(n, hjPrime1991(l, geom.v, indx));
+    p.light[k].vD = dot(n, l);  // E16: a double
+    zeroA = zeroA && powAndAcosFinite(dotHj[k], kRH);
+    zeroB = zeroB && powAndAcosFinite(dotHj_[k], kTH);
   }
-  p.cosReflected = cosDeg(acosDeg(dot(n, geom.r)));
+  p.zeroSpecularReflection = zeroA;
+  p.zeroSpecularTransmission = zeroB;
+  for (int i = 0; i < p.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    HallPrepared::Light& out = p.light[k];
+    if (!zeroA) {
+      out.cosHj = cosDeg(acosDeg(dotHj[k]));  // FSR's Cos(ACos(N.Hj))
+      out.powHj = std::pow(dotHj[k], kRH);
+    }
+    if (!zeroB) {
+      out.cosHj_ = cosDeg(acosDeg(dotHj_[k]));
+      out.powHj_ = std::pow(dotHj_[k], kTH);
+    }
+  }
+  const double dotR = dot(n, geom.r);
+  p.zeroReflected = shortcut.zeroReflection && dotR >= -1.0 && dotR <= 1.0;
+  if (!p.zeroReflected) p.cosReflected = cosDeg(acosDeg(dotR));
   p.cosZero = cosDeg(0.0);
+  p.transmissivity = std::pow(tT, sT);
+  p.zeroTransmitted = shortcut.zeroTransmission && std::isfinite(p.transmissivity);
   return p;
 }
 
 HallTerms hallTermsPrepared1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
-                                double iST, double fDR, double tT, double sT,
-                                const HallPrepared& prepared, std::span<const HallLight> lights,
-                                const Rgb& ambient) {
+                                double iST, double fDR, const HallPrepared& prepared,
+                                std::span<const HallLight> lights, const Rgb& ambient) {
   const auto lam = static_cast<std::size_t>(lambda);
   double a = 0.0;
   double b = 0.0;
@@ -95,29 +139,37 @@ HallTerms hallTermsPrepared1991(int lambda, double surfColor, double kDR, double
   for (int i = 0; i < prepared.count; ++i) {
     const HallPrepared::Light& g = prepared.light[static_cast<std::size_t>(i)];
     const double iL = lights[static_cast<std::size_t>(i)].intensity[lam];
-    a += iL * fsrFromCos1991(surfColor, iL, g.cosHj) * g.powHj;
-    b += iL * (1.0 - fsrFromCos1991(surfColor, iL, g.cosHj_)) * g.powHj_;  // FST
+    if (!prepared.zeroSpecularReflection)
+      a += iL * fsrFromCos1991(surfColor, iL, g.cosHj) * g.powHj;
+    if (!prepared.zeroSpecularTransmission)
+      b += iL * (1.0 - fsrFromCos1991(surfColor, iL, g.cosHj_)) * g.powHj_;  // FST
     c += iL * g.vD;
     d += iL * -g.vD;
   }
   const double ia = ambient[lam];
   HallTerms t;
-  t.specularReflection = kSR * a;
-  t.specularTransmission = kST * b;
+  t.specularReflection = prepared.zeroSpecularReflection ? 0.0 : kSR * a;
+  t.specularTransmission = prepared.zeroSpecularTransmission ? 0.0 : kST * b;
   t.diffuseReflection = kDR * fDR * (ia + c);
   t.diffuseTransmission = kDT * fDT * (ia + d);
-  t.reflected = kSR * iSR * fsrFromCos1991(surfColor, ia, prepared.cosReflected);
+  t.reflected = prepared.zeroReflected
+                    ? 0.0
+                    : kSR * iSR * fsrFromCos1991(surfColor, ia, prepared.cosReflected);
   // E17/Q8: `FST(surfColor,IA[lambda],0.0) * pow(tT,sT)`.
-  t.transmitted = kST * iST * (1.0 - fsrFromCos1991(surfColor, ia, prepared.cosZero)) * std::pow(tT, sT);
+  t.transmitted = prepared.zeroTransmitted
+                      ? 0.0
+                      : kST * iST * (1.0 - fsrFromCos1991(surfColor, ia, prepared.cosZero)) *
+                            prepared.transmissivity;
   return t;
 }
 
-HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR, double iST,
-                        double fDR, double tT, double sT, double kRH, double kTH, double indx,
-                        const HallGeometry& geom, std::span<const HallLight> lights,
+HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                        double iST, double fDR, double tT, double sT, double kRH, double kTH,
+                        double indx, const HallGeometry& geom, std::span<const HallLight> lights,
                         const Rgb& ambient) {
-  return hallTermsPrepared1991(lambda, surfColor, kDR, kDT, iSR, iST, fDR, tT, sT,
-                               prepareHall1991(geom, lights, indx, kRH, kTH), lights, ambient);
+  return hallTermsPrepared1991(lambda, surfColor, kDR, kDT, iSR, iST, fDR,
+                               prepareHall1991(geom, lights, indx, kRH, kTH, tT, sT), lights,
+                               ambient);
 }
 
 double processWavelength1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
@@ -131,23 +183,31 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 
 std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
                                           const Rgb& iST, double sT, const HallGeometry& geom,
-                                          std::span<const HallLight> lights, const Rgb& ambient) {
+                                          std::span<const HallLight> lights, const Rgb& ambient,
+                                          bool skipZeroTerms) {
   // The per-light vectors, dot products, angles and powers do not depend on
   // the wavelength: computed once per hit (the listing did it per channel).
-  const HallPrepared prepared = prepareHall1991(geom, lights, hue.indx, hue.kRH, hue.kTH);
+  HallShortcut shortcut;
+  if (skipZeroTerms && hallInputsBounded(surfColor, iSR, iST, lights, ambient)) {
+    shortcut.zeroReflection = 1.0 - hue.kDR == 0.0;
+    shortcut.zeroTransmission = 1.0 - hue.kDT == 0.0;
+  }
+  const HallPrepared prepared =
+      prepareHall1991(geom, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, sT, shortcut);
   std::array<HallTerms, 3> terms;
   for (int i = 0; i < 3; i++) {
     const auto k = static_cast<std::size_t>(i);
     terms[k] = hallTermsPrepared1991(i, surfColor[k], hue.kDR, hue.kDT, iSR[k], iST[k], hue.fDR[k],
-                                     hue.tT, sT, prepared, lights, ambient);
+                                     prepared, lights, ambient);
   }
   return terms;
 }
 
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient) {
-  const auto terms = hallTermsRgb1991(hue, surfColor, iSR, iST, sT, geom, lights, ambient);
+                     const Rgb& ambient, bool skipZeroTerms) {
+  const auto terms =
+      hallTermsRgb1991(hue, surfColor, iSR, iST, sT, geom, lights, ambient, skipZeroTerms);
   Rgb color{};
   for (std::size_t k = 0; k < 3; k++) {
     color[k] = terms[k].sum();

@@ -78,9 +78,21 @@ struct HallTerms {
   }
 };
 
+// Terms whose coefficient is exactly 0 (kSR = 1 - kDR = 0, kST = 1 - kDT = 0)
+// may be set to 0 without computing their transcendental factors, but only
+// where those factors are provably finite: 0 * x is 0 for finite x and NaN
+// for NaN or infinite x, and a NaN must still reach the pixel as in the
+// listing. The sign of such a zero term may differ (0 * -x is -0); no output
+// can show it (every later use of a colour is a sum, a product or a
+// comparison). Off = the listing's arithmetic, every term computed.
+struct HallShortcut {
+  bool zeroReflection = false;    // kSR == 0: specular-reflection and reflected terms
+  bool zeroTransmission = false;  // kST == 0: specular-transmission and transmitted terms
+};
+
 // The channel-independent part of ProcessWavelength for one hit: per light,
 // Cos(ACos(N.Hj)) and Cos(ACos(N.Hj')) as FSR/FST see them, (N.Hj)^kRH,
-// (N.Hj')^kTH and N.L; and the reflected ray's Cos(ACos(N.R)). Identical
+// (N.Hj')^kTH and N.L; the reflected ray's Cos(ACos(N.R)); tT^sT. Identical
 // values to computing them per channel, as the listing did.
 struct HallPrepared {
   struct Light {
@@ -88,21 +100,31 @@ struct HallPrepared {
   };
   std::array<Light, 10> light{};  // Global.c: Light light[10]
   int count = 0;
-  double cosReflected = 0, cosZero = 1;
+  double cosReflected = 0, cosZero = 1, transmissivity = 1;  // transmissivity = pow(tT, sT)
+  // Set by a HallShortcut: the term is exactly 0 and its factors were not computed.
+  bool zeroSpecularReflection = false, zeroSpecularTransmission = false;
+  bool zeroReflected = false, zeroTransmitted = false;
 };
 
+// `shortcut` asks for zero terms (see HallShortcut); the caller must also
+// have checked hallInputsBounded for the hit.
 HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight> lights,
-                             double indx, double kRH, double kTH);
+                             double indx, double kRH, double kTH, double tT, double sT,
+                             HallShortcut shortcut = {});
 HallTerms hallTermsPrepared1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
-                                double iST, double fDR, double tT, double sT,
-                                const HallPrepared& prepared, std::span<const HallLight> lights,
-                                const Rgb& ambient);
+                                double iST, double fDR, const HallPrepared& prepared,
+                                std::span<const HallLight> lights, const Rgb& ambient);
+// True when every colour, intensity and ambient value is finite and at most
+// 1e100 in magnitude: then no product or sum of Hall's terms can overflow,
+// and a term is finite exactly when its cosines and powers are.
+bool hallInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
+                       std::span<const HallLight> lights, const Rgb& ambient);
 // FSR with the angle's cosine already taken (FSR computes Cos(ang) first).
 double fsrFromCos1991(double surfColor, double iL, double cosAng);
 
-HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR, double iST,
-                        double fDR, double tT, double sT, double kRH, double kTH, double indx,
-                        const HallGeometry& geom, std::span<const HallLight> lights,
+HallTerms hallTerms1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
+                        double iST, double fDR, double tT, double sT, double kRH, double kTH,
+                        double indx, const HallGeometry& geom, std::span<const HallLight> lights,
                         const Rgb& ambient);
 
 // ProcessWavelength, lines 4000-4076, as repaired by E16 (vD is a double)
@@ -115,13 +137,16 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 
 // ProcessColor, lines 4178-4210: the three channels; values >= 1.0 become
 // 0.999999; negatives and NaN are NOT clamped (K15).
+// `skipZeroTerms`: the HallShortcut for the hue's zero coefficients (same
+// pixels; see HallShortcut).
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient);
+                     const Rgb& ambient, bool skipZeroTerms = false);
 
 // The terms of all three channels (before ProcessColor's clamp).
 std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
                                           const Rgb& iST, double sT, const HallGeometry& geom,
-                                          std::span<const HallLight> lights, const Rgb& ambient);
+                                          std::span<const HallLight> lights, const Rgb& ambient,
+                                          bool skipZeroTerms = false);
 
 }  // namespace prime

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "src/geom/primitives_1991.h"
-#include "src/math/listing_math.h"
 #include "src/geom/uv_mapping_1991.h"
+#include "src/math/listing_math.h"
 #include "src/render/texture_lookup.h"
 
 namespace prime {
@@ -30,16 +30,17 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
   const bool hit = boundHit1991(b.type, transformRay(ray, b.inverse));
   if (probe)
     probe->add(depth, "bound",
-               "object " + std::to_string(obj.number) + ": bounding " + io::primTypeName(b.type) + " (prim " +
-                   std::to_string(obj.boundPrim) + ") " + (hit ? "hit" : "missed: object skipped"),
-               "{\"object\":" + std::to_string(obj.number) + ",\"boundPrim\":" + std::to_string(obj.boundPrim) +
-                   ",\"hit\":" + (hit ? "true" : "false") + "}");
+               "object " + std::to_string(obj.number) + ": bounding " + io::primTypeName(b.type) +
+                   " (prim " + std::to_string(obj.boundPrim) + ") " +
+                   (hit ? "hit" : "missed: object skipped"),
+               "{\"object\":" + std::to_string(obj.number) + ",\"boundPrim\":" +
+                   std::to_string(obj.boundPrim) + ",\"hit\":" + (hit ? "true" : "false") + "}");
   return hit;
 }
 
 // IntersectObj's CSG(): the object's Roth list for `ray`.
-TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
-                             int depth) const {
+TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats,
+                             Probe* probe, int depth) const {
   ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
   const Vec3 inv{1.0 / ray.d[0], 1.0 / ray.d[1], 1.0 / ray.d[2]};
@@ -52,15 +53,17 @@ TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats&
     PrimHit hit;
     const bool ok = intersectPrimitive1991(p.type, transformRay(ray, p.inverse), hit);
     if (probe) {
-      std::string text = "object " + std::to_string(obj.number) + " prim " + std::to_string(primNum) + " (" +
-                         io::primTypeName(p.type) + "): ";
-      text += ok ? "in " + fmt(hit.tIn) + " n " + fmt(hit.nIn) + ", out " + fmt(hit.tOut) + " n " + fmt(hit.nOut)
+      std::string text = "object " + std::to_string(obj.number) + " prim " +
+                         std::to_string(primNum) + " (" + io::primTypeName(p.type) + "): ";
+      text += ok ? "in " + fmt(hit.tIn) + " n " + fmt(hit.nIn) + ", out " + fmt(hit.tOut) + " n " +
+                       fmt(hit.nOut)
                  : "miss";
       probe->add(depth, "primitive", text,
-                 "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(primNum) +
-                     ",\"type\":\"" + p.type + "\",\"hit\":" + (ok ? "true" : "false") +
-                     (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) + ",\"nIn\":" + json(hit.nIn) +
-                               ",\"nOut\":" + json(hit.nOut)
+                 "{\"object\":" + std::to_string(obj.number) +
+                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" + p.type +
+                     "\",\"hit\":" + (ok ? "true" : "false") +
+                     (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) +
+                               ",\"nIn\":" + json(hit.nIn) + ",\"nOut\":" + json(hit.nOut)
                          : std::string()) +
                      "}");
     }
@@ -72,11 +75,13 @@ TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats&
     list = csg1991(obj.entries, leaf, options_.csg);
   } catch (const CsgError& e) {
     // The original stopped with Error() here; name the object and the ray.
-    throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" + std::to_string(obj.number) +
-                             "), ray from " + fmt(ray.o) + " dir " + fmt(ray.d) + ": " + e.what());
+    throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
+                             std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
+                             fmt(ray.d) + ": " + e.what());
   }
   if (probe)
-    probe->add(depth, "csg", "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
+    probe->add(depth, "csg",
+               "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
                "{\"object\":" + std::to_string(obj.number) + ",\"list\":" + jsonList(list) + "}");
   return list;
 }
@@ -98,8 +103,9 @@ Ray Tracer1991::reflectedRay(const Ray& ray, double t, const Vec3& n) const {
 // TransmittedRay (6927-7012, K19, K5): refract in, walk through the whole
 // object (its CSG list, without the bound), reflect internally while the exit
 // is beyond the critical angle, refract out, step one unit on.
-Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
-                               double& distance, TraceStats& stats, Probe* probe, int depth) const {
+Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n,
+                               double indx, double& distance, TraceStats& stats, Probe* probe,
+                               int depth) const {
   Ray tr;
   distance = 0.0;
   const double indxInv = 1.0 / indx;
@@ -152,26 +158,36 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
     probe->add(depth, "transmit",
                "through object " + std::to_string(obj.number) + ": " + std::to_string(iterations) +
                    " internal step(s), distance " + fmt(distance) +
-                   (ok ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " + fmt(tr.o) +
-                   " dir " + fmt(tr.d),
-               "{\"object\":" + std::to_string(obj.number) + ",\"steps\":" + std::to_string(iterations) +
-                   ",\"distance\":" + json(distance) + ",\"exited\":" + (ok ? "true" : "false") +
-                   ",\"origin\":" + json(tr.o) + ",\"dir\":" + json(tr.d) + "}");
+                   (ok ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " +
+                   fmt(tr.o) + " dir " + fmt(tr.d),
+               "{\"object\":" + std::to_string(obj.number) +
+                   ",\"steps\":" + std::to_string(iterations) + ",\"distance\":" + json(distance) +
+                   ",\"exited\":" + (ok ? "true" : "false") + ",\"origin\":" + json(tr.o) +
+                   ",\"dir\":" + json(tr.d) + "}");
   return tr;
 }
 
-Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind, double weight) const {
+Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
+                        double weight) const {
   switch (kind) {
-    case RayKind::Primary: ++stats.primaryRays; break;
-    case RayKind::Reflected: ++stats.reflectedRays; break;
-    case RayKind::Transmitted: ++stats.transmittedRays; break;
+    case RayKind::Primary:
+      ++stats.primaryRays;
+      break;
+    case RayKind::Reflected:
+      ++stats.reflectedRays;
+      break;
+    case RayKind::Transmitted:
+      ++stats.transmittedRays;
+      break;
   }
   unitVector(ray.d, ray.d);  // E41
   if (probe)
-    probe->add(depth, "ray", std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
-                                 fmt(ray.o) + " dir " + fmt(ray.d),
-               "{\"kind\":\"" + std::string(rayKindName(kind)) + "\",\"depth\":" + std::to_string(depth) +
-                   ",\"origin\":" + json(ray.o) + ",\"dir\":" + json(ray.d) + "}");
+    probe->add(depth, "ray",
+               std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
+                   fmt(ray.o) + " dir " + fmt(ray.d),
+               "{\"kind\":\"" + std::string(rayKindName(kind)) +
+                   "\",\"depth\":" + std::to_string(depth) + ",\"origin\":" + json(ray.o) +
+                   ",\"dir\":" + json(ray.d) + "}");
 
   double nearest = kInfinity;
   Nearest best;
@@ -195,12 +211,14 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   if (options_.skipUnneededWork && !probe) {
     // Nearest boxes first; an object whose box starts beyond the nearest hit
     // cannot win (its list's t values all lie in its box).
-    bvh_.traverse(ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+    bvh_.traverse(
+        ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
   } else {
     for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }
   if (nearest == kInfinity) {
-    if (probe) probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");
+    if (probe)
+      probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");
     return {scene_.background[0], scene_.background[1], scene_.background[2]};
   }
   ++stats.hits;
@@ -227,21 +245,24 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     stats.failedTexelReads += counters.failedReads;
   }
   if (probe) {
-    probe->add(depth, "hit",
-               "nearest: object " + std::to_string(obj.number) + " prim " + std::to_string(best.prim) + " (" +
-                   io::primTypeName(prim.type) + ") at t " + fmt(nearest) + ", point " + fmt(surfPt) + ", local " +
-                   fmt(tmpV) + ", normal " + fmt(n) + " (" + (best.surfType ? "inside" : "outside") + " surface)",
-               "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(best.prim) +
-                   ",\"t\":" + json(nearest) + ",\"point\":" + json(surfPt) + ",\"local\":" + json(tmpV) +
-                   ",\"normal\":" + json(n) + ",\"surfType\":\"" + (best.surfType ? "In" : "Out") + "\"}");
+    probe->add(
+        depth, "hit",
+        "nearest: object " + std::to_string(obj.number) + " prim " + std::to_string(best.prim) +
+            " (" + io::primTypeName(prim.type) + ") at t " + fmt(nearest) + ", point " +
+            fmt(surfPt) + ", local " + fmt(tmpV) + ", normal " + fmt(n) + " (" +
+            (best.surfType ? "inside" : "outside") + " surface)",
+        "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(best.prim) +
+            ",\"t\":" + json(nearest) + ",\"point\":" + json(surfPt) + ",\"local\":" + json(tmpV) +
+            ",\"normal\":" + json(n) + ",\"surfType\":\"" + (best.surfType ? "In" : "Out") + "\"}");
     probe->add(depth, "texture",
                "u " + fmt(uv->u) + " v " + fmt(uv->v) + " surface " + std::to_string(uv->surface) +
-                   (uv->noFaceMatched ? " (no face matched: E44)" : "") + " -> map " + std::to_string(mapNum) +
-                   " (" + std::to_string(map.uScale) + "x" + std::to_string(map.vScale) + ") colour " +
+                   (uv->noFaceMatched ? " (no face matched: E44)" : "") + " -> map " +
+                   std::to_string(mapNum) + " (" + std::to_string(map.uScale) + "x" +
+                   std::to_string(map.vScale) + ") colour " +
                    fmt(Vec3{surfColor[0], surfColor[1], surfColor[2]}),
-               "{\"u\":" + json(uv->u) + ",\"v\":" + json(uv->v) + ",\"surface\":" + std::to_string(uv->surface) +
-                   ",\"map\":" + std::to_string(mapNum) + ",\"color\":" +
-                   json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
+               "{\"u\":" + json(uv->u) + ",\"v\":" + json(uv->v) + ",\"surface\":" +
+                   std::to_string(uv->surface) + ",\"map\":" + std::to_string(mapNum) +
+                   ",\"color\":" + json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
   }
 
   // kSR = 1 - kDR and kST = 1 - kDT weigh the reflected and transmitted
@@ -253,7 +274,8 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   const Ray reflected = reflectedRay(ray, nearest, n);  // its direction is a Hall input
   double sT = 0.0;
   Ray transmitted{surfPt, ray.d};  // unused by Hall (S13) when not traced
-  if (wantTransmitted) transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
+  if (wantTransmitted)
+    transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
   Rgb colorReflected{}, colorTransmitted{};
   if (depth++ < options_.maxDepth) {  // K20
     double wR = weight, wT = weight;
@@ -274,37 +296,46 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
       colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted, wT);
   }
   const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
-                    obj.hue.tT,  obj.hue.kRH, obj.hue.kTH, obj.hue.indx};
+                    obj.hue.tT,  obj.hue.kRH, obj.hue.kTH,
+                    obj.hue.indx};
   const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
-  const Rgb color = processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
-                                     {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+  const Rgb color =
+      processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                       {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]}, skip);
   if (probe) {
-    const auto terms = hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
-                                        {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+    const auto terms =
+        hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                         {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
     static const char* kChannel[3] = {"R", "G", "B"};
     std::string jsonTerms = "[";
     for (int c = 0; c < 3; ++c) {
       const HallTerms& t = terms[c];
       probe->add(depth - 1, "hall",
-                 std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) + " + specular trans " +
-                     fmt(t.specularTransmission) + " + diffuse refl " + fmt(t.diffuseReflection) +
-                     " + diffuse trans " + fmt(t.diffuseTransmission) + " + reflected " + fmt(t.reflected) +
-                     " + transmitted " + fmt(t.transmitted) + " = " + fmt(t.sum()),
-                 "{\"channel\":\"" + std::string(kChannel[c]) + "\",\"specularReflection\":" +
-                     json(t.specularReflection) + ",\"specularTransmission\":" + json(t.specularTransmission) +
-                     ",\"diffuseReflection\":" + json(t.diffuseReflection) + ",\"diffuseTransmission\":" +
-                     json(t.diffuseTransmission) + ",\"reflected\":" + json(t.reflected) +
+                 std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) +
+                     " + specular trans " + fmt(t.specularTransmission) + " + diffuse refl " +
+                     fmt(t.diffuseReflection) + " + diffuse trans " + fmt(t.diffuseTransmission) +
+                     " + reflected " + fmt(t.reflected) + " + transmitted " + fmt(t.transmitted) +
+                     " = " + fmt(t.sum()),
+                 "{\"channel\":\"" + std::string(kChannel[c]) +
+                     "\",\"specularReflection\":" + json(t.specularReflection) +
+                     ",\"specularTransmission\":" + json(t.specularTransmission) +
+                     ",\"diffuseReflection\":" + json(t.diffuseReflection) +
+                     ",\"diffuseTransmission\":" + json(t.diffuseTransmission) +
+                     ",\"reflected\":" + json(t.reflected) +
                      ",\"transmitted\":" + json(t.transmitted) + ",\"sum\":" + json(t.sum()) + "}");
     }
   }
   if (probe)
-    probe->add(depth - 1, "shade",
-               "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
-                   ", transmitted " + fmt(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
-                   ", sT " + fmt(sT) + " -> colour " + fmt(Vec3{color[0], color[1], color[2]}),
-               "{\"reflected\":" + json(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
-                   ",\"transmitted\":" + json(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
-                   ",\"sT\":" + json(sT) + ",\"color\":" + json(Vec3{color[0], color[1], color[2]}) + "}");
+    probe->add(
+        depth - 1, "shade",
+        "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+            ", transmitted " +
+            fmt(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) + ", sT " +
+            fmt(sT) + " -> colour " + fmt(Vec3{color[0], color[1], color[2]}),
+        "{\"reflected\":" + json(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+            ",\"transmitted\":" +
+            json(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
+            ",\"sT\":" + json(sT) + ",\"color\":" + json(Vec3{color[0], color[1], color[2]}) + "}");
   return color;
 }
 

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -228,6 +229,115 @@ TEST(HallProcessWavelength, DomainErrorsGiveNaN) {
   // K13: indx 1 -> Hj_ is NaN -> b is NaN -> the sum is NaN even with kST 0.
   const HallHue one{0.5, 1.0, {0.8, 0.8, 0.8}, 0.9, 1.0, 1.0, 1.0};
   EXPECT_TRUE(std::isnan(pw(0, 0.5, one, 0, 0, 0, headOn(), lights, {0.2, 0.2, 0.2})));
+}
+
+// ----------------------------------------------- zero terms skipped (issue 6)
+
+// Same value, or both NaN; +0 and -0 count as the same (see HallShortcut).
+bool sameColour(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+TEST(HallShortcut, TakenWhenTheFactorsAreFiniteAndSameColours) {
+  // kDR = kDT = 1 (kSR = kST = 0), integer exponents, a light in front: every
+  // N.H is in [-1, 1] and the powers are finite, so all four terms are zero.
+  const HallHue hue{1.0, 1.0, {0.8, 0.6, 0.4}, 0.9, 10.0, 3.0, 1.5};
+  const std::vector<HallLight> lights = {{{3, -2, -10}, {0.7, 0.8, 0.9}},
+                                         {{-5, 4, -8}, {0.3, 0.2, 0.1}}};
+  const Rgb ia = {0.2, 0.3, 0.4};
+  HallGeometry g = headOn();
+  g.pt = {0.25, -0.5, 0.0};
+  const HallPrepared p =
+      prepareHall1991(g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0, {true, true});
+  EXPECT_TRUE(p.zeroSpecularReflection);
+  EXPECT_TRUE(p.zeroSpecularTransmission);
+  EXPECT_TRUE(p.zeroReflected);
+  EXPECT_TRUE(p.zeroTransmitted);
+  const Rgb full =
+      processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights, ia, false);
+  const Rgb fast =
+      processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights, ia, true);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_TRUE(sameColour(full[k], fast[k])) << k << ": " << full[k] << " " << fast[k];
+  // The diffuse terms are all that is left. By hand for channel 0, with
+  // c = sum I*N.L and N.L = -l_z/|l| (n = -z, l = pt - light, K10):
+  // kDR*fDR*(IA + c) + kDT*fDT*(IA - c) = 0.8*(0.2 + c) + 0.2*(0.2 - c).
+  const double nl1 = -10.0 / std::sqrt(2.75 * 2.75 + 1.5 * 1.5 + 100.0);
+  const double nl2 = -8.0 / std::sqrt(5.25 * 5.25 + 4.5 * 4.5 + 64.0);
+  const double c = 0.7 * nl1 + 0.3 * nl2;
+  EXPECT_NEAR(full[0], 0.8 * (0.2 + c) + 0.2 * (0.2 - c), 1e-12);
+}
+
+TEST(HallShortcut, NotTakenWhereTheListingGetsNaN) {
+  // kSR = 0 but pow(N.Hj, 1.5) with N.Hj = -1 is NaN (K10): 0 * NaN = NaN,
+  // so the term must be computed and the colour stays NaN.
+  const HallHue hue{1.0, 1.0, {0.8, 0.8, 0.8}, 0.9, 1.5, 2.0, 2.0};
+  const std::vector<HallLight> lights = {{{0, 0, -10}, {1.0, 1.0, 1.0}}};
+  const HallPrepared p =
+      prepareHall1991(headOn(), lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0, {true, true});
+  EXPECT_FALSE(p.zeroSpecularReflection);
+  EXPECT_TRUE(
+      p.zeroSpecularTransmission);  // kTH = 2: an integer power of a negative base is finite
+  const Rgb fast = processColor1991(hue, {0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, 0.0, headOn(),
+                                    lights, {0.2, 0.2, 0.2}, true);
+  EXPECT_TRUE(std::isnan(fast[0]));
+  // K13: indx 1 makes Hj_ NaN: the transmission shortcut is refused too.
+  const HallPrepared q = prepareHall1991(headOn(), lights, 1.0, 2.0, 2.0, 0.9, 0.0, {true, true});
+  EXPECT_FALSE(q.zeroSpecularTransmission);
+  EXPECT_TRUE(q.zeroSpecularReflection);
+  // An unbounded input (an infinite reflected colour) switches the shortcut off.
+  EXPECT_FALSE(hallInputsBounded({0.5, 0.5, 0.5}, {std::numeric_limits<double>::infinity(), 0, 0},
+                                 {0, 0, 0}, lights, {0.2, 0.2, 0.2}));
+  EXPECT_TRUE(hallInputsBounded({0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, lights, {0.2, 0.2, 0.2}));
+}
+
+TEST(HallShortcut, RandomHitsGiveTheListingsColours) {
+  // Random geometry, coefficients (half of them with kSR or kST exactly 0),
+  // exponents (integer and not), indices (including 1), colours and
+  // lights: the colour with the shortcut equals the listing's, NaN for NaN.
+  std::uint64_t state = 1991;
+  auto rnd = [&] {  // xorshift64*: a fixed sequence on every platform
+    state ^= state >> 12;
+    state ^= state << 25;
+    state ^= state >> 27;
+    return static_cast<double>((state * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
+  };
+  auto unit = [&] {
+    Vec3 v{rnd() * 2 - 1, rnd() * 2 - 1, rnd() * 2 - 1};
+    unitVector(v, v);
+    return v;
+  };
+  int shortcuts = 0, nans = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double exps[] = {0.0, 1.0, 2.0, 7.0, 0.5, 2.5, 40.0};
+    const HallHue hue{rnd() < 0.5 ? 1.0 : rnd(),
+                      rnd() < 0.5 ? 1.0 : rnd(),
+                      {rnd(), rnd(), rnd()},
+                      rnd(),
+                      exps[trial % 7],
+                      exps[(trial / 7) % 7],
+                      trial % 11 == 0 ? 1.0 : 1.0 + rnd()};
+    HallGeometry g;
+    g.pt = {rnd() * 10, rnd() * 10, rnd() * 10};
+    g.v = unit();
+    g.n = trial % 5 == 0 ? g.v : unit();  // n == v: N.H can round past 1
+    g.r = trial % 3 == 0 ? g.n : unit();
+    std::vector<HallLight> lights;
+    for (int i = 0, n = 1 + trial % 4; i < n; ++i)
+      lights.push_back({{rnd() * 40 - 20, rnd() * 40 - 20, -20}, {rnd(), rnd(), rnd()}});
+    const Rgb surf{rnd(), trial % 13 == 0 ? 0.0 : rnd(), rnd()}, ia{rnd(), rnd(), rnd()};
+    const double sT = trial % 2 ? 0.0 : rnd() * 5;
+    const Rgb full = processColor1991(hue, surf, {0, 0, 0}, {0, 0, 0}, sT, g, lights, ia, false);
+    const Rgb fast = processColor1991(hue, surf, {0, 0, 0}, {0, 0, 0}, sT, g, lights, ia, true);
+    for (int k = 0; k < 3; ++k)
+      ASSERT_TRUE(sameColour(full[k], fast[k])) << "trial " << trial << " channel " << k;
+    nans += std::isnan(full[0]);
+    const HallPrepared p = prepareHall1991(g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, sT,
+                                           {1.0 - hue.kDR == 0.0, 1.0 - hue.kDT == 0.0});
+    shortcuts += p.zeroSpecularReflection + p.zeroSpecularTransmission;
+  }
+  EXPECT_GT(shortcuts, 5000);  // the shortcut is taken often ...
+  EXPECT_GT(nans, 100);        // ... and the NaN cases were met
 }
 
 }  // namespace
