@@ -74,10 +74,12 @@ void printSummary(const RenderResult& r, const std::string& out) {
               static_cast<unsigned long long>(s.transmittedRays),
               r.seconds > 0 ? s.rays() / r.seconds : 0.0);
   std::printf(
-      "tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu\n",
+      "tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu; primary rays that "
+      "could meet no object box (background, not traced) %llu\n",
       static_cast<unsigned long long>(s.boundTests), static_cast<unsigned long long>(s.objectTests),
       static_cast<unsigned long long>(s.primitiveTests), static_cast<unsigned long long>(s.hits),
-      static_cast<unsigned long long>(s.totalInternalReflections));
+      static_cast<unsigned long long>(s.totalInternalReflections),
+      static_cast<unsigned long long>(s.maskedPrimaryRays));
   std::printf(
       "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 failed "
       "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",

@@ -333,8 +333,11 @@ void checkIndex(int index, std::size_t count) {
 // One activation of the listing's recursive CSG(): the entry, how far the
 // evaluation has got, and the left operand once it is known.
 struct Frame {
+  // A constructor, not aggregate initialisation: GCC zero-fills an aggregate
+  // temporary (the 400-byte inline list) before copying it onto the stack.
+  explicit Frame(int e) noexcept : entry(e) {}
   int entry;
-  int stage;  // 0: start; 1: left subtree done; 2: right subtree done
+  int stage = 0;  // 0: start; 1: left subtree done; 2: right subtree done
   TList left;
 };
 
@@ -366,7 +369,7 @@ TList csg1991(std::span<const CsgEntry> entries, LeafFn leaf, const Csg1991Optio
       throw CsgError(CsgError::Kind::kTooManyVisits, "CSG(): more than " +
                                                          std::to_string(options.maxVisits) +
                                                          " tree entries visited (shared subtrees)");
-    stack.push_back(Frame{entry, 0, TList{}});
+    stack.emplace_back(entry);
   };
 
   push(root);

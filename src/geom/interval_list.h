@@ -57,7 +57,9 @@ class SmallVec {
   using iterator = T*;
   using const_iterator = const T*;
 
-  SmallVec() noexcept = default;
+  // User-provided, so value-initialisation (`TList{}`) does not zero the
+  // inline buffer first: a CSG walk creates one per tree entry.
+  SmallVec() noexcept {}  // NOLINT(modernize-use-equals-default)
   SmallVec(std::initializer_list<T> init) {
     reserve(init.size());
     std::uninitialized_copy(init.begin(), init.end(), data_);
@@ -173,7 +175,7 @@ class TList {
  public:
   static constexpr std::size_t kInlineNodes = 8;  // 4 pairs without heap use
 
-  TList() noexcept = default;
+  TList() noexcept {}  // NOLINT(modernize-use-equals-default): see SmallVec()
   TList(std::initializer_list<TNode> nodes) : nodes_(nodes) {}
 
   // AddToTList (7888-7912, E56) onto an empty list: [tIn (Out, nIn), tOut (In, nOut)].

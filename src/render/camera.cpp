@@ -6,7 +6,9 @@
 namespace prime {
 
 // SetScrCoordsX/Y: (int)(normalised * (getmax + 1)).
-static int scr(double normalised, int size) { return static_cast<int>(normalised * static_cast<double>(size)); }
+static int scr(double normalised, int size) {
+  return static_cast<int>(normalised * static_cast<double>(size));
+}
 
 ListingCamera::ListingCamera(const CameraSettings& s) : s_(s) {
   left_ = scr(s.xMin, s.screenWidth);
@@ -14,10 +16,11 @@ ListingCamera::ListingCamera(const CameraSettings& s) : s_(s) {
   numPixAcross_ = scr(s.xMax, s.screenWidth) - left_;
   numPixDown_ = scr(s.yMax, s.screenHeight) - top_;
   if (numPixAcross_ <= 0 || numPixDown_ <= 0 || numPixAcross_ > 32767 || numPixDown_ > 32767)
-    throw std::invalid_argument("viewport " + std::to_string(s.xMin) + "," + std::to_string(s.yMin) + " .. " +
-                                std::to_string(s.xMax) + "," + std::to_string(s.yMax) + " on a " +
-                                std::to_string(s.screenWidth) + "x" + std::to_string(s.screenHeight) +
-                                " screen gives " + std::to_string(numPixAcross_) + " x " +
+    throw std::invalid_argument("viewport " + std::to_string(s.xMin) + "," +
+                                std::to_string(s.yMin) + " .. " + std::to_string(s.xMax) + "," +
+                                std::to_string(s.yMax) + " on a " + std::to_string(s.screenWidth) +
+                                "x" + std::to_string(s.screenHeight) + " screen gives " +
+                                std::to_string(numPixAcross_) + " x " +
                                 std::to_string(numPixDown_) + " pixel steps; need at least 1 x 1");
   Vec3 stepAcross{}, stepDown{};
   for (int i = 0; i < 3; ++i) {

@@ -17,8 +17,8 @@ namespace prime {
 
 struct CameraSettings {
   Vec3 eye{500.0, 500.0, -1500.0};
-  Vec3 windowLeft{0.0, 1000.0, 0.0};     // WLX, WLY, WLZ
-  Vec3 windowRight{1000.0, 1000.0, 0.0};  // WRX, WRY, WRZ
+  Vec3 windowLeft{0.0, 1000.0, 0.0};                       // WLX, WLY, WLZ
+  Vec3 windowRight{1000.0, 1000.0, 0.0};                   // WRX, WRY, WRZ
   double xMin = 0.66, yMin = 0.0, xMax = 1.0, yMax = 1.0;  // AssignScrPts
   int screenWidth = 1024, screenHeight = 768;              // getmaxx()+1, getmaxy()+1
 };

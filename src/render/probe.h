@@ -17,7 +17,8 @@ const char* rayKindName(RayKind k);
 
 struct ProbeEvent {
   int depth = 0;
-  std::string kind;  // "ray", "bound", "primitive", "csg", "object", "hit", "texture", "transmit", "shade", "miss"
+  std::string kind;  // "ray", "bound", "primitive", "csg", "object", "hit", "texture", "transmit",
+                     // "shade", "miss"
   std::string text;  // human-readable one-liner
   std::string json;  // the same as a JSON object
 };

@@ -5,17 +5,20 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "palette/color_num.h"
+#include "src/render/primary_mask.h"
 #include "src/render/tracer_modern.h"
 
 namespace prime {
 
 int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& stats) {
   ColorNumCounters counters;
-  const int index = settings.mapping == ColorMapping::Plate3 ? colorNumPlate3(color, &counters)
-                                                             : colorNum(color, settings.graphType, &counters);
+  const int index = settings.mapping == ColorMapping::Plate3
+                        ? colorNumPlate3(color, &counters)
+                        : colorNum(color, settings.graphType, &counters);
   stats.nanColours += counters.nanColours;
   stats.indicesOutOfRange += counters.outOfRange;
   return index;
@@ -47,8 +50,8 @@ double spread(const Rgb* c, int n) {
 // Whitted's adaptive supersampling over the square centred at (fx, fy) with
 // half-width h, in pixel steps.
 template <class Tracer>
-Rgb adaptive(const Tracer& tracer, const ListingCamera& camera, int i, int j, double fx, double fy, double h,
-             int level, const Sampling& s, TraceStats& stats) {
+Rgb adaptive(const Tracer& tracer, const ListingCamera& camera, int i, int j, double fx, double fy,
+             double h, int level, const Sampling& s, TraceStats& stats) {
   Rgb c[5];
   const double off[5][2] = {{0, 0}, {-h, -h}, {h, -h}, {-h, h}, {h, h}};
   for (int k = 0; k < 5; ++k)
@@ -56,40 +59,71 @@ Rgb adaptive(const Tracer& tracer, const ListingCamera& camera, int i, int j, do
   if (level >= s.maxLevel || !(spread(c, 5) > s.tolerance)) return average(c, 5);
   Rgb q[4];
   for (int k = 0; k < 4; ++k)
-    q[k] = adaptive(tracer, camera, i, j, fx + off[k + 1][0] / 2, fy + off[k + 1][1] / 2, h / 2, level + 1, s, stats);
+    q[k] = adaptive(tracer, camera, i, j, fx + off[k + 1][0] / 2, fy + off[k + 1][1] / 2, h / 2,
+                    level + 1, s, stats);
   return average(q, 4);
 }
+
+// A tracer for one pixel's primary rays; when the primary-ray mask says no
+// ray of the pixel can meet an object box, each ray is what castRay returns
+// for a ray that meets nothing (counted, background), without tracing it.
+template <class Tracer>
+struct PixelTracer {
+  const Tracer& tracer;
+  bool certainMiss;
+  Rgb castRay(const Ray& ray, int depth, TraceStats& stats) const {
+    if (!certainMiss) return tracer.castRay(ray, depth, stats);
+    ++stats.primaryRays;
+    ++stats.maskedPrimaryRays;
+    const auto& b = tracer.scene().background;
+    return {b[0], b[1], b[2]};
+  }
+};
 
 template <class Tracer>
 Rgb pixelColour(const Tracer& tracer, const ListingCamera& camera, int i, int j, const Sampling& s,
                 TraceStats& stats) {
   switch (s.mode) {
-    case Sampling::Mode::Single: return tracer.castRay(camera.primaryRay(i, j), 0, stats);
+    case Sampling::Mode::Single:
+      return tracer.castRay(camera.primaryRay(i, j), 0, stats);
     case Sampling::Mode::Grid: {
       Rgb sum{};
       const int n = std::max(1, s.gridN);
       for (int a = 0; a < n; ++a)
         for (int b = 0; b < n; ++b) {
-          const Rgb c = tracer.castRay(camera.sampleRay(i, j, (b + 0.5) / n - 0.5, (a + 0.5) / n - 0.5), 0, stats);
+          const Rgb c = tracer.castRay(
+              camera.sampleRay(i, j, (b + 0.5) / n - 0.5, (a + 0.5) / n - 0.5), 0, stats);
           for (int k = 0; k < 3; ++k) sum[k] += c[k];
         }
       for (auto& v : sum) v /= n * n;
       return sum;
     }
-    case Sampling::Mode::Adaptive: return adaptive(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, s, stats);
+    case Sampling::Mode::Adaptive:
+      return adaptive(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, s, stats);
   }
   return {};
 }
 
 }  // namespace
 
-RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderCallbacks& callbacks) {
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const RenderCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
   const ListingCamera camera(settings.camera);
-  // Both profiles are built (cheap); the one the settings choose traces.
-  const Tracer1991 tracer1991(scene, settings.trace);
-  const TracerModern tracerModern(scene, settings.trace);
   const bool modern = settings.profile == Profile::Modern;
+  std::optional<Tracer1991> tracer1991;
+  std::optional<TracerModern> tracerModern;
+  if (modern)
+    tracerModern.emplace(scene, settings.trace);
+  else
+    tracer1991.emplace(scene, settings.trace);
+  // The 1991 profile tests boxes only when it skips work (else it searches
+  // obj/List linearly, as the listing did); the modern one always does.
+  std::optional<PrimaryRayMask> mask;
+  if (modern)
+    mask.emplace(camera, tracerModern->bvh().objectBoxes());
+  else if (settings.trace.skipUnneededWork)
+    mask.emplace(camera, tracer1991->bvh().objectBoxes());
   const int rows = camera.rows(), columns = camera.columns();
 
   RenderResult result;
@@ -100,14 +134,16 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
   result.graph.pixels.assign(static_cast<std::size_t>(rows) * columns, 0);
   result.rgb.assign(result.graph.pixels.size(), Rgb{});
 
-  int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::thread::hardware_concurrency());
+  int threads = settings.threads > 0 ? settings.threads
+                                     : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, rows));
   result.threads = threads;
 
   std::atomic<int> nextRow{0}, rowsDone{0};
   std::atomic<std::uint64_t> raysSoFar{0};
   std::mutex mutex;  // guards the shared counters, the finished-row queue and the first error
-  std::condition_variable wake;  // the last row is done, or an error: no need to sleep out the 200 ms
+  std::condition_variable
+      wake;  // the last row is done, or an error: no need to sleep out the 200 ms
   TraceStats total;
   std::vector<int> finished;
   std::exception_ptr error;
@@ -122,8 +158,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
       try {
         for (int j = 0; j < columns; ++j) {
           const std::size_t at = static_cast<std::size_t>(i) * columns + j;
-          const Rgb color = modern ? pixelColour(tracerModern, camera, i, j, settings.sampling, local)
-                                   : pixelColour(tracer1991, camera, i, j, settings.sampling, local);
+          const bool miss = mask && !mask->mayHit(i, j);
+          const Rgb color = modern ? pixelColour(PixelTracer<TracerModern>{*tracerModern, miss},
+                                                 camera, i, j, settings.sampling, local)
+                                   : pixelColour(PixelTracer<Tracer1991>{*tracer1991, miss}, camera,
+                                                 i, j, settings.sampling, local);
           result.rgb[at] = color;
           // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
           result.graph.pixels[at] = static_cast<std::int16_t>(paletteIndex(color, settings, local));
@@ -167,7 +206,9 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
       }
     if (callbacks.progress) callbacks.progress(rowsDone.load(), rows, raysSoFar.load());
   };
-  auto stop = [&] { return rowsDone.load() >= rows || error || (callbacks.abort && callbacks.abort->load()); };
+  auto stop = [&] {
+    return rowsDone.load() >= rows || error || (callbacks.abort && callbacks.abort->load());
+  };
   for (;;) {
     {
       std::unique_lock lock(mutex);

@@ -33,18 +33,18 @@ struct RenderSettings {
   CameraSettings camera;
   Sampling sampling;
   TraceOptions trace;
-  int threads = 0;   // 0: all cores
+  int threads = 0;    // 0: all cores
   int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
   ColorMapping mapping = ColorMapping::Listing;
 };
 
 struct RenderResult {
-  io::GraphFile graph;    // header 349 x 768 etc., (across+1) x (down+1) pixels
-  std::vector<Rgb> rgb;   // the unquantised colour of each pixel, same order
+  io::GraphFile graph;   // header 349 x 768 etc., (across+1) x (down+1) pixels
+  std::vector<Rgb> rgb;  // the unquantised colour of each pixel, same order
   TraceStats stats;
   double seconds = 0;
   int threads = 1;
-  bool aborted = false;   // stopped by `abort` before the last row
+  bool aborted = false;  // stopped by `abort` before the last row
 };
 
 struct RenderCallbacks {
@@ -55,7 +55,8 @@ struct RenderCallbacks {
   const std::atomic<bool>* abort = nullptr;
 };
 
-RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderCallbacks& callbacks = {});
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const RenderCallbacks& callbacks = {});
 
 // One pixel's index from its colour, as the settings map it.
 int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& stats);

@@ -10,6 +10,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   objectTests += o.objectTests;
   primitiveTests += o.primitiveTests;
   hits += o.hits;
+  maskedPrimaryRays += o.maskedPrimaryRays;
   totalInternalReflections += o.totalInternalReflections;
   emptyTransmitLists += o.emptyTransmitLists;
   cappedTirLoops += o.cappedTirLoops;

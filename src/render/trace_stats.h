@@ -9,6 +9,7 @@ struct TraceStats {
   std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0;
   std::uint64_t boundTests = 0, objectTests = 0, primitiveTests = 0;
   std::uint64_t hits = 0;
+  std::uint64_t maskedPrimaryRays = 0;   // primary rays answered by the mask (PrimaryRayMask), not traced
   std::uint64_t totalInternalReflections = 0;
   std::uint64_t emptyTransmitLists = 0;  // E46: CSG list empty in TransmittedRay
   std::uint64_t cappedTirLoops = 0;      // E59: TIR loop stopped at the cap

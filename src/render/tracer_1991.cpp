@@ -39,11 +39,10 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
 }
 
 // IntersectObj's CSG(): the object's Roth list for `ray`.
-TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats,
-                             Probe* probe, int depth) const {
+TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, const Vec3& inv,
+                             TraceStats& stats, Probe* probe, int depth) const {
   ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
-  const Vec3 inv{1.0 / ray.d[0], 1.0 / ray.d[1], 1.0 / ray.d[2]};
   auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
     // A ray that misses the primitive's (padded) box ahead cannot hit it.
     if (cull && bvh_.primBox(primNum).entry(ray, inv) == std::numeric_limits<double>::infinity())
@@ -71,14 +70,20 @@ TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, TraceStats&
     return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
   };
   TList list;
-  try {
-    list = csg1991(obj.entries, leaf, options_.csg);
-  } catch (const CsgError& e) {
-    // The original stopped with Error() here; name the object and the ray.
-    throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
-                             std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
-                             fmt(ray.d) + ": " + e.what());
-  }
+  if (obj.entries.size() == 1 && obj.entries[0].op == 'P') {
+    // A lone primitive: exactly what csg1991 returns for a one-entry tree
+    // (the leaf's pair, or nothing), without the walk.
+    if (const std::optional<PrimInterval> hit = leaf(obj.entries[0].l))
+      list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, obj.entries[0].l);
+  } else
+    try {
+      list = csg1991(obj.entries, leaf, options_.csg);
+    } catch (const CsgError& e) {
+      // The original stopped with Error() here; name the object and the ray.
+      throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
+                               std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
+                               fmt(ray.d) + ": " + e.what());
+    }
   if (probe)
     probe->add(depth, "csg",
                "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
@@ -119,7 +124,7 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
   TList list;
   int iterations = 0;
   while (!ok) {
-    list = objectList(obj, tr, stats, nullptr, depth);
+    list = objectList(obj, tr, reciprocal(tr.d), stats, nullptr, depth);
     if (list.size() < 2) {  // E46: the original read through a NULL list
       ++stats.emptyTransmitLists;
       break;
@@ -189,6 +194,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
                    "\",\"depth\":" + std::to_string(depth) + ",\"origin\":" + json(ray.o) +
                    ",\"dir\":" + json(ray.d) + "}");
 
+  const Vec3 inv = reciprocal(ray.d);  // for the box tests
   double nearest = kInfinity;
   Nearest best;
   // One object of obj/List: its bound, its CSG list, and the listing's
@@ -196,7 +202,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   auto consider = [&](int k) {
     const SceneObject& obj = scene_.objects[k];
     if (!hitsBound(obj, ray, stats, probe, depth)) return;
-    const TList list = objectList(obj, ray, stats, probe, depth);
+    const TList list = objectList(obj, ray, inv, stats, probe, depth);
     if (list.empty()) return;
     const double t = list.front().t;  // K30: the FIRST node, not the smallest
     if (t != 0.0 && (t < nearest || (t == nearest && k < best.obj))) {
@@ -212,7 +218,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     // Nearest boxes first; an object whose box starts beyond the nearest hit
     // cannot win (its list's t values all lie in its box).
     bvh_.traverse(
-        ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+        ray, inv, [&](int k, double) { consider(k); }, [&] { return nearest; });
   } else {
     for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }

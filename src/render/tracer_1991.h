@@ -23,9 +23,9 @@
 namespace prime {
 
 struct TraceOptions {
-  int maxDepth = 5;            // Define.h MaxDepth
-  int tirCap = 1000;           // E59: iterations of the TIR loop before giving up; 0 = no cap
-  Csg1991Options csg;          // Q4 alternative etc.
+  int maxDepth = 5;    // Define.h MaxDepth
+  int tirCap = 1000;   // E59: iterations of the TIR loop before giving up; 0 = no cap
+  Csg1991Options csg;  // Q4 alternative etc.
   // Skip work whose result the listing multiplies by zero or throws away:
   // no reflected ray where kSR = 1 - kDR = 0, no transmitted ray (nor the
   // walk through the object) where kST = 1 - kDT = 0, and Roth's early exit
@@ -50,13 +50,16 @@ class Tracer1991 {
               RayKind kind = RayKind::Primary, double weight = 1.0) const;
 
   const Scene& scene() const { return scene_; }
+  // The object boxes every ray is tested against first (the BVH's).
+  const ObjectBvh& bvh() const { return bvh_; }
 
   // ReflectedRay(ray, t, n): the reflected ray leaving the hit point ray.o + t*ray.d.
   Ray reflectedRay(const Ray& ray, double t, const Vec3& n) const;
   // TransmittedRay(ray, obj, t, n, indx, &distance): the ray after passing
   // through `obj`; `distance` receives sT, the path length inside.
   Ray transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n, double indx,
-                     double& distance, TraceStats& stats, Probe* probe = nullptr, int depth = 0) const;
+                     double& distance, TraceStats& stats, Probe* probe = nullptr,
+                     int depth = 0) const;
 
  private:
   struct Nearest {
@@ -64,8 +67,11 @@ class Tracer1991 {
     int obj = -1, prim = -1, surfType = 0;
     Vec3 norm{};
   };
-  bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
-  TList objectList(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe, int depth) const;
+  bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
+                 int depth) const;
+  // `inv` = reciprocal(ray.d), for the primitives' box tests.
+  TList objectList(const SceneObject& obj, const Ray& ray, const Vec3& inv, TraceStats& stats,
+                   Probe* probe, int depth) const;
 
   const Scene& scene_;
   TraceOptions options_;

@@ -14,15 +14,23 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;  // unit roundoff
 // pbrt's gamma(n) = n u / (1 - n u): the relative error bound of n roundings.
-constexpr double gamma(int n) { return (n * kEps) / (1 - n * kEps); }
+constexpr double gamma(int n) {
+  return (n * kEps) / (1 - n * kEps);
+}
 
-Vec3 absV(const Vec3& v) { return {std::abs(v[0]), std::abs(v[1]), std::abs(v[2])}; }
+Vec3 absV(const Vec3& v) {
+  return {std::abs(v[0]), std::abs(v[1]), std::abs(v[2])};
+}
 Vec3 unit(const Vec3& v) {
   const double l = std::sqrt(dot(v, v));
   return l > 0 ? v * (1.0 / l) : v;
 }
-double clamp1(double x) { return std::clamp(x, -1.0, 1.0); }
-double finiteOr0(double x) { return std::isfinite(x) ? x : 0.0; }
+double clamp1(double x) {
+  return std::clamp(x, -1.0, 1.0);
+}
+double finiteOr0(double x) {
+  return std::isfinite(x) ? x : 0.0;
+}
 
 // Normals transform by the inverse transpose: with row vectors p' = p M,
 // n' = n (M^-1)^T, i.e. n'[j] = sum_i n[i] inv[j][i].
@@ -96,8 +104,10 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
   if (dot(w, n) < 0) offset = -offset;
   Vec3 po = p + offset;
   for (int i = 0; i < 3; ++i) {  // round away from p so the offset survives rounding
-    if (offset[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
-    else if (offset[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+    if (offset[i] > 0)
+      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+    else if (offset[i] < 0)
+      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
   }
   return po;
 }
@@ -109,7 +119,8 @@ TracerModern::TracerModern(const Scene& scene, TraceOptions options)
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
 }
 
-TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const {
+TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
+                                    TraceStats& stats) const {
   ++stats.objectTests;
   auto leaf = [&](int primNum) -> std::optional<Interval> {
     ++stats.primitiveTests;
@@ -259,7 +270,8 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       break;  // sorted: the first node ahead is this object's nearest
     }
   };
-  bvh_.traverse(ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+  bvh_.traverse(
+      ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
   if (bestObj < 0) return false;
 
   surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
@@ -278,8 +290,8 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
 
 // Refract into the object at the hit, walk to where the ray leaves it
 // (reflecting internally while beyond the critical angle), refract out.
-Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
-                           TraceStats& stats) const {
+Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance,
+                           bool& through, TraceStats& stats) const {
   distance = 0.0;
   through = false;
   const SceneObject& obj = scene_.objects[hit.obj];
@@ -332,20 +344,29 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   return {};
 }
 
-Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind, double weight) const {
+Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
+                          double weight) const {
   switch (kind) {
-    case RayKind::Primary: ++stats.primaryRays; break;
-    case RayKind::Reflected: ++stats.reflectedRays; break;
-    case RayKind::Transmitted: ++stats.transmittedRays; break;
+    case RayKind::Primary:
+      ++stats.primaryRays;
+      break;
+    case RayKind::Reflected:
+      ++stats.reflectedRays;
+      break;
+    case RayKind::Transmitted:
+      ++stats.transmittedRays;
+      break;
   }
   ray.d = unit(ray.d);
   SurfaceHit hit;
-  if (!nearestHit(ray, hit, stats)) return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  if (!nearestHit(ray, hit, stats))
+    return {scene_.background[0], scene_.background[1], scene_.background[2]};
   ++stats.hits;
   const SceneObject& obj = scene_.objects[hit.obj];
   const ScenePrim& prim = scene_.prims[hit.prim];
   const auto uv = inverseMap1991(prim.type, hit.local);
-  const int surface = uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
+  const int surface =
+      uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
   const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
   Rgb surfColor{};
   for (int c = 0; c < 3; ++c)
@@ -381,10 +402,12 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind, d
       const double iL = light.intensity[c];
       const double nh = std::max(0.0, dot(n, hj));
       a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
-      if (h.indx != 1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
+      if (h.indx !=
+          1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
         const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
         const double nht = std::max(0.0, -dot(n, ht));
-        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) * std::pow(nht, std::max(0.0, h.kTH));
+        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
+             std::pow(nht, std::max(0.0, h.kTH));
       }
       cd += iL * std::max(0.0, nl);
       dd += iL * std::max(0.0, -nl);
@@ -392,9 +415,10 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind, d
     const double ia = scene_.ambient[c];
     const double fDR = h.fDR[c], fDT = 1.0 - fDR;
     const double cosR = clamp1(dot(n, refl));
-    const double sum = kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
-                       kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
-                       kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
+    const double sum =
+        kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
+        kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
+        kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
     if (!std::isfinite(sum)) ++stats.nanColours;
     color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
   }

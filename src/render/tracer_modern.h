@@ -27,7 +27,8 @@ struct SurfaceHit {
   int obj = -1, prim = -1;
   bool fromInsidePrim = false;  // the ray meets the primitive's surface from inside (inside map)
   bool exitsObject = false;     // the ray starts inside the object's solid and leaves it here
-  Vec3 point{}, local{}, normal{};  // world point, primitive-space point, unit normal facing the ray
+  Vec3 point{}, local{},
+      normal{};       // world point, primitive-space point, unit normal facing the ray
   Vec3 pointError{};  // bound on the point's distance from the exact surface, per axis
   // Every surface of the object's primitives that passes within the error
   // bound of `point` (the hit surface, and the other faces at an edge or a
@@ -41,13 +42,16 @@ class TracerModern {
  public:
   TracerModern(const Scene& scene, TraceOptions options = {});
 
-  Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary, double weight = 1.0) const;
+  Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary,
+              double weight = 1.0) const;
   // The nearest surface along the ray with t > 0, if any.
   bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const;
   // The object's solid along the whole line of `ray` (sorted intervals).
   TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const;
 
   const Scene& scene() const { return scene_; }
+  // The object boxes every ray is tested against first (the BVH's).
+  const ObjectBvh& bvh() const { return bvh_; }
 
  private:
   void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;

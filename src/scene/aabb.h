@@ -12,6 +12,11 @@
 
 namespace prime {
 
+// 1/d per component, as Aabb::entry wants it (infinite for a zero component).
+inline Vec3 reciprocal(const Vec3& d) {
+  return {1.0 / d[0], 1.0 / d[1], 1.0 / d[2]};
+}
+
 struct Aabb {
   Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
           std::numeric_limits<double>::infinity()};

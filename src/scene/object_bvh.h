@@ -4,6 +4,7 @@
 // pruned only when their box starts strictly beyond the nearest hit so far,
 // and the caller breaks ties between equal t by list order.
 #pragma once
+#include <span>
 #include <vector>
 
 #include "src/scene/aabb.h"
@@ -18,9 +19,15 @@ class ObjectBvh {
   // meets at boxEntry <= limit(), nearest box first. `limit` is re-read
   // after each visit, so the caller can shrink it as hits are found.
   template <class Visit, class Limit>
-  void traverse(const Ray& ray, Visit&& visit, Limit&& limit) const;
+  void traverse(const Ray& ray, Visit&& visit, Limit&& limit) const {
+    traverse(ray, reciprocal(ray.d), visit, limit);
+  }
+  // The same with inv = reciprocal(ray.d) computed by the caller.
+  template <class Visit, class Limit>
+  void traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&& limit) const;
 
   const Aabb& objectBox(int object) const { return objectBoxes_[object]; }
+  std::span<const Aabb> objectBoxes() const { return objectBoxes_; }
   const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
 
  private:
@@ -36,9 +43,8 @@ class ObjectBvh {
 };
 
 template <class Visit, class Limit>
-void ObjectBvh::traverse(const Ray& ray, Visit&& visit, Limit&& limit) const {
+void ObjectBvh::traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&& limit) const {
   if (nodes_.empty()) return;
-  const Vec3 inv{1.0 / ray.d[0], 1.0 / ray.d[1], 1.0 / ray.d[2]};
   struct Item {
     int node;
     double t;
