@@ -4,6 +4,7 @@ namespace prime::io {
 
 std::vector<std::uint8_t> toBytes(const GraphFile& f) {
   ByteWriter w;
+  w.reserve(2 * (3 + f.pixels.size()));
   w.putInt16(f.graphType);
   w.putInt16(f.numPixAcross);
   w.putInt16(f.numPixDown);
@@ -21,7 +22,8 @@ GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::str
     throw InputError({name, std::nullopt, 2}, "numPixAcross/numPixDown", "non-negative sizes",
                      std::to_string(f.numPixAcross) + " x " + std::to_string(f.numPixDown));
   const std::size_t pixelBytes = r.remaining();
-  const std::size_t inclusiveCount = static_cast<std::size_t>(f.numPixAcross + 1) * (f.numPixDown + 1);
+  const std::size_t inclusiveCount =
+      static_cast<std::size_t>(f.numPixAcross + 1) * (f.numPixDown + 1);
   const std::size_t exactCount = static_cast<std::size_t>(f.numPixAcross) * f.numPixDown;
   if (pixelBytes == inclusiveCount * kTurboInt) {
     f.inclusive = true;
@@ -41,21 +43,25 @@ GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::str
   return f;
 }
 
-GraphFile readGraphFile(const std::string& path) { return graphFileFromBytes(readFileBytes(path), path); }
+GraphFile readGraphFile(const std::string& path) {
+  return graphFileFromBytes(readFileBytes(path), path);
+}
 
-GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, const std::string& name) {
+GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes,
+                                         const std::string& name) {
   ByteReader r(bytes, name);
   GraphFile f;
   f.graphType = r.getInt16("graphType");
   f.numPixAcross = r.getInt16("numPixAcross");
   f.numPixDown = r.getInt16("numPixDown");
   const std::size_t present = r.remaining() / kTurboInt;
-  const std::size_t inclusiveCount =
-      f.numPixAcross < 0 || f.numPixDown < 0
-          ? 0
-          : static_cast<std::size_t>(f.numPixAcross + 1) * static_cast<std::size_t>(f.numPixDown + 1);
+  const std::size_t inclusiveCount = f.numPixAcross < 0 || f.numPixDown < 0
+                                         ? 0
+                                         : static_cast<std::size_t>(f.numPixAcross + 1) *
+                                               static_cast<std::size_t>(f.numPixDown + 1);
   if (f.numPixAcross < 0 || f.numPixDown < 0 || present >= inclusiveCount ||
-      present == static_cast<std::size_t>(f.numPixAcross) * static_cast<std::size_t>(f.numPixDown)) {
+      present ==
+          static_cast<std::size_t>(f.numPixAcross) * static_cast<std::size_t>(f.numPixDown)) {
     GraphFile whole = graphFileFromBytes(bytes, name);  // complete, or the usual error
     const std::size_t n = whole.pixels.size();
     return {std::move(whole), n};
@@ -65,8 +71,8 @@ GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, co
   constexpr std::size_t kMaxPartialPixels = std::size_t{8192} * 8192;
   if (inclusiveCount > kMaxPartialPixels)
     throw InputError({name, std::nullopt, 2}, "numPixAcross/numPixDown of a partial graph file",
-                     "at most 8192 x 8192 pixels", std::to_string(f.numPixAcross + 1) + " x " +
-                                                       std::to_string(f.numPixDown + 1));
+                     "at most 8192 x 8192 pixels",
+                     std::to_string(f.numPixAcross + 1) + " x " + std::to_string(f.numPixDown + 1));
   f.inclusive = true;
   f.pixels.reserve(inclusiveCount);
   for (std::size_t i = 0; i < present; ++i) f.pixels.push_back(r.getInt16("pixel"));
@@ -78,6 +84,8 @@ GraphFilePrefix readGraphFilePrefix(const std::string& path) {
   return graphFilePrefixFromBytes(readFileBytes(path), path);
 }
 
-void writeGraphFile(const std::string& path, const GraphFile& f) { writeFileAtomically(path, toBytes(f)); }
+void writeGraphFile(const std::string& path, const GraphFile& f) {
+  writeFileAtomically(path, toBytes(f));
+}
 
 }  // namespace prime::io

@@ -22,6 +22,7 @@ class ByteWriter {
   void putInt16(std::int16_t v);
   void putDouble(double v);
   void putZeros(std::size_t n) { bytes_.insert(bytes_.end(), n, 0); }
+  void reserve(std::size_t n) { bytes_.reserve(n); }
   const std::vector<std::uint8_t>& bytes() const { return bytes_; }
   std::vector<std::uint8_t> take() { return std::move(bytes_); }
 

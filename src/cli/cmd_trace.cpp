@@ -130,6 +130,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const Scene scene = prepareScene(*dir, *options);
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
       const std::string partial = target + ".partial";
+      options->settings.keepColours =
+          !trueColourPng->empty();  // only the true-colour PNG reads them
       const RenderSettings& settings = options->settings;
       const ListingCamera camera(settings.camera);
       const Placement at{camera.screenX(0), camera.screenY(0)};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <cstring>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -25,6 +26,35 @@ int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& s
 }
 
 namespace {
+
+// paletteIndex for a run of equal colours (the background, flat faces)
+// computed once: the same bits give the same index and the same counts.
+class PaletteIndexCache {
+ public:
+  explicit PaletteIndexCache(const RenderSettings& settings) : settings_(settings) {}
+  int get(const Rgb& color, TraceStats& stats) {
+    if (valid_ && std::memcmp(color.data(), last_.data(), sizeof last_) == 0) {
+      stats.nanColours += delta_.nanColours;
+      stats.indicesOutOfRange += delta_.indicesOutOfRange;
+      return index_;
+    }
+    TraceStats fresh;
+    index_ = paletteIndex(color, settings_, fresh);
+    delta_ = fresh;
+    stats.nanColours += fresh.nanColours;
+    stats.indicesOutOfRange += fresh.indicesOutOfRange;
+    last_ = color;
+    valid_ = true;
+    return index_;
+  }
+
+ private:
+  const RenderSettings& settings_;
+  bool valid_ = false;
+  Rgb last_{};
+  int index_ = 0;
+  TraceStats delta_;
+};
 
 Rgb average(const Rgb* c, int n) {
   Rgb sum{};
@@ -132,7 +162,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   result.graph.numPixDown = static_cast<std::int16_t>(camera.numPixDown());
   result.graph.inclusive = true;
   result.graph.pixels.assign(static_cast<std::size_t>(rows) * columns, 0);
-  result.rgb.assign(result.graph.pixels.size(), Rgb{});
+  if (settings.keepColours) result.rgb.assign(result.graph.pixels.size(), Rgb{});
 
   int threads = settings.threads > 0 ? settings.threads
                                      : static_cast<int>(std::thread::hardware_concurrency());
@@ -150,6 +180,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
 
   auto worker = [&] {
     TraceStats local;
+    PaletteIndexCache indexOf(settings);
     std::uint64_t raysReported = 0;
     for (;;) {
       if (callbacks.abort && callbacks.abort->load()) break;
@@ -163,9 +194,9 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
                                                  camera, i, j, settings.sampling, local)
                                    : pixelColour(PixelTracer<Tracer1991>{*tracer1991, miss}, camera,
                                                  i, j, settings.sampling, local);
-          result.rgb[at] = color;
+          if (settings.keepColours) result.rgb[at] = color;
           // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
-          result.graph.pixels[at] = static_cast<std::int16_t>(paletteIndex(color, settings, local));
+          result.graph.pixels[at] = static_cast<std::int16_t>(indexOf.get(color, local));
         }
       } catch (...) {
         {

@@ -36,6 +36,9 @@ struct RenderSettings {
   int threads = 0;    // 0: all cores
   int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
   ColorMapping mapping = ColorMapping::Listing;
+  // Keep every pixel's unquantised colour in RenderResult::rgb (true-colour
+  // PNG, prime bench); false leaves rgb empty and saves its memory.
+  bool keepColours = true;
 };
 
 struct RenderResult {
