@@ -1,14 +1,30 @@
+// The window as `prime` sees it: palettes, DAC conversion, zoom, keys, the
+// converted picture and screenshots. The SDL calls are in a module,
+// libprime_window_sdl.so (sdl_window_module.cpp, interface in
+// window_module.h), loaded with dlopen() when the first window opens, so
+// that a headless `prime` never loads libSDL2 and its libraries.
 #include "palette/window/screen_window.h"
 
-#include <SDL.h>
-#include <SDL_syswm.h>  // after SDL.h; its X11 headers stay in this file
+#include <dlfcn.h>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
+#include <new>
+#include <system_error>
+#include <thread>
 
 #include "palette/png_image.h"
+#include "palette/window/window_module.h"
+
+#ifndef PRIME_WINDOW_MODULE_NAME
+#define PRIME_WINDOW_MODULE_NAME "libprime_window_sdl.so"
+#endif
 
 namespace prime::display {
 
@@ -24,6 +40,9 @@ std::optional<std::string> headlessReason(bool noWindowFlag) {
 
 namespace {
 
+namespace fs = std::filesystem;
+using OpenWindow = decltype(&prime_window_sdl_open);
+
 constexpr int kMaxZoom = 8;
 constexpr int kMaxWindowSide = 16384;
 
@@ -31,6 +50,63 @@ int clampZoom(int zoom, int w, int h) {
   zoom = std::clamp(zoom, 1, kMaxZoom);
   while (zoom > 1 && (w * zoom > kMaxWindowSide || h * zoom > kMaxWindowSide)) --zoom;
   return zoom;
+}
+
+std::string dlerrorText() {
+  const char* e = dlerror();
+  return e != nullptr ? e : "unknown error";
+}
+
+// The module's factory. Loaded once and never unloaded: SDL keeps threads,
+// signal handlers and libraries (libdbus among them) for the life of the
+// process, as it did when `prime` linked it.
+OpenWindow loadModule() {
+  static std::mutex mutex;
+  static OpenWindow factory = nullptr;
+  std::lock_guard lock(mutex);
+  if (factory != nullptr) return factory;
+
+  const std::string name = PRIME_WINDOW_MODULE_NAME;
+  std::string where;  // what was loaded, for messages
+  void* handle = nullptr;
+  const char* override = std::getenv("PRIME_WINDOW_MODULE");
+  if (override != nullptr && *override != '\0') {
+    // A path, or a plain name for the library path.
+    where = override;
+    handle = dlopen(override, RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr)
+      throw WindowError("cannot load the window module " + where +
+                        " (PRIME_WINDOW_MODULE): " + dlerrorText());
+  } else {
+    // Next to the executable (the build tree, or an install that keeps them
+    // together); failing that, by name from the library path.
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    const fs::path beside = ec ? fs::path() : self.parent_path() / name;
+    if (!beside.empty() && fs::exists(beside, ec)) {
+      where = beside.string();
+      handle = dlopen(where.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (handle == nullptr)
+        throw WindowError("cannot load the window module " + where + ": " + dlerrorText());
+    } else {
+      where = name;
+      handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (handle == nullptr)
+        throw WindowError("cannot load the window module " +
+                          (beside.empty() ? std::string() : beside.string() + " (not there) or ") +
+                          name + " from the library path: " + dlerrorText());
+    }
+  }
+  dlerror();
+  void* symbol = dlsym(handle, "prime_window_sdl_open");
+  if (symbol == nullptr) {
+    const std::string why = dlerrorText();
+    dlclose(handle);
+    throw WindowError("the window module " + where +
+                      " is not PRIME's (no prime_window_sdl_open): " + why);
+  }
+  factory = reinterpret_cast<OpenWindow>(symbol);
+  return factory;
 }
 
 }  // namespace
@@ -42,9 +118,12 @@ struct ScreenWindow::Impl {
   DacTo8 dac;
   int zoom;
   std::string status;
-  SDL_Window* window = nullptr;
-  SDL_Surface* frame = nullptr;  // the zoomed picture, XRGB8888
-  Uint32 lut[256] = {};
+  // The zoomed picture as sent to the display: XRGB8888 (0x00RRGGBB),
+  // frameWidth pixels a row. Declared before `window`, which shows it.
+  std::vector<std::uint32_t> frame;
+  int frameWidth = 0, frameHeight = 0;
+  std::unique_ptr<module::WindowBackend> window;
+  std::array<std::uint32_t, 256> lut = {};
   bool exposed = false;
   bool quit = false;
   std::string title;
@@ -52,39 +131,13 @@ struct ScreenWindow::Impl {
   Impl(LiveScreen& s, WindowConfig c) : screen(s), config(std::move(c)), dac(config.dac) {
     if (config.palettes.empty()) config.palettes.push_back(*findBuiltinPalette("listing"));
     zoom = clampZoom(config.zoom, screen.width(), screen.height());
-    // SDL prefers an X11 DirectColor visual (for gamma ramps, unused here),
-    // whose colours depend on a colormap only a window manager installs; a
-    // TrueColor visual shows the pixel values as they are. A user's own
-    // setting of the variable wins.
-    setenv("SDL_VIDEO_X11_NODIRECTCOLOR", "1", 0);
-    if (SDL_Init(SDL_INIT_VIDEO) != 0)
-      throw WindowError(std::string("SDL cannot start video: ") + SDL_GetError());
-    // The window surface in plain system memory (X11: shared-memory images),
-    // not a GPU texture: exact pixels, no GL context (under Xvfb that would
-    // be llvmpipe taking CPU from the render), and no re-creation of the
-    // window behind our back.
-    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                              screen.width() * zoom, screen.height() * zoom, SDL_WINDOW_SHOWN);
-    if (window == nullptr) {
-      const std::string why = SDL_GetError();
-      SDL_Quit();
-      throw WindowError("SDL cannot open a window: " + why);
-    }
-    if (SDL_GetWindowSurface(window) == nullptr) {
-      const std::string why = SDL_GetError();
-      SDL_DestroyWindow(window);
-      SDL_Quit();
-      throw WindowError("SDL cannot draw into the window: " + why);
-    }
+    const OpenWindow openWindow = loadModule();
+    char why[1024] = "";
+    window.reset(openWindow(module::kInterfaceVersion, screen.width() * zoom,
+                            screen.height() * zoom, why, sizeof why));
+    if (window == nullptr) throw WindowError(why);
     rebuildFrame();
     updateTitle();
-  }
-
-  ~Impl() {
-    if (frame != nullptr) SDL_FreeSurface(frame);
-    if (window != nullptr) SDL_DestroyWindow(window);
-    SDL_Quit();
   }
 
   const Palette& palette() const { return config.palettes[paletteIndex]; }
@@ -92,15 +145,22 @@ struct ScreenWindow::Impl {
   void rebuildLut() {
     const Rgb8Table colours = present(palette().dac, dac);
     for (std::size_t i = 0; i < 256; ++i)
-      lut[i] = SDL_MapRGB(frame->format, colours[i].r, colours[i].g, colours[i].b);
+      lut[i] = static_cast<std::uint32_t>(colours[i].r) << 16 |
+               static_cast<std::uint32_t>(colours[i].g) << 8 | colours[i].b;
   }
 
   void rebuildFrame() {
-    if (frame != nullptr) SDL_FreeSurface(frame);
-    frame = SDL_CreateRGBSurfaceWithFormat(0, screen.width() * zoom, screen.height() * zoom, 32,
-                                           SDL_PIXELFORMAT_RGB888);
-    if (frame == nullptr)
-      throw WindowError(std::string("SDL cannot make a surface: ") + SDL_GetError());
+    frameWidth = screen.width() * zoom;
+    frameHeight = screen.height() * zoom;
+    try {
+      frame.assign(static_cast<std::size_t>(frameWidth) * frameHeight, 0);
+    } catch (const std::bad_alloc&) {
+      throw WindowError("no memory for the window's picture (" + std::to_string(frameWidth) +
+                        " x " + std::to_string(frameHeight) + ")");
+    }
+    if (!window->setFrame(frame.data(), frameWidth, frameHeight,
+                          frameWidth * static_cast<int>(sizeof(std::uint32_t))))
+      throw WindowError(window->error());
     rebuildLut();
     screen.markAllDirty();
   }
@@ -113,72 +173,62 @@ struct ScreenWindow::Impl {
     if (!status.empty()) t += " - " + status;
     if (t != title) {
       title = t;
-      SDL_SetWindowTitle(window, title.c_str());
+      window->setTitle(title.c_str());
     }
   }
 
   // Converts the changed band into `frame` and sends it to the display.
   void refresh(bool everything) {
-    SDL_Surface* target = SDL_GetWindowSurface(window);
-    if (target == nullptr) return;  // not mapped yet: the changes wait for EXPOSED
+    if (!window->ready()) return;  // not mapped yet: the changes wait for EXPOSED
     Rect changed;
     screen.takeDirty([&](const Screen& s, Rect r) {
       changed = r;
-      if (SDL_MUSTLOCK(frame)) SDL_LockSurface(frame);
-      auto* base = static_cast<std::uint8_t*>(frame->pixels);
       const auto line = [&](int zy) {
-        return reinterpret_cast<Uint32*>(base + static_cast<std::size_t>(zy) * frame->pitch) +
-               r.x * zoom;
+        return frame.data() + static_cast<std::size_t>(zy) * frameWidth + r.x * zoom;
       };
       for (int y = r.y; y < r.y + r.h; ++y) {
         const auto src = s.row(y);
-        Uint32* out = line(y * zoom);
+        std::uint32_t* out = line(y * zoom);
         for (int x = 0; x < r.w; ++x)
           std::fill_n(out + x * zoom, zoom, lut[src[static_cast<std::size_t>(r.x + x)]]);
         for (int zy = 1; zy < zoom; ++zy) std::copy_n(out, r.w * zoom, line(y * zoom + zy));
       }
-      if (SDL_MUSTLOCK(frame)) SDL_UnlockSurface(frame);
     });
     if (changed.empty() && !everything) return;
-    SDL_Rect r{changed.x * zoom, changed.y * zoom, changed.w * zoom, changed.h * zoom};
-    if (everything) r = {0, 0, frame->w, frame->h};
-    SDL_BlitSurface(frame, &r, target, &r);
-    SDL_UpdateWindowSurfaceRects(window, &r, 1);
+    if (everything)
+      window->present(0, 0, frameWidth, frameHeight);
+    else
+      window->present(changed.x * zoom, changed.y * zoom, changed.w * zoom, changed.h * zoom);
   }
 
   void setZoom(int z) {
     z = clampZoom(z, screen.width(), screen.height());
     if (z == zoom) return;
     zoom = z;
-    SDL_SetWindowSize(window, screen.width() * zoom, screen.height() * zoom);
-    // Centre it again: without a window manager (Xvfb) SDL keeps a grown
-    // window inside the display from where it was, and it comes out smaller.
-    SDL_SetWindowPosition(window, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED);
+    window->resize(screen.width() * zoom, screen.height() * zoom);
     rebuildFrame();
     updateTitle();
   }
 
-  void onKey(const SDL_Keysym& key) {
-    switch (key.sym) {
-      case SDLK_ESCAPE:
+  void onKey(const module::Event& e) {
+    using module::Key;
+    switch (e.key) {
+      case Key::Escape:
         quit = true;
         return;
-      case SDLK_PLUS:
-      case SDLK_EQUALS:
-      case SDLK_KP_PLUS:
+      case Key::ZoomIn:
         setZoom(zoom + 1);
         return;
-      case SDLK_MINUS:
-      case SDLK_KP_MINUS:
+      case Key::ZoomOut:
         setZoom(zoom - 1);
         return;
-      case SDLK_p:
+      case Key::Palette:
         paletteIndex = (paletteIndex + 1) % config.palettes.size();
         rebuildLut();
         screen.markAllDirty();
         updateTitle();
         return;
-      case SDLK_d:
+      case Key::Dac:
         dac = dac == DacTo8::Round       ? DacTo8::Replicate
               : dac == DacTo8::Replicate ? DacTo8::Truncate
                                          : DacTo8::Round;
@@ -186,79 +236,77 @@ struct ScreenWindow::Impl {
         screen.markAllDirty();
         updateTitle();
         return;
-      case SDLK_s:
-      case SDLK_F12:
+      case Key::Screenshot:
         try {
           std::cerr << "prime: screenshot " << saveScreenshot() << "\n";
-        } catch (const std::exception& e) {
-          std::cerr << "prime: screenshot failed: " << e.what() << "\n";
+        } catch (const std::exception& ex) {
+          std::cerr << "prime: screenshot failed: " << ex.what() << "\n";
         }
         return;
-      default:
-        if (key.sym >= SDLK_1 && key.sym <= SDLK_8) setZoom(static_cast<int>(key.sym - SDLK_0));
+      case Key::Digit:
+        setZoom(e.digit);
+        return;
+      case Key::Other:
         return;
     }
   }
 
-  void handle(const SDL_Event& e, bool& everything) {
+  void handle(const module::Event& e, bool& everything) {
     switch (e.type) {
-      case SDL_QUIT:
+      case module::Event::Type::Quit:
         quit = true;
         break;
-      case SDL_KEYDOWN:
-        onKey(e.key.keysym);
+      case module::Event::Type::Key:
+        onKey(e);
         break;
-      case SDL_WINDOWEVENT:
-        if (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SHOWN ||
-            e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED ||
-            e.window.event == SDL_WINDOWEVENT_RESTORED) {
-          exposed = exposed || e.window.event == SDL_WINDOWEVENT_EXPOSED;
-          everything = true;
-        } else if (e.window.event == SDL_WINDOWEVENT_CLOSE) {
-          quit = true;
-        }
+      case module::Event::Type::Redraw:
+        exposed = exposed || e.exposed;
+        everything = true;
         break;
-      default:
+      case module::Event::Type::Other:
         break;
     }
   }
 
-  // Polls in small sleeps rather than SDL_WaitEventTimeout: that one lets SDL
-  // wake a waiting window by sending it an X event from a second connection,
-  // which can reach the server after the window is gone and then kills the
-  // process (BadWindow) on exit.
+  // Polls in small sleeps rather than waiting inside SDL
+  // (SDL_WaitEventTimeout): that one lets SDL wake a waiting window by sending
+  // it an X event from a second connection, which can reach the server after
+  // the window is gone and then kills the process (BadWindow) on exit.
   bool poll(int timeoutMs) {
+    using Clock = std::chrono::steady_clock;
     bool everything = false;
-    const Uint64 end = SDL_GetTicks64() + static_cast<Uint64>(std::max(0, timeoutMs));
+    const Clock::time_point end = Clock::now() + std::chrono::milliseconds(std::max(0, timeoutMs));
     for (;;) {
       bool any = false;
-      SDL_Event e;
-      while (SDL_PollEvent(&e) != 0) {
+      module::Event e;
+      while (window->nextEvent(e)) {
         handle(e, everything);
         any = true;
       }
-      const Uint64 now = SDL_GetTicks64();
+      const Clock::time_point now = Clock::now();
       if (any || quit || now >= end) break;
-      SDL_Delay(static_cast<Uint32>(std::min<Uint64>(5, end - now)));
+      std::this_thread::sleep_for(
+          std::min<Clock::duration>(std::chrono::milliseconds(5), end - now));
     }
     refresh(everything);
     return quit;
   }
 
   std::string saveScreenshot() {
-    namespace fs = std::filesystem;
     fs::path path;
     for (int n = 1;; ++n) {
       path = fs::path(config.screenshotDir) / ("prime-screenshot-" + std::to_string(n) + ".png");
       if (!fs::exists(path)) break;
     }
     Image8 img;
-    img.width = frame->w;
-    img.height = frame->h;
-    img.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
-    if (SDL_ConvertPixels(frame->w, frame->h, frame->format->format, frame->pixels, frame->pitch,
-                          SDL_PIXELFORMAT_RGB24, img.rgb.data(), img.width * 3) != 0)
-      throw WindowError(std::string("SDL cannot convert the picture: ") + SDL_GetError());
+    img.width = frameWidth;
+    img.height = frameHeight;
+    img.rgb.resize(frame.size() * 3);
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      img.rgb[3 * i] = static_cast<std::uint8_t>(frame[i] >> 16);
+      img.rgb[3 * i + 1] = static_cast<std::uint8_t>(frame[i] >> 8);
+      img.rgb[3 * i + 2] = static_cast<std::uint8_t>(frame[i]);
+    }
     writePng(path.string(), img);
     return path.string();
   }
@@ -283,13 +331,7 @@ bool ScreenWindow::upToDate() const {
 }
 
 unsigned long ScreenWindow::nativeId() const {
-  SDL_SysWMinfo info;
-  SDL_VERSION(&info.version);
-  if (SDL_GetWindowWMInfo(impl_->window, &info) != SDL_TRUE) return 0;
-#if defined(SDL_VIDEO_DRIVER_X11)
-  if (info.subsystem == SDL_SYSWM_X11) return static_cast<unsigned long>(info.info.x11.window);
-#endif
-  return 0;
+  return impl_->window->nativeId();
 }
 
 const Palette& ScreenWindow::palette() const {

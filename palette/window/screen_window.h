@@ -7,6 +7,10 @@
 // Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, P next
 // palette, D next DAC conversion, S or F12 save a screenshot PNG. The close
 // button, SIGINT and SIGTERM count as Esc.
+//
+// The SDL calls are in a module, libprime_window_sdl.so (window_module.h),
+// that the first ScreenWindow loads with dlopen(): `prime` does not link
+// libSDL2, and a headless run (headlessReason() needs no SDL) never loads it.
 #pragma once
 #include <memory>
 #include <optional>
@@ -39,7 +43,8 @@ struct WindowConfig {
 
 class ScreenWindow {
  public:
-  // Opens the window; throws WindowError when SDL cannot.
+  // Loads the window module and opens the window; throws WindowError when
+  // the module (or libSDL2) cannot be loaded or SDL cannot open a window.
   ScreenWindow(LiveScreen& screen, WindowConfig config);
   ~ScreenWindow();
   ScreenWindow(const ScreenWindow&) = delete;

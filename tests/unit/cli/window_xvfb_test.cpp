@@ -21,6 +21,7 @@
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 namespace fs = std::filesystem;
 using prime::test::ChildProcess;
 
@@ -88,14 +89,16 @@ class XvfbTest : public ::testing::Test {
     ASSERT_TRUE(onPath("xdotool")) << "xdotool is not installed (./prime.sh installs it)";
   }
 
-  // The children's environment: our server, and (for the ASan runs) the
-  // suppressions of SDL's third-party leaks.
+  // The children's environment: our server, the window module beside
+  // `prime` (whatever PRIME_WINDOW_MODULE the caller has set), and (for the
+  // ASan runs) the suppressions of SDL's third-party leaks.
   std::map<std::string, std::string> env() const {
     const char* lsan = std::getenv("LSAN_OPTIONS");
     const std::string supp =
         (fs::path(PRIME_TEST_DATA).parent_path() / "support" / "lsan-sdl.supp").string();
     return {{"DISPLAY", display_},
             {"WAYLAND_DISPLAY", ""},
+            {"PRIME_WINDOW_MODULE", ""},
             {"LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") +
                                  "suppressions=" + supp + ":print_suppressions=0"}};
   }
@@ -333,6 +336,33 @@ TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
       prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
   EXPECT_FALSE(part.complete());
   EXPECT_EQ(part.pixelsPresent % 1394, 0u);
+}
+
+// The SDL2 code is a module that `prime` loads when a window opens
+// (window_module_test.cpp has the headless side): without it there is no
+// window, even with a display, and the render says why and runs headless;
+// PRIME_WINDOW_MODULE names the module to load.
+TEST_F(XvfbTest, WithoutItsWindowModuleTraceRunsHeadlessAndSaysWhy) {
+  prime::test::TempScene s;
+  sphere(s);
+  ASSERT_EQ(toolOrSay({PRIME_EXE, "model", s.path().string()}), 0);
+  const std::string missing = s.path("missing/libprime_window_sdl.so").string();
+  auto e = env();
+  e["PRIME_WINDOW_MODULE"] = missing;
+  ChildProcess headless({PRIME_EXE, "trace", s.path().string(), "--screen", "64", "48"}, e);
+  EXPECT_EQ(headless.wait(60000).value_or(-1), 0) << headless.err();
+  EXPECT_THAT(headless.err(),
+              HasSubstr("prime: running headless (cannot load the window module " + missing +
+                        " (PRIME_WINDOW_MODULE): " + missing + ": cannot open shared object file"));
+  EXPECT_TRUE(s.exists("graph_scr"));
+
+  e["PRIME_WINDOW_MODULE"] =
+      (fs::path(PRIME_EXE).parent_path() / "libprime_window_sdl.so").string();
+  ChildProcess shown({PRIME_EXE, "trace", s.path().string(), "--screen", "64", "48", "--no-wait"},
+                     e);
+  EXPECT_EQ(shown.wait(60000).value_or(-1), 0) << shown.err();
+  EXPECT_THAT(shown.err(), HasSubstr("prime: drawing in window 0x"));
+  EXPECT_THAT(shown.err(), Not(HasSubstr("headless")));
 }
 
 }  // namespace

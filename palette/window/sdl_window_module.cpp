@@ -1,0 +1,206 @@
+// libprime_window_sdl.so: the SDL2 calls of the window (window_module.h), a
+// module that `prime` loads with dlopen() only when a window opens. It draws
+// with SDL's window surface (no GPU renderer), copying only the rectangle the
+// executable asks for from the executable's own XRGB8888 picture, so what the
+// X server shows is exactly the converted indices.
+#include <SDL.h>
+#include <SDL_syswm.h>  // after SDL.h; its X11 headers stay in this file
+
+#include <algorithm>
+#include <cstdlib>
+#include <exception>
+#include <new>
+#include <string>
+
+#include "palette/window/window_module.h"
+
+namespace {
+
+using prime::display::module::Event;
+using prime::display::module::Key;
+using prime::display::module::WindowBackend;
+
+class SdlWindow final : public WindowBackend {
+ public:
+  // Starts SDL's video and opens the window; nullptr (and SDL shut down
+  // again) with the reason in `why` when it cannot.
+  static SdlWindow* open(int width, int height, std::string& why) {
+    // SDL prefers an X11 DirectColor visual (for gamma ramps, unused here),
+    // whose colours depend on a colormap only a window manager installs; a
+    // TrueColor visual shows the pixel values as they are. A user's own
+    // setting of the variable wins.
+    setenv("SDL_VIDEO_X11_NODIRECTCOLOR", "1", 0);
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+      why = std::string("SDL cannot start video: ") + SDL_GetError();
+      return nullptr;
+    }
+    // The window surface in plain system memory (X11: shared-memory images),
+    // not a GPU texture: exact pixels, no GL context (under Xvfb that would
+    // be llvmpipe taking CPU from the render), and no re-creation of the
+    // window behind our back.
+    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    SDL_Window* window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                                          width, height, SDL_WINDOW_SHOWN);
+    if (window == nullptr) {
+      why = std::string("SDL cannot open a window: ") + SDL_GetError();
+      SDL_Quit();
+      return nullptr;
+    }
+    if (SDL_GetWindowSurface(window) == nullptr) {
+      why = std::string("SDL cannot draw into the window: ") + SDL_GetError();
+      SDL_DestroyWindow(window);
+      SDL_Quit();
+      return nullptr;
+    }
+    auto* w = new (std::nothrow) SdlWindow(window);
+    if (w == nullptr) {
+      why = "out of memory";
+      SDL_DestroyWindow(window);
+      SDL_Quit();
+    }
+    return w;
+  }
+
+  ~SdlWindow() override {
+    if (frame_ != nullptr) SDL_FreeSurface(frame_);
+    SDL_DestroyWindow(window_);
+    SDL_Quit();
+  }
+  SdlWindow(const SdlWindow&) = delete;
+  SdlWindow& operator=(const SdlWindow&) = delete;
+
+  void setTitle(const char* title) override { SDL_SetWindowTitle(window_, title); }
+
+  void resize(int width, int height) override {
+    SDL_SetWindowSize(window_, width, height);
+    SDL_SetWindowPosition(window_, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED);
+  }
+
+  bool setFrame(const std::uint32_t* pixels, int width, int height, int pitch) override {
+    if (frame_ != nullptr) SDL_FreeSurface(frame_);
+    // SDL only reads a surface it blits from; the pointer is not const in
+    // its interface.
+    frame_ = SDL_CreateRGBSurfaceWithFormatFrom(const_cast<std::uint32_t*>(pixels), width, height,
+                                                32, pitch, SDL_PIXELFORMAT_RGB888);
+    if (frame_ == nullptr) {
+      error_ = std::string("SDL cannot make a surface: ") + SDL_GetError();
+      return false;
+    }
+    return true;
+  }
+
+  bool ready() override { return SDL_GetWindowSurface(window_) != nullptr; }
+
+  void present(int x, int y, int width, int height) override {
+    SDL_Surface* target = SDL_GetWindowSurface(window_);
+    if (target == nullptr || frame_ == nullptr) return;
+    SDL_Rect r{x, y, width, height};
+    SDL_BlitSurface(frame_, &r, target, &r);
+    SDL_UpdateWindowSurfaceRects(window_, &r, 1);
+  }
+
+  bool nextEvent(Event& event) override {
+    SDL_Event e;
+    if (SDL_PollEvent(&e) == 0) return false;
+    event = Event{};
+    switch (e.type) {
+      case SDL_QUIT:
+        event.type = Event::Type::Quit;
+        break;
+      case SDL_KEYDOWN:
+        event.type = Event::Type::Key;
+        event.key = keyOf(e.key.keysym.sym, event.digit);
+        break;
+      case SDL_WINDOWEVENT:
+        if (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SHOWN ||
+            e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED ||
+            e.window.event == SDL_WINDOWEVENT_RESTORED) {
+          event.type = Event::Type::Redraw;
+          event.exposed = e.window.event == SDL_WINDOWEVENT_EXPOSED;
+        } else if (e.window.event == SDL_WINDOWEVENT_CLOSE) {
+          event.type = Event::Type::Quit;
+        }
+        break;
+      default:
+        break;
+    }
+    return true;
+  }
+
+  unsigned long nativeId() const override {
+    SDL_SysWMinfo info;
+    SDL_VERSION(&info.version);
+    if (SDL_GetWindowWMInfo(window_, &info) != SDL_TRUE) return 0;
+#if defined(SDL_VIDEO_DRIVER_X11)
+    if (info.subsystem == SDL_SYSWM_X11) return static_cast<unsigned long>(info.info.x11.window);
+#endif
+    return 0;
+  }
+
+  const char* error() const override {
+    return error_.c_str();
+  }
+
+ private:
+  explicit SdlWindow(SDL_Window* window) : window_(window) {}
+
+  static Key keyOf(SDL_Keycode sym, int& digit) {
+    switch (sym) {
+      case SDLK_ESCAPE:
+        return Key::Escape;
+      case SDLK_PLUS:
+      case SDLK_EQUALS:
+      case SDLK_KP_PLUS:
+        return Key::ZoomIn;
+      case SDLK_MINUS:
+      case SDLK_KP_MINUS:
+        return Key::ZoomOut;
+      case SDLK_p:
+        return Key::Palette;
+      case SDLK_d:
+        return Key::Dac;
+      case SDLK_s:
+      case SDLK_F12:
+        return Key::Screenshot;
+      default:
+        if (sym >= SDLK_1 && sym <= SDLK_8) {
+          digit = static_cast<int>(sym - SDLK_0);
+          return Key::Digit;
+        }
+        return Key::Other;
+    }
+  }
+
+  SDL_Window* window_;
+  SDL_Surface* frame_ = nullptr;  // wraps the executable's picture
+  std::string error_;
+};
+
+void copyOut(const std::string& text, char* out, std::size_t size) {
+  if (out == nullptr || size == 0) return;
+  const std::size_t n = std::min(text.size(), size - 1);
+  text.copy(out, n);
+  out[n] = '\0';
+}
+
+}  // namespace
+
+extern "C" WindowBackend* prime_window_sdl_open(int interfaceVersion, int width, int height,
+                                                char* error, std::size_t errorSize) {
+  try {
+    if (interfaceVersion != prime::display::module::kInterfaceVersion) {
+      copyOut("the window module was built for interface version " +
+                  std::to_string(prime::display::module::kInterfaceVersion) + ", prime uses " +
+                  std::to_string(interfaceVersion) + " (a module from another build?)",
+              error, errorSize);
+      return nullptr;
+    }
+    std::string why;
+    SdlWindow* window = SdlWindow::open(width, height, why);
+    if (window == nullptr) copyOut(why, error, errorSize);
+    return window;
+  } catch (const std::exception& e) {
+    copyOut(std::string("the window module failed: ") + e.what(), error, errorSize);
+    return nullptr;
+  }
+}

@@ -1,0 +1,81 @@
+// The boundary between `prime` and its SDL2 window module,
+// libprime_window_sdl.so, which `prime` loads with dlopen() only when a window
+// opens (screen_window.cpp): a headless run never loads libSDL2 and the ~50
+// libraries it needs. The module makes the SDL calls and nothing else; what
+// the window shows (palette, DAC conversion, zoom, the converted picture) and
+// what each key means stay in the executable.
+//
+// No SDL types here, and nothing crosses the boundary but plain values, C
+// strings and the executable's own pixel buffer; nothing throws across it.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace prime::display::module {
+
+// Changes whenever WindowBackend, Event or the factory change: a module from
+// another build refuses to open rather than being called wrongly.
+inline constexpr int kInterfaceVersion = 1;
+
+// The keys the window knows, already sorted by meaning.
+enum class Key {
+  Other,
+  Escape,
+  ZoomIn,      // + = keypad +
+  ZoomOut,     // - keypad -
+  Palette,     // P
+  Dac,         // D
+  Screenshot,  // S F12
+  Digit,       // 1..8: Event::digit
+};
+
+struct Event {
+  enum class Type {
+    Other,   // anything else (mouse, focus, ...)
+    Quit,    // the close button, SIGINT, SIGTERM
+    Key,     // a key went down
+    Redraw,  // shown, exposed, resized or restored: send the whole picture
+  };
+  Type type = Type::Other;
+  Key key = Key::Other;
+  int digit = 0;         // Key::Digit
+  bool exposed = false;  // Redraw: the window was exposed (it is on the display)
+};
+
+// One open window. Every call comes from the thread that opened it.
+class WindowBackend {
+ public:
+  virtual ~WindowBackend() = default;  // closes the window and shuts SDL down
+
+  virtual void setTitle(const char* title) = 0;
+  // A new size in pixels; the window is centred again (without a window
+  // manager a grown window would otherwise be kept inside the display from
+  // where it was, and come out smaller).
+  virtual void resize(int width, int height) = 0;
+  // From now on the window shows `pixels`: width x height, XRGB8888
+  // (0x00RRGGBB), `pitch` bytes a row. The memory stays the caller's and must
+  // live until the next setFrame or the end of the window. False (why in
+  // error()) when SDL cannot.
+  virtual bool setFrame(const std::uint32_t* pixels, int width, int height, int pitch) = 0;
+  // Whether the window can be drawn into (it may not be mapped yet).
+  virtual bool ready() = 0;
+  // Copies that rectangle of the frame to the window and sends it to the
+  // display.
+  virtual void present(int x, int y, int width, int height) = 0;
+  // The next pending event, without waiting; false when there is none.
+  virtual bool nextEvent(Event& event) = 0;
+  // The X11 window id (0 on other video drivers).
+  virtual unsigned long nativeId() const = 0;
+  // Why the last call that could fail did.
+  virtual const char* error() const = 0;
+};
+
+}  // namespace prime::display::module
+
+// The module's only exported symbol. Opens a window of width x height pixels
+// titled "PRIME"; on failure returns nullptr with the reason, NUL-terminated,
+// in error[0 .. errorSize). `interfaceVersion` is the caller's
+// kInterfaceVersion. (Visible even though the module hides everything else.)
+extern "C" __attribute__((visibility("default"))) prime::display::module::WindowBackend*
+prime_window_sdl_open(int interfaceVersion, int width, int height, char* error,
+                      std::size_t errorSize);
