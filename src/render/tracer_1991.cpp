@@ -39,13 +39,14 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
 }
 
 // IntersectObj's CSG(): the object's Roth list for `ray`.
-TList Tracer1991::objectList(const SceneObject& obj, const Ray& ray, const Vec3& inv,
-                             TraceStats& stats, Probe* probe, int depth) const {
+TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, TraceStats& stats,
+                             Probe* probe, int depth) const {
+  const Ray& ray = boxRay.ray;
   ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
   auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
     // A ray that misses the primitive's (padded) box ahead cannot hit it.
-    if (cull && bvh_.primBox(primNum).entry(ray, inv) == std::numeric_limits<double>::infinity())
+    if (cull && bvh_.primBox(primNum).entry(boxRay) == std::numeric_limits<double>::infinity())
       return std::nullopt;
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
@@ -124,7 +125,7 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
   TList list;
   int iterations = 0;
   while (!ok) {
-    list = objectList(obj, tr, reciprocal(tr.d), stats, nullptr, depth);
+    list = objectList(obj, BoxRay(tr), stats, nullptr, depth);
     if (list.size() < 2) {  // E46: the original read through a NULL list
       ++stats.emptyTransmitLists;
       break;
@@ -194,7 +195,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
                    "\",\"depth\":" + std::to_string(depth) + ",\"origin\":" + json(ray.o) +
                    ",\"dir\":" + json(ray.d) + "}");
 
-  const Vec3 inv = reciprocal(ray.d);  // for the box tests
+  const BoxRay boxRay(ray);  // prepared once for all the box tests
   double nearest = kInfinity;
   Nearest best;
   // One object of obj/List: its bound, its CSG list, and the listing's
@@ -202,7 +203,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   auto consider = [&](int k) {
     const SceneObject& obj = scene_.objects[k];
     if (!hitsBound(obj, ray, stats, probe, depth)) return;
-    const TList list = objectList(obj, ray, inv, stats, probe, depth);
+    const TList list = objectList(obj, boxRay, stats, probe, depth);
     if (list.empty()) return;
     const double t = list.front().t;  // K30: the FIRST node, not the smallest
     if (t != 0.0 && (t < nearest || (t == nearest && k < best.obj))) {
@@ -218,7 +219,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     // Nearest boxes first; an object whose box starts beyond the nearest hit
     // cannot win (its list's t values all lie in its box).
     bvh_.traverse(
-        ray, inv, [&](int k, double) { consider(k); }, [&] { return nearest; });
+        boxRay, [&](int k, double) { consider(k); }, [&] { return nearest; });
   } else {
     for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }

@@ -69,9 +69,9 @@ class Tracer1991 {
   };
   bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                  int depth) const;
-  // `inv` = reciprocal(ray.d), for the primitives' box tests.
-  TList objectList(const SceneObject& obj, const Ray& ray, const Vec3& inv, TraceStats& stats,
-                   Probe* probe, int depth) const;
+  // The ray comes prepared for the primitives' box tests.
+  TList objectList(const SceneObject& obj, const BoxRay& ray, TraceStats& stats, Probe* probe,
+                   int depth) const;
 
   const Scene& scene_;
   TraceOptions options_;

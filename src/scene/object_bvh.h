@@ -20,11 +20,11 @@ class ObjectBvh {
   // after each visit, so the caller can shrink it as hits are found.
   template <class Visit, class Limit>
   void traverse(const Ray& ray, Visit&& visit, Limit&& limit) const {
-    traverse(ray, reciprocal(ray.d), visit, limit);
+    traverse(BoxRay(ray), visit, limit);
   }
-  // The same with inv = reciprocal(ray.d) computed by the caller.
+  // The same with the ray prepared by the caller.
   template <class Visit, class Limit>
-  void traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&& limit) const;
+  void traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const;
 
   const Aabb& objectBox(int object) const { return objectBoxes_[object]; }
   std::span<const Aabb> objectBoxes() const { return objectBoxes_; }
@@ -43,7 +43,7 @@ class ObjectBvh {
 };
 
 template <class Visit, class Limit>
-void ObjectBvh::traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&& limit) const {
+void ObjectBvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
   if (nodes_.empty()) return;
   struct Item {
     int node;
@@ -51,7 +51,7 @@ void ObjectBvh::traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&&
   };
   Item stack[64];
   int top = 0;
-  const double t0 = nodes_[0].box.entry(ray, inv);
+  const double t0 = nodes_[0].box.entry(ray);
   if (t0 <= limit()) stack[top++] = {0, t0};
   while (top > 0) {
     const Item it = stack[--top];
@@ -60,12 +60,12 @@ void ObjectBvh::traverse(const Ray& ray, const Vec3& inv, Visit&& visit, Limit&&
     if (n.left < 0) {
       for (int k = n.first; k < n.first + n.count; ++k) {
         const int obj = order_[k];
-        const double t = objectBoxes_[obj].entry(ray, inv);
+        const double t = objectBoxes_[obj].entry(ray);
         if (t <= limit()) visit(obj, t);
       }
       continue;
     }
-    const double tl = nodes_[n.left].box.entry(ray, inv), tr = nodes_[n.right].box.entry(ray, inv);
+    const double tl = nodes_[n.left].box.entry(ray), tr = nodes_[n.right].box.entry(ray);
     // Push the farther child first so the nearer is visited first.
     if (tl <= tr) {
       if (tr <= limit()) stack[top++] = {n.right, tr};
