@@ -64,6 +64,15 @@ bool powAndAcosFinite(double x, double y) {
   return x >= 0.0 || std::floor(y) == y;
 }
 
+// pow(x, y) without the call for the two exponents whose result is exact
+// for every x: pow(x, +-0) = 1 (C99 F.9.4.4, NaN included) and x^1 = x
+// (representable, so any pow with an error under 1 ulp returns it).
+double powShortcut(double x, double y) {
+  if (y == 0.0) return 1.0;
+  if (y == 1.0) return x;
+  return std::pow(x, y);
+}
+
 constexpr double kBound = 1e100;
 bool bounded(double v) {
   return v >= -kBound && v <= kBound;
@@ -109,18 +118,18 @@ HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight
     HallPrepared::Light& out = p.light[k];
     if (!zeroA) {
       out.cosHj = cosDeg(acosDeg(dotHj[k]));  // FSR's Cos(ACos(N.Hj))
-      out.powHj = std::pow(dotHj[k], kRH);
+      out.powHj = powShortcut(dotHj[k], kRH);
     }
     if (!zeroB) {
       out.cosHj_ = cosDeg(acosDeg(dotHj_[k]));
-      out.powHj_ = std::pow(dotHj_[k], kTH);
+      out.powHj_ = powShortcut(dotHj_[k], kTH);
     }
   }
   const double dotR = dot(n, geom.r);
   p.zeroReflected = shortcut.zeroReflection && dotR >= -1.0 && dotR <= 1.0;
   if (!p.zeroReflected) p.cosReflected = cosDeg(acosDeg(dotR));
   p.cosZero = cosDeg(0.0);
-  p.transmissivity = std::pow(tT, sT);
+  p.transmissivity = powShortcut(tT, sT);
   p.zeroTransmitted = shortcut.zeroTransmission && std::isfinite(p.transmissivity);
   return p;
 }
