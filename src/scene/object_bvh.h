@@ -49,30 +49,42 @@ void ObjectBvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const 
     int node;
     double t;
   };
+  // The node in hand is kept in registers, not pushed and popped: most rays
+  // meet one or two nodes, and a push followed at once by its pop stalls on
+  // store-to-load forwarding.
   Item stack[64];
   int top = 0;
-  const double t0 = nodes_[0].box.entry(ray);
-  if (t0 <= limit()) stack[top++] = {0, t0};
-  while (top > 0) {
-    const Item it = stack[--top];
-    if (it.t > limit()) continue;
-    const Node& n = nodes_[it.node];
+  int node = 0;
+  if (!(nodes_[0].box.entry(ray) <= limit())) return;
+  for (;;) {
+    const Node& n = nodes_[node];
+    bool descend = false;
     if (n.left < 0) {
       for (int k = n.first; k < n.first + n.count; ++k) {
         const int obj = order_[k];
         const double t = objectBoxes_[obj].entry(ray);
         if (t <= limit()) visit(obj, t);
       }
-      continue;
-    }
-    const double tl = nodes_[n.left].box.entry(ray), tr = nodes_[n.right].box.entry(ray);
-    // Push the farther child first so the nearer is visited first.
-    if (tl <= tr) {
-      if (tr <= limit()) stack[top++] = {n.right, tr};
-      if (tl <= limit()) stack[top++] = {n.left, tl};
     } else {
-      if (tl <= limit()) stack[top++] = {n.left, tl};
-      if (tr <= limit()) stack[top++] = {n.right, tr};
+      // The nearer child next, the farther one onto the stack.
+      const double tl = nodes_[n.left].box.entry(ray), tr = nodes_[n.right].box.entry(ray);
+      const bool leftFirst = tl <= tr;
+      const int nearNode = leftFirst ? n.left : n.right, farNode = leftFirst ? n.right : n.left;
+      const double tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
+      if (tFar <= limit()) stack[top++] = {farNode, tFar};
+      if (tNear <= limit()) {
+        node = nearNode;
+        descend = true;
+      }
+    }
+    if (descend) continue;
+    for (;;) {  // the nearest waiting node that can still hold a nearer hit
+      if (top == 0) return;
+      const Item it = stack[--top];
+      if (it.t <= limit()) {
+        node = it.node;
+        break;
+      }
     }
   }
 }
