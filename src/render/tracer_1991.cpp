@@ -19,6 +19,8 @@ constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
 Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
     : scene_(scene), options_(options), bvh_(scene) {
   if (options_.skipUnneededWork) options_.csg.skipRightWhenLeftEmpty = true;  // Q4
+  for (const auto& obj : scene.objects)
+    programs_.push_back(CsgProgram1991::compile(obj.entries, options_.csg));
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
 }
 
@@ -71,14 +73,17 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
     return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
   };
   TList list;
-  if (obj.entries.size() == 1 && obj.entries[0].op == 'P') {
+  const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
+  if (program && program->isSingleLeaf()) {
     // A lone primitive: exactly what csg1991 returns for a one-entry tree
     // (the leaf's pair, or nothing), without the walk.
     if (const std::optional<PrimInterval> hit = leaf(obj.entries[0].l))
       list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, obj.entries[0].l);
   } else
     try {
-      list = csg1991(obj.entries, leaf, options_.csg);
+      // The flattened tree where it compiled, else the walk (which reports
+      // the tree's error as the listing would).
+      list = program ? program->run(leaf) : csg1991(obj.entries, leaf, options_.csg);
     } catch (const CsgError& e) {
       // The original stopped with Error() here; name the object and the ray.
       throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +

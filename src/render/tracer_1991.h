@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "src/geom/csg_1991.h"
+#include "src/geom/csg_program_1991.h"
 #include "src/render/hall.h"
 #include "src/render/probe.h"
 #include "src/render/trace_stats.h"
@@ -75,7 +76,8 @@ class Tracer1991 {
 
   const Scene& scene_;
   TraceOptions options_;
-  ObjectBvh bvh_;  // used when options_.skipUnneededWork
+  ObjectBvh bvh_;                                        // used when options_.skipUnneededWork
+  std::vector<std::optional<CsgProgram1991>> programs_;  // per object; none: csg1991 walks the tree
   std::vector<HallLight> lights_;
 };
 
