@@ -98,7 +98,7 @@ HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight
   p.count = static_cast<int>(std::min(lights.size(), p.light.size()));
   const Vec3& n = geom.n;
   std::array<double, 10> dotHj{}, dotHj_{};
-  bool zeroA = shortcut.zeroReflection, zeroB = shortcut.zeroTransmission;
+  bool zeroA = shortcut.zeroSpecularReflection, zeroB = shortcut.zeroSpecularTransmission;
   for (int i = 0; i < p.count; ++i) {  // calculate summations
     const auto k = static_cast<std::size_t>(i);
     // MakeVector(light[i].pt, pt, l): l = pt - light (K10), then UnitVector;
@@ -126,11 +126,11 @@ HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight
     }
   }
   const double dotR = dot(n, geom.r);
-  p.zeroReflected = shortcut.zeroReflection && dotR >= -1.0 && dotR <= 1.0;
+  p.zeroReflected = shortcut.zeroReflected && dotR >= -1.0 && dotR <= 1.0;
   if (!p.zeroReflected) p.cosReflected = cosDeg(acosDeg(dotR));
   p.cosZero = cosDeg(0.0);
   p.transmissivity = powShortcut(tT, sT);
-  p.zeroTransmitted = shortcut.zeroTransmission && std::isfinite(p.transmissivity);
+  p.zeroTransmitted = shortcut.zeroTransmitted && std::isfinite(p.transmissivity);
   return p;
 }
 
@@ -197,9 +197,14 @@ std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfCol
   // The per-light vectors, dot products, angles and powers do not depend on
   // the wavelength: computed once per hit (the listing did it per channel).
   HallShortcut shortcut;
-  if (skipZeroTerms && hallInputsBounded(surfColor, iSR, iST, lights, ambient)) {
-    shortcut.zeroReflection = 1.0 - hue.kDR == 0.0;
-    shortcut.zeroTransmission = 1.0 - hue.kDT == 0.0;
+  // kSR and kST bounded too: 0 * kSR is then 0 as well.
+  if (skipZeroTerms && hallInputsBounded(surfColor, iSR, iST, lights, ambient) &&
+      bounded(hue.kDR) && bounded(hue.kDT)) {
+    auto zero = [](const Rgb& c) { return c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0; };
+    shortcut.zeroSpecularReflection = 1.0 - hue.kDR == 0.0;
+    shortcut.zeroSpecularTransmission = 1.0 - hue.kDT == 0.0;
+    shortcut.zeroReflected = shortcut.zeroSpecularReflection || zero(iSR);
+    shortcut.zeroTransmitted = shortcut.zeroSpecularTransmission || zero(iST);
   }
   const HallPrepared prepared =
       prepareHall1991(geom, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, sT, shortcut);

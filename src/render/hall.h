@@ -78,16 +78,19 @@ struct HallTerms {
   }
 };
 
-// Terms whose coefficient is exactly 0 (kSR = 1 - kDR = 0, kST = 1 - kDT = 0)
-// may be set to 0 without computing their transcendental factors, but only
-// where those factors are provably finite: 0 * x is 0 for finite x and NaN
-// for NaN or infinite x, and a NaN must still reach the pixel as in the
-// listing. The sign of such a zero term may differ (0 * -x is -0); no output
-// can show it (every later use of a colour is a sum, a product or a
+// Terms whose coefficient is exactly 0 (kSR = 1 - kDR = 0, kST = 1 - kDT = 0,
+// or for the reflected and transmitted terms a returned colour of 0 in every
+// channel) may be set to 0 without computing their transcendental factors,
+// but only where those factors are provably finite: 0 * x is 0 for finite x
+// and NaN for NaN or infinite x, and a NaN must still reach the pixel as in
+// the listing. The sign of such a zero term may differ (0 * -x is -0); no
+// output can show it (every later use of a colour is a sum, a product or a
 // comparison). Off = the listing's arithmetic, every term computed.
 struct HallShortcut {
-  bool zeroReflection = false;    // kSR == 0: specular-reflection and reflected terms
-  bool zeroTransmission = false;  // kST == 0: specular-transmission and transmitted terms
+  bool zeroSpecularReflection = false;    // kSR == 0
+  bool zeroSpecularTransmission = false;  // kST == 0
+  bool zeroReflected = false;             // kSR == 0 or iSR == 0 in every channel
+  bool zeroTransmitted = false;           // kST == 0 or iST == 0 in every channel
 };
 
 // The channel-independent part of ProcessWavelength for one hit: per light,

@@ -102,7 +102,13 @@ struct PixelTracer {
   const Tracer& tracer;
   bool certainMiss;
   Rgb castRay(const Ray& ray, int depth, TraceStats& stats) const {
-    if (!certainMiss) return tracer.castRay(ray, depth, stats);
+    return certainMiss ? background(stats) : tracer.castRay(ray, depth, stats);
+  }
+  // The listing's one ray per pixel; a masked pixel does not even need the ray.
+  Rgb castPrimary(const ListingCamera& camera, int i, int j, TraceStats& stats) const {
+    return certainMiss ? background(stats) : tracer.castRay(camera.primaryRay(i, j), 0, stats);
+  }
+  Rgb background(TraceStats& stats) const {
     ++stats.primaryRays;
     ++stats.maskedPrimaryRays;
     const auto& b = tracer.scene().background;
@@ -115,7 +121,7 @@ Rgb pixelColour(const Tracer& tracer, const ListingCamera& camera, int i, int j,
                 TraceStats& stats) {
   switch (s.mode) {
     case Sampling::Mode::Single:
-      return tracer.castRay(camera.primaryRay(i, j), 0, stats);
+      return tracer.castPrimary(camera, i, j, stats);
     case Sampling::Mode::Grid: {
       Rgb sum{};
       const int n = std::max(1, s.gridN);

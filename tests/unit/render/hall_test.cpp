@@ -248,7 +248,7 @@ TEST(HallShortcut, TakenWhenTheFactorsAreFiniteAndSameColours) {
   HallGeometry g = headOn();
   g.pt = {0.25, -0.5, 0.0};
   const HallPrepared p =
-      prepareHall1991(g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0, {true, true});
+      prepareHall1991(g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0, {true, true, true, true});
   EXPECT_TRUE(p.zeroSpecularReflection);
   EXPECT_TRUE(p.zeroSpecularTransmission);
   EXPECT_TRUE(p.zeroReflected);
@@ -273,8 +273,8 @@ TEST(HallShortcut, NotTakenWhereTheListingGetsNaN) {
   // so the term must be computed and the colour stays NaN.
   const HallHue hue{1.0, 1.0, {0.8, 0.8, 0.8}, 0.9, 1.5, 2.0, 2.0};
   const std::vector<HallLight> lights = {{{0, 0, -10}, {1.0, 1.0, 1.0}}};
-  const HallPrepared p =
-      prepareHall1991(headOn(), lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0, {true, true});
+  const HallPrepared p = prepareHall1991(headOn(), lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0,
+                                         {true, true, true, true});
   EXPECT_FALSE(p.zeroSpecularReflection);
   EXPECT_TRUE(
       p.zeroSpecularTransmission);  // kTH = 2: an integer power of a negative base is finite
@@ -282,7 +282,8 @@ TEST(HallShortcut, NotTakenWhereTheListingGetsNaN) {
                                     lights, {0.2, 0.2, 0.2}, true);
   EXPECT_TRUE(std::isnan(fast[0]));
   // K13: indx 1 makes Hj_ NaN: the transmission shortcut is refused too.
-  const HallPrepared q = prepareHall1991(headOn(), lights, 1.0, 2.0, 2.0, 0.9, 0.0, {true, true});
+  const HallPrepared q =
+      prepareHall1991(headOn(), lights, 1.0, 2.0, 2.0, 0.9, 0.0, {true, true, true, true});
   EXPECT_FALSE(q.zeroSpecularTransmission);
   EXPECT_TRUE(q.zeroSpecularReflection);
   // An unbounded input (an infinite reflected colour) switches the shortcut off.
@@ -327,17 +328,50 @@ TEST(HallShortcut, RandomHitsGiveTheListingsColours) {
       lights.push_back({{rnd() * 40 - 20, rnd() * 40 - 20, -20}, {rnd(), rnd(), rnd()}});
     const Rgb surf{rnd(), trial % 13 == 0 ? 0.0 : rnd(), rnd()}, ia{rnd(), rnd(), rnd()};
     const double sT = trial % 2 ? 0.0 : rnd() * 5;
-    const Rgb full = processColor1991(hue, surf, {0, 0, 0}, {0, 0, 0}, sT, g, lights, ia, false);
-    const Rgb fast = processColor1991(hue, surf, {0, 0, 0}, {0, 0, 0}, sT, g, lights, ia, true);
+    // The colours the reflected and transmitted rays returned: often black
+    // (a ray that met nothing), sometimes black in one channel only.
+    const Rgb iSR = trial % 3 == 0   ? Rgb{rnd(), 0.0, rnd()}
+                    : trial % 3 == 1 ? Rgb{}
+                                     : Rgb{rnd(), rnd(), rnd()};
+    const Rgb iST = trial % 4 == 0 ? Rgb{rnd(), rnd(), rnd()} : Rgb{};
+    const Rgb full = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia, false);
+    const Rgb fast = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia, true);
     for (int k = 0; k < 3; ++k)
       ASSERT_TRUE(sameColour(full[k], fast[k])) << "trial " << trial << " channel " << k;
     nans += std::isnan(full[0]);
-    const HallPrepared p = prepareHall1991(g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, sT,
-                                           {1.0 - hue.kDR == 0.0, 1.0 - hue.kDT == 0.0});
+    const HallPrepared p = prepareHall1991(
+        g, lights, hue.indx, hue.kRH, hue.kTH, hue.tT, sT,
+        {1.0 - hue.kDR == 0.0, 1.0 - hue.kDT == 0.0, 1.0 - hue.kDR == 0.0, 1.0 - hue.kDT == 0.0});
     shortcuts += p.zeroSpecularReflection + p.zeroSpecularTransmission;
   }
   EXPECT_GT(shortcuts, 5000);  // the shortcut is taken often ...
   EXPECT_GT(nans, 100);        // ... and the NaN cases were met
+}
+
+TEST(HallShortcut, BlackReflectedColourNeedsNoReflectionAngle) {
+  // kSR = 0.7, but the reflected ray came back black: kSR * 0 * FSR = 0, so
+  // Cos(ACos(N.R)) is not needed; one non-black channel needs it again.
+  const HallHue hue{0.3, 1.0, {0.8, 0.6, 0.4}, 0.9, 10.0, 3.0, 1.5};
+  const std::vector<HallLight> lights = {{{3, -2, -10}, {0.7, 0.8, 0.9}}};
+  const Rgb ia = {0.2, 0.3, 0.4};
+  const HallPrepared p = prepareHall1991(headOn(), lights, hue.indx, hue.kRH, hue.kTH, hue.tT, 0.0,
+                                         {false, true, true, true});
+  EXPECT_TRUE(p.zeroReflected);
+  EXPECT_FALSE(p.zeroSpecularReflection);
+  for (const Rgb& iSR : {Rgb{0, 0, 0}, Rgb{0, 0, 0.5}}) {
+    const Rgb full =
+        processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(), lights, ia, false);
+    const Rgb fast =
+        processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(), lights, ia, true);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_TRUE(sameColour(full[k], fast[k])) << k << ": " << full[k] << " " << fast[k];
+  }
+  // Channel 2 with iSR = 0.5: the reflected term kSR * iSR * FSR(s, IA, 0 deg)
+  // (N.R = 1: FSR = IA*s) = 0.7 * 0.5 * 0.4 * 0.125 = 0.0175; channel 0 has 0.
+  const auto terms = hallTermsRgb1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0.5}, {0, 0, 0}, 0.0,
+                                      headOn(), lights, ia, true);
+  EXPECT_NEAR(terms[2].reflected, 0.7 * 0.5 * 0.4 * 0.125, 1e-12);
+  EXPECT_EQ(terms[0].reflected, 0.0);
 }
 
 }  // namespace
