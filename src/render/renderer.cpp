@@ -159,7 +159,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   if (modern)
     mask.emplace(camera, tracerModern->bvh().objectBoxes());
   else if (settings.trace.skipUnneededWork)
-    mask.emplace(camera, tracer1991->bvh().objectBoxes());
+    mask.emplace(camera, tracer1991->primaryMaskBoxes());
   const int rows = camera.rows(), columns = camera.columns();
 
   RenderResult result;

@@ -24,6 +24,15 @@ Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
 }
 
+std::vector<Aabb> Tracer1991::primaryMaskBoxes() const {
+  std::vector<Aabb> boxes;
+  for (const SceneObject& obj : scene_.objects)
+    for (const CsgEntry& e : obj.entries)
+      if (e.op == 'P' && !bvh_.objectBox(static_cast<int>(&obj - scene_.objects.data())).empty())
+        boxes.push_back(bvh_.primBox(e.l));
+  return boxes;
+}
+
 bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                            int depth) const {
   if (obj.boundPrim == -1) return true;  // no bounding volume

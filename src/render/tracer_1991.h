@@ -53,6 +53,11 @@ class Tracer1991 {
   const Scene& scene() const { return scene_; }
   // The object boxes every ray is tested against first (the BVH's).
   const ObjectBvh& bvh() const { return bvh_; }
+  // Boxes a ray must meet to hit anything: the box of every primitive that
+  // is a leaf of an object's tree. (An object is only hit through a leaf's
+  // interval, and objectList skips a leaf whose box the ray misses.) Tighter
+  // than the object boxes for CSG objects; for PrimaryRayMask.
+  std::vector<Aabb> primaryMaskBoxes() const;
 
   // ReflectedRay(ray, t, n): the reflected ray leaving the hit point ray.o + t*ray.d.
   Ray reflectedRay(const Ray& ray, double t, const Vec3& n) const;

@@ -137,7 +137,14 @@ Scene sceneOfTwo() {
   const int a = prim('B', {200, 200, 200}, {600, 300, 100}),
             b = prim('S', {120, 120, 120}, {700, 400, 100});
   cut.entries = {CsgEntry{'-', 1, 2}, CsgEntry{'P', a, 0}, CsgEntry{'P', b, 0}};
-  s.objects = {sphere, cut};
+  // Two small spheres far apart in one union: most of the object's box is
+  // empty, and the mask keeps only the two spheres' own boxes.
+  SceneObject pair;
+  pair.number = 3;
+  pair.hue = {0.5, 1.0, {0.9, 0.9, 0.2}, 0.999, 3, 3, 1.5};
+  const int p1 = prim('S', {40, 40, 40}, {150, 150, 50}), p2 = prim('S', {40, 40, 40}, {850, 850, 450});
+  pair.entries = {CsgEntry{'+', 1, 2}, CsgEntry{'P', p1, 0}, CsgEntry{'P', p2, 0}};
+  s.objects = {sphere, cut, pair};
   return s;
 }
 
