@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstring>
 #include <exception>
@@ -77,20 +78,59 @@ double spread(const Rgb* c, int n) {
   return d;
 }
 
+// The colours of one pixel's adaptive samples, by lattice point. The
+// squares of Whitted's subdivision share points: a child's corners are its
+// parent's corners, centre and edge midpoints. Every offset is a multiple of
+// 2^-(maxLevel+1) pixel, exact in binary, so the same point always gives the
+// same ray and the same colour: each is traced once per pixel.
+class SampleLattice {
+ public:
+  explicit SampleLattice(int maxLevel)
+      : scale_(static_cast<double>(1 << (maxLevel + 1))),
+        side_((1 << (maxLevel + 1)) + 1),
+        stamp_(static_cast<std::size_t>(side_) * side_, 0),
+        colour_(stamp_.size()) {}
+  void nextPixel() { ++generation_; }
+  // The colour at offset (fx, fy), traced by `trace` the first time.
+  template <class Trace>
+  Rgb at(double fx, double fy, Trace&& trace) {
+    const double u = (fx + 0.5) * scale_, v = (fy + 0.5) * scale_;
+    if (!(u >= 0.0 && v >= 0.0 && u < side_ && v < side_) || u != std::floor(u) ||
+        v != std::floor(v))
+      return trace();  // not a lattice point (cannot happen for the subdivision)
+    const std::size_t k =
+        static_cast<std::size_t>(v) * static_cast<std::size_t>(side_) + static_cast<std::size_t>(u);
+    if (stamp_[k] != generation_) {
+      colour_[k] = trace();
+      stamp_[k] = generation_;
+    }
+    return colour_[k];
+  }
+
+ private:
+  double scale_;
+  int side_;
+  std::uint32_t generation_ = 1;
+  std::vector<std::uint32_t> stamp_;
+  std::vector<Rgb> colour_;
+};
+
 // Whitted's adaptive supersampling over the square centred at (fx, fy) with
 // half-width h, in pixel steps.
 template <class Tracer>
 Rgb adaptive(const Tracer& tracer, const ListingCamera& camera, int i, int j, double fx, double fy,
-             double h, int level, const Sampling& s, TraceStats& stats) {
+             double h, int level, const Sampling& s, TraceStats& stats, SampleLattice& lattice) {
   Rgb c[5];
   const double off[5][2] = {{0, 0}, {-h, -h}, {h, -h}, {-h, h}, {h, h}};
-  for (int k = 0; k < 5; ++k)
-    c[k] = tracer.castRay(camera.sampleRay(i, j, fx + off[k][0], fy + off[k][1]), 0, stats);
+  for (int k = 0; k < 5; ++k) {
+    const double x = fx + off[k][0], y = fy + off[k][1];
+    c[k] = lattice.at(x, y, [&] { return tracer.castRay(camera.sampleRay(i, j, x, y), 0, stats); });
+  }
   if (level >= s.maxLevel || !(spread(c, 5) > s.tolerance)) return average(c, 5);
   Rgb q[4];
   for (int k = 0; k < 4; ++k)
     q[k] = adaptive(tracer, camera, i, j, fx + off[k + 1][0] / 2, fy + off[k + 1][1] / 2, h / 2,
-                    level + 1, s, stats);
+                    level + 1, s, stats, lattice);
   return average(q, 4);
 }
 
@@ -118,7 +158,7 @@ struct PixelTracer {
 
 template <class Tracer>
 Rgb pixelColour(const Tracer& tracer, const ListingCamera& camera, int i, int j, const Sampling& s,
-                TraceStats& stats) {
+                TraceStats& stats, SampleLattice* lattice) {
   switch (s.mode) {
     case Sampling::Mode::Single:
       return tracer.castPrimary(camera, i, j, stats);
@@ -135,7 +175,8 @@ Rgb pixelColour(const Tracer& tracer, const ListingCamera& camera, int i, int j,
       return sum;
     }
     case Sampling::Mode::Adaptive:
-      return adaptive(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, s, stats);
+      lattice->nextPixel();
+      return adaptive(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, s, stats, *lattice);
   }
   return {};
 }
@@ -187,6 +228,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   auto worker = [&] {
     TraceStats local;
     PaletteIndexCache indexOf(settings);
+    std::optional<SampleLattice> lattice;
+    if (settings.sampling.mode == Sampling::Mode::Adaptive)
+      lattice.emplace(std::clamp(settings.sampling.maxLevel, 0, 6));  // deeper: traced uncached
+    SampleLattice* samples = lattice ? &*lattice : nullptr;
     std::uint64_t raysReported = 0;
     for (;;) {
       if (callbacks.abort && callbacks.abort->load()) break;
@@ -197,9 +242,9 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
           const std::size_t at = static_cast<std::size_t>(i) * columns + j;
           const bool miss = mask && !mask->mayHit(i, j);
           const Rgb color = modern ? pixelColour(PixelTracer<TracerModern>{*tracerModern, miss},
-                                                 camera, i, j, settings.sampling, local)
+                                                 camera, i, j, settings.sampling, local, samples)
                                    : pixelColour(PixelTracer<Tracer1991>{*tracer1991, miss}, camera,
-                                                 i, j, settings.sampling, local);
+                                                 i, j, settings.sampling, local, samples);
           if (settings.keepColours) result.rgb[at] = color;
           // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
           result.graph.pixels[at] = static_cast<std::int16_t>(indexOf.get(color, local));
