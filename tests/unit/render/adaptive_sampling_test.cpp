@@ -8,28 +8,16 @@
 #include <cstring>
 
 #include "src/render/renderer.h"
+#include "tests/unit/render/small_scene.h"
 
 namespace prime {
 namespace {
 
 Scene twoObjects() {
-  Scene s;
-  SceneTexture map;
-  map.uScale = map.vScale = 2;
-  for (auto& c : map.channel) c = {0.1, 0.5, 0.9, 0.3};
-  s.maps = {SceneTexture{}, map};
-  s.ambient = {0.2, 0.2, 0.2};
-  s.background = {0.05, 0.1, 0.15};
-  s.lights = {{{500, 1500, -1000}, {0.8, 0.8, 0.8}}};
+  test::SmallScene small;
+  Scene& s = small.scene;
   auto prim = [&](char type, const Vec3& scale, const Vec3& at) {
-    ScenePrim p;
-    p.type = type;
-    p.transform = identity4();
-    transform(p.transform, scale, at, {0, 0, 0}, {10, 20, 0});
-    EXPECT_TRUE(inverse(p.transform, p.inverse));
-    for (auto& m : p.map) m = {1, 1};
-    s.prims.push_back(p);
-    return static_cast<int>(s.prims.size()) - 1;
+    return small.prim(type, scale, at);
   };
   SceneObject sphere;
   sphere.number = 1;
@@ -40,7 +28,7 @@ Scene twoObjects() {
   cube.hue = {0.5, 1.0, {0.2, 0.7, 0.4}, 0.999, 3, 3, 1.5};
   cube.entries = {CsgEntry{'P', prim('B', {300, 300, 300}, {550, 200, 100}), 0}};
   s.objects = {sphere, cube};
-  return s;
+  return small.scene;
 }
 
 Rgb average(const Rgb* c, int n) {

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "src/render/renderer.h"
+#include "tests/unit/render/small_scene.h"
 
 namespace prime {
 namespace {
@@ -109,23 +110,10 @@ TEST(PrimaryRayMask, RandomBoxesAndCamerasNeverMaskAnAcceptedRay) {
 
 // A small scene: a sphere and a CSG difference in the middle of the window.
 Scene sceneOfTwo() {
-  Scene s;
-  SceneTexture map;
-  map.uScale = map.vScale = 2;
-  for (auto& c : map.channel) c = {0.1, 0.5, 0.9, 0.3};
-  s.maps = {SceneTexture{}, map};
-  s.ambient = {0.2, 0.2, 0.2};
-  s.background = {0.05, 0.1, 0.15};
-  s.lights = {{{500, 1500, -1000}, {0.8, 0.8, 0.8}}};
+  test::SmallScene small;
+  Scene& s = small.scene;
   auto prim = [&](char type, const Vec3& scale, const Vec3& at) {
-    ScenePrim p;
-    p.type = type;
-    p.transform = identity4();
-    transform(p.transform, scale, at, {0, 0, 0}, {10, 20, 0});
-    EXPECT_TRUE(inverse(p.transform, p.inverse));
-    for (auto& m : p.map) m = {1, 1};
-    s.prims.push_back(p);
-    return static_cast<int>(s.prims.size()) - 1;
+    return small.prim(type, scale, at);
   };
   SceneObject sphere;
   sphere.number = 1;
@@ -142,10 +130,11 @@ Scene sceneOfTwo() {
   SceneObject pair;
   pair.number = 3;
   pair.hue = {0.5, 1.0, {0.9, 0.9, 0.2}, 0.999, 3, 3, 1.5};
-  const int p1 = prim('S', {40, 40, 40}, {150, 150, 50}), p2 = prim('S', {40, 40, 40}, {850, 850, 450});
+  const int p1 = prim('S', {40, 40, 40}, {150, 150, 50}),
+            p2 = prim('S', {40, 40, 40}, {850, 850, 450});
   pair.entries = {CsgEntry{'+', 1, 2}, CsgEntry{'P', p1, 0}, CsgEntry{'P', p2, 0}};
   s.objects = {sphere, cut, pair};
-  return s;
+  return small.scene;
 }
 
 TEST(PrimaryRayMask, MaskedRenderEqualsTheListingsLinearSearch) {
