@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "src/math/listing_math.h"
+
 namespace prime {
 
 namespace {
@@ -11,7 +13,7 @@ namespace {
 // "integer indefinite" 0x8000000000000000, whose low bits are 0: level 0
 // (shading.md S10). Otherwise the exact integer.
 std::int64_t level(double c, double k) {
-  const double f = std::floor(c * k);
+  const double f = floorExact(c * k);  // std::floor, without the call
   constexpr double kTwo63 = 9223372036854775808.0;
   if (std::isnan(f) || f >= kTwo63 || f < -kTwo63) return 0;
   return static_cast<std::int64_t>(f);

@@ -1,6 +1,7 @@
 // MathFunc module of the listing (lines 5202-5340): degree trigonometry with the
 // 7-digit `Radient` constant, and `Roundoff`, which snaps values near an integer.
 #pragma once
+#include <cmath>
 
 namespace prime {
 
@@ -10,11 +11,22 @@ inline constexpr double kRadient = 57.29578;
 // Roundoff (K24, Q6): snaps to the nearest integer when within 1e-10 (positive
 // numbers) or 1e-9/2e-9 (negative numbers, thresholds as printed); NaN and
 // zero give 0.0.
+// floor(x) without the libm call (baseline x86-64 has no rounding
+// instruction, so std::floor is a function call): the same value for every
+// x. Below 2^52 in magnitude, truncation through int64 is exact and one step
+// down corrects negative non-integers; zero keeps its sign; larger values,
+// infinities and NaN go to std::floor.
+inline double floorExact(double x) {
+  if (!(x > -4503599627370496.0 && x < 4503599627370496.0) || x == 0.0) return std::floor(x);
+  const double t = static_cast<double>(static_cast<long long>(x));
+  return t > x ? t - 1.0 : t;
+}
+
 double roundoff(double num);
 
-double sinDeg(double degrees);   // Sin(): sin(num / Radient)
-double cosDeg(double degrees);   // Cos()
-double asinDeg(double x);        // ASin(): asin(x) * Radient
-double acosDeg(double x);        // ACos()
+double sinDeg(double degrees);  // Sin(): sin(num / Radient)
+double cosDeg(double degrees);  // Cos()
+double asinDeg(double x);       // ASin(): asin(x) * Radient
+double acosDeg(double x);       // ACos()
 
 }  // namespace prime
