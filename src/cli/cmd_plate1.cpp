@@ -9,6 +9,7 @@
 #include "palette/export.h"
 #include "palette/palettes.h"
 #include "palette/png_image.h"
+#include "src/cli/camera_options.h"
 #include "src/cli/commands.h"
 #include "src/spline/plate1.h"
 
@@ -20,8 +21,7 @@ void addPlate1Command(CLI::App& app, Action& action) {
       "Colour Plate 1: draw the beta-spline wireframe of DIR/knots.txt on the emulated screen");
   struct Options {
     std::string dir, knots, out, png, area = "image";
-    std::vector<double> eye, windowLeft, windowRight, viewport;
-    std::vector<int> screen;
+    CameraOptions camera;
     spline::WireframeOptions wire;
     bool quiet = false;
   };
@@ -34,18 +34,7 @@ void addPlate1Command(CLI::App& app, Action& action) {
   cmd->add_option("--png", o->png, "Also write the picture as PNG (listing palette)");
   cmd->add_option("--png-area", o->area, "image (the viewport, default) or screen (all 1024 x 768)")
       ->check(CLI::IsMember({"image", "screen"}));
-  cmd->add_option("--eye", o->eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3)->allow_extra_args(false);
-  cmd->add_option("--window-left", o->windowLeft,
-                  "World window top-left corner (listing: 0 1000 0)")
-      ->expected(3)->allow_extra_args(false);
-  cmd->add_option("--window-right", o->windowRight,
-                  "World window top-right corner (listing: 1000 1000 0)")
-      ->expected(3)->allow_extra_args(false);
-  cmd->add_option("--viewport", o->viewport,
-                  "Screen viewport xMin yMin xMax yMax, normalised (listing: 0.66 0 1 1)")
-      ->expected(4)->allow_extra_args(false);
-  cmd->add_option("--screen", o->screen, "Screen size in pixels W H (8514/A: 1024 768)")
-      ->expected(2)->allow_extra_args(false);
+  addCameraOptions(cmd, o->camera);
   cmd->add_option("--curves", o->wire.curvesPerPatch,
                   "Curves per patch in each direction (default 4)")
       ->check(CLI::Range(1, 64));
@@ -56,29 +45,14 @@ void addPlate1Command(CLI::App& app, Action& action) {
   cmd->add_flag("-q,--quiet", o->quiet, "No summary");
   cmd->callback([o, &action] {
     action = [o] {
-      CameraSettings& c = o->wire.camera;
-      if (o->eye.size() == 3) c.eye = {o->eye[0], o->eye[1], o->eye[2]};
-      if (o->windowLeft.size() == 3)
-        c.windowLeft = {o->windowLeft[0], o->windowLeft[1], o->windowLeft[2]};
-      if (o->windowRight.size() == 3)
-        c.windowRight = {o->windowRight[0], o->windowRight[1], o->windowRight[2]};
-      if (o->viewport.size() == 4) {
-        c.xMin = o->viewport[0];
-        c.yMin = o->viewport[1];
-        c.xMax = o->viewport[2];
-        c.yMax = o->viewport[3];
-      }
-      if (o->screen.size() == 2) {
-        c.screenWidth = o->screen[0];
-        c.screenHeight = o->screen[1];
-      }
+      applyCameraOptions(o->camera, o->wire.camera);
       const std::string knotPath = o->knots.empty() ? o->dir + "/knots.txt" : o->knots;
       const spline::KnotFile knots = spline::readKnotFile(knotPath, knotPath);
       const spline::Plate1Picture pic = spline::drawPlate1(knots, o->wire);
       const std::string target = o->out.empty() ? o->dir + "/graph_scr" : o->out;
       io::writeGraphFile(target, pic.graph);
       if (!o->png.empty()) {
-        const spline::Projection proj(c);
+        const spline::Projection proj(o->wire.camera);
         const ListingCamera& cam = proj.camera();
         const Rect area = o->area == "screen"
                               ? pic.screen.bounds()

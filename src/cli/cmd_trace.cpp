@@ -127,7 +127,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=] {
       finishRenderOptions(*options);
-      const Scene scene = prepareScene(*dir, *options);
+      const Scene scene = prepareScene(*dir, options->model);
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
       const std::string partial = target + ".partial";
       options->settings.keepColours =

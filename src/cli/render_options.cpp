@@ -9,58 +9,46 @@
 namespace prime::cli {
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  cmd->add_option("--eye", o.eye, "Eye position x y z (listing: 500 500 -1500)")->expected(3)->allow_extra_args(false);
-  cmd->add_option("--window-left", o.windowLeft, "World window top-left corner (listing: 0 1000 0)")->expected(3)->allow_extra_args(false);
-  cmd->add_option("--window-right", o.windowRight, "World window top-right corner (listing: 1000 1000 0)")
-      ->expected(3)->allow_extra_args(false);
-  cmd->add_option("--viewport", o.viewport,
-                  "Screen viewport xMin yMin xMax yMax, normalised (listing: 0.66 0 1 1)")
-      ->expected(4)->allow_extra_args(false);
-  cmd->add_option("--screen", o.screen, "Screen size in pixels W H (8514/A: 1024 768)")->expected(2)->allow_extra_args(false);
-  cmd->add_option("--max-depth", o.settings.trace.maxDepth, "Recursion depth limit (listing MaxDepth: 5)")
+  addCameraOptions(cmd, o.camera);
+  cmd->add_option("--max-depth", o.settings.trace.maxDepth,
+                  "Recursion depth limit (listing MaxDepth: 5)")
       ->check(CLI::Range(0, 64));
-  cmd->add_option("--tir-cap", o.settings.trace.tirCap,
-                  "Total-internal-reflection steps before giving up (errata E59: 1000; 0 = never, may hang)")
+  cmd->add_option(
+         "--tir-cap", o.settings.trace.tirCap,
+         "Total-internal-reflection steps before giving up (errata E59: 1000; 0 = never, may hang)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
                 "Errata Q4 alternative: skip the right subtree when the left list is empty");
-  cmd->add_flag("--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
-                "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
-                "and every right CSG subtree (same pixels, more rays)");
+  cmd->add_flag(
+      "--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
+      "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
+      "and every right CSG subtree (same pixels, more rays)");
   cmd->add_option("--samples", o.samples, "Regular N x N supersampling (listing: 1 ray per pixel)")
       ->check(CLI::Range(1, 16));
-  cmd->add_option("--adaptive", o.adaptiveTolerance,
-                  "Whitted's adaptive supersampling: subdivide where the 5 rays differ by more than this")
+  cmd->add_option(
+         "--adaptive", o.adaptiveTolerance,
+         "Whitted's adaptive supersampling: subdivide where the 5 rays differ by more than this")
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--adaptive-levels", o.settings.sampling.maxLevel, "Subdivision levels for --adaptive (2)")
+  cmd->add_option("--adaptive-levels", o.settings.sampling.maxLevel,
+                  "Subdivision levels for --adaptive (2)")
       ->check(CLI::Range(0, 6));
-  cmd->add_option("--min-weight", o.settings.trace.minWeight,
-                  "Adaptive tree-depth control: do not cast rays weighing less than this (listing: 0, off)")
+  cmd->add_option(
+         "--min-weight", o.settings.trace.minWeight,
+         "Adaptive tree-depth control: do not cast rays weighing less than this (listing: 0, off)")
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--palette", o.palette, "Colour mapping: listing (ColorNum, 3-3-2) or plate3 (16x16 red/green, X1)")
+  cmd->add_option("--palette", o.palette,
+                  "Colour mapping: listing (ColorNum, 3-3-2) or plate3 (16x16 red/green, X1)")
       ->check(CLI::IsMember({"listing", "plate3"}));
-  cmd->add_option("--profile", o.profile,
-                  "1991: the listing, quirks and all (default); modern: the same scenes with robust "
-                  "arithmetic and correct geometry (docs/deviations.md)")
+  cmd->add_option(
+         "--profile", o.profile,
+         "1991: the listing, quirks and all (default); modern: the same scenes with robust "
+         "arithmetic and correct geometry (docs/deviations.md)")
       ->check(CLI::IsMember({"1991", "modern"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
 }
 
 void finishRenderOptions(RenderOptions& o) {
-  auto& c = o.settings.camera;
-  if (o.eye.size() == 3) c.eye = {o.eye[0], o.eye[1], o.eye[2]};
-  if (o.windowLeft.size() == 3) c.windowLeft = {o.windowLeft[0], o.windowLeft[1], o.windowLeft[2]};
-  if (o.windowRight.size() == 3) c.windowRight = {o.windowRight[0], o.windowRight[1], o.windowRight[2]};
-  if (o.viewport.size() == 4) {
-    c.xMin = o.viewport[0];
-    c.yMin = o.viewport[1];
-    c.xMax = o.viewport[2];
-    c.yMax = o.viewport[3];
-  }
-  if (o.screen.size() == 2) {
-    c.screenWidth = o.screen[0];
-    c.screenHeight = o.screen[1];
-  }
+  applyCameraOptions(o.camera, o.settings.camera);
   o.settings.mapping = o.palette == "plate3" ? ColorMapping::Plate3 : ColorMapping::Listing;
   o.settings.profile = o.profile == "modern" ? Profile::Modern : Profile::Listing1991;
   if (o.samples > 1) {
@@ -73,12 +61,12 @@ void finishRenderOptions(RenderOptions& o) {
   }
 }
 
-Scene prepareScene(const std::string& dir, const RenderOptions& o) {
+Scene prepareScene(const std::string& dir, bool model) {
   const io::SceneDir scene(dir);
-  if (o.model) {
-    const io::Model model = io::buildModel(scene);
-    io::writeModel(scene, model);
-    for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
+  if (model) {
+    const io::Model built = io::buildModel(scene);
+    io::writeModel(scene, built);
+    for (const auto& w : built.warnings) std::cerr << "prime: warning: " << w << "\n";
   } else if (auto stale = staleDatabases(scene); !stale.empty()) {
     std::string msg = "the scene's databases are not up to date:";
     for (const auto& s : stale) msg += "\n  " + s;

@@ -5,14 +5,14 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "src/cli/camera_options.h"
 #include "src/render/renderer.h"
 
 namespace prime::cli {
 
 struct RenderOptions {
   RenderSettings settings;
-  std::vector<double> eye, windowLeft, windowRight, viewport;
-  std::vector<int> screen;
+  CameraOptions camera;
   bool model = false;  // --model: run `prime model` first
   std::string palette = "listing";
   std::string profile = "1991";
@@ -23,7 +23,8 @@ struct RenderOptions {
 void addRenderOptions(CLI::App* cmd, RenderOptions& o);
 // Copies the parsed vectors into o.settings.
 void finishRenderOptions(RenderOptions& o);
-// Loads the scene, after modelling it (--model) or checking it is up to date.
-Scene prepareScene(const std::string& dir, const RenderOptions& o);
+// Loads the scene, after modelling it (`model`: --model) or checking that its
+// databases are up to date (else an InputError saying what to run).
+Scene prepareScene(const std::string& dir, bool model);
 
 }  // namespace prime::cli
