@@ -80,14 +80,17 @@ bool bounded(double v) {
 
 }  // namespace
 
-bool hallInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
-                       std::span<const HallLight> lights, const Rgb& ambient) {
-  for (std::size_t k = 0; k < 3; ++k)
-    if (!bounded(surfColor[k]) || !bounded(iSR[k]) || !bounded(iST[k]) || !bounded(ambient[k]))
-      return false;
+HallSkipping HallSkipping::forScene(std::span<const HallLight> lights, const Rgb& ambient) {
+  HallSkipping s;
+  s.on_ = bounded(ambient[0]) && bounded(ambient[1]) && bounded(ambient[2]);
   for (const HallLight& l : lights)
-    for (double v : l.intensity)
-      if (!bounded(v)) return false;
+    for (double v : l.intensity) s.on_ = s.on_ && bounded(v);
+  return s;
+}
+
+bool hallHitInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!bounded(surfColor[k]) || !bounded(iSR[k]) || !bounded(iST[k])) return false;
   return true;
 }
 
@@ -193,13 +196,13 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
                                           const Rgb& iST, double sT, const HallGeometry& geom,
                                           std::span<const HallLight> lights, const Rgb& ambient,
-                                          bool skipZeroTerms) {
+                                          HallSkipping skipping) {
   // The per-light vectors, dot products, angles and powers do not depend on
   // the wavelength: computed once per hit (the listing did it per channel).
   HallShortcut shortcut;
   // kSR and kST bounded too: 0 * kSR is then 0 as well.
-  if (skipZeroTerms && hallInputsBounded(surfColor, iSR, iST, lights, ambient) &&
-      bounded(hue.kDR) && bounded(hue.kDT)) {
+  if (skipping.on() && hallHitInputsBounded(surfColor, iSR, iST) && bounded(hue.kDR) &&
+      bounded(hue.kDT)) {
     auto zero = [](const Rgb& c) { return c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0; };
     shortcut.zeroSpecularReflection = 1.0 - hue.kDR == 0.0;
     shortcut.zeroSpecularTransmission = 1.0 - hue.kDT == 0.0;
@@ -219,9 +222,9 @@ std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfCol
 
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient, bool skipZeroTerms) {
+                     const Rgb& ambient, HallSkipping skipping) {
   const auto terms =
-      hallTermsRgb1991(hue, surfColor, iSR, iST, sT, geom, lights, ambient, skipZeroTerms);
+      hallTermsRgb1991(hue, surfColor, iSR, iST, sT, geom, lights, ambient, skipping);
   Rgb color{};
   for (std::size_t k = 0; k < 3; k++) {
     color[k] = terms[k].sum();

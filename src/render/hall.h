@@ -110,18 +110,29 @@ struct HallPrepared {
 };
 
 // `shortcut` asks for zero terms (see HallShortcut); the caller must also
-// have checked hallInputsBounded for the hit.
+// have checked HallSkipping and hallHitInputsBounded.
 HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight> lights,
                              double indx, double kRH, double kTH, double tT, double sT,
                              HallShortcut shortcut = {});
 HallTerms hallTermsPrepared1991(int lambda, double surfColor, double kDR, double kDT, double iSR,
                                 double iST, double fDR, const HallPrepared& prepared,
                                 std::span<const HallLight> lights, const Rgb& ambient);
-// True when every colour, intensity and ambient value is finite and at most
-// 1e100 in magnitude: then no product or sum of Hall's terms can overflow,
-// and a term is finite exactly when its cosines and powers are.
-bool hallInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
-                       std::span<const HallLight> lights, const Rgb& ambient);
+// Whether the HallShortcut may be used. Decided once per scene: on only when
+// every light intensity and ambient value is finite and at most 1e100 in
+// magnitude; each hit then checks its own colours the same way
+// (hallHitInputsBounded). With all of them bounded no product or sum of
+// Hall's terms can overflow, and a term is finite exactly when its cosines
+// and powers are. Default: off, the listing's arithmetic.
+class HallSkipping {
+ public:
+  HallSkipping() = default;
+  static HallSkipping forScene(std::span<const HallLight> lights, const Rgb& ambient);
+  bool on() const { return on_; }
+
+ private:
+  bool on_ = false;
+};
+bool hallHitInputsBounded(const Rgb& surfColor, const Rgb& iSR, const Rgb& iST);
 // FSR with the angle's cosine already taken (FSR computes Cos(ang) first).
 double fsrFromCos1991(double surfColor, double iL, double cosAng);
 
@@ -140,16 +151,16 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 
 // ProcessColor, lines 4178-4210: the three channels; values >= 1.0 become
 // 0.999999; negatives and NaN are NOT clamped (K15).
-// `skipZeroTerms`: the HallShortcut for the hue's zero coefficients (same
-// pixels; see HallShortcut).
+// `skipping`: the HallShortcut for the hue's zero coefficients and black
+// returned colours (same pixels; see HallShortcut and HallSkipping).
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient, bool skipZeroTerms = false);
+                     const Rgb& ambient, HallSkipping skipping = {});
 
 // The terms of all three channels (before ProcessColor's clamp).
 std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,
                                           const Rgb& iST, double sT, const HallGeometry& geom,
                                           std::span<const HallLight> lights, const Rgb& ambient,
-                                          bool skipZeroTerms = false);
+                                          HallSkipping skipping = {});
 
 }  // namespace prime

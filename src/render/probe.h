@@ -9,10 +9,10 @@
 #include "src/geom/interval_list.h"
 #include "src/geom/ray.h"
 #include "src/render/hall.h"
+#include "src/render/trace_stats.h"
 
 namespace prime {
 
-enum class RayKind { Primary, Reflected, Transmitted };
 const char* rayKindName(RayKind k);
 
 struct ProbeEvent {

@@ -5,11 +5,14 @@
 
 namespace prime {
 
+enum class RayKind { Primary, Reflected, Transmitted };
+
 struct TraceStats {
   std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0;
   std::uint64_t boundTests = 0, objectTests = 0, primitiveTests = 0;
   std::uint64_t hits = 0;
-  std::uint64_t maskedPrimaryRays = 0;   // primary rays answered by the mask (PrimaryRayMask), not traced
+  std::uint64_t maskedPrimaryRays =
+      0;  // primary rays answered by the mask (PrimaryRayMask), not traced
   std::uint64_t totalInternalReflections = 0;
   std::uint64_t emptyTransmitLists = 0;  // E46: CSG list empty in TransmittedRay
   std::uint64_t cappedTirLoops = 0;      // E59: TIR loop stopped at the cap
@@ -19,6 +22,11 @@ struct TraceStats {
   std::uint64_t indicesOutOfRange = 0;   // K15: palette index outside 0..255
 
   std::uint64_t rays() const { return primaryRays + reflectedRays + transmittedRays; }
+  void countRay(RayKind kind) {
+    ++(kind == RayKind::Primary     ? primaryRays
+       : kind == RayKind::Reflected ? reflectedRays
+                                    : transmittedRays);
+  }
   TraceStats& operator+=(const TraceStats& o);
 };
 

@@ -22,6 +22,9 @@ Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
   for (const auto& obj : scene.objects)
     programs_.push_back(CsgProgram1991::compile(obj.entries, options_.csg));
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+  if (options_.skipUnneededWork)
+    hallSkipping_ =
+        HallSkipping::forScene(lights_, {scene.ambient[0], scene.ambient[1], scene.ambient[2]});
 }
 
 std::vector<Aabb> Tracer1991::primaryMaskBoxes() const {
@@ -189,17 +192,7 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
 
 Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                         double weight) const {
-  switch (kind) {
-    case RayKind::Primary:
-      ++stats.primaryRays;
-      break;
-    case RayKind::Reflected:
-      ++stats.reflectedRays;
-      break;
-    case RayKind::Transmitted:
-      ++stats.transmittedRays;
-      break;
-  }
+  stats.countRay(kind);
   unitVector(ray.d, ray.d);  // E41
   if (probe)
     probe->add(depth, "ray",
@@ -322,7 +315,7 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
   const Rgb color =
       processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
-                       {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]}, skip);
+                       {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]}, hallSkipping_);
   if (probe) {
     const auto terms =
         hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,

@@ -84,6 +84,7 @@ class Tracer1991 {
   ObjectBvh bvh_;                                        // used when options_.skipUnneededWork
   std::vector<std::optional<CsgProgram1991>> programs_;  // per object; none: csg1991 walks the tree
   std::vector<HallLight> lights_;
+  HallSkipping hallSkipping_;  // on with skipUnneededWork and bounded lights (per scene)
 };
 
 }  // namespace prime

@@ -346,17 +346,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
 
 Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
                           double weight) const {
-  switch (kind) {
-    case RayKind::Primary:
-      ++stats.primaryRays;
-      break;
-    case RayKind::Reflected:
-      ++stats.reflectedRays;
-      break;
-    case RayKind::Transmitted:
-      ++stats.transmittedRays;
-      break;
-  }
+  stats.countRay(kind);
   ray.d = unit(ray.d);
   SurfaceHit hit;
   if (!nearestHit(ray, hit, stats))
