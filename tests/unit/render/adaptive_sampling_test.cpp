@@ -15,19 +15,8 @@ namespace {
 
 Scene twoObjects() {
   test::SmallScene small;
-  Scene& s = small.scene;
-  auto prim = [&](char type, const Vec3& scale, const Vec3& at) {
-    return small.prim(type, scale, at);
-  };
-  SceneObject sphere;
-  sphere.number = 1;
-  sphere.hue = {0.3, 1.0, {0.6, 0.4, 0.2}, 0.999, 3, 3, 1.5};
-  sphere.entries = {CsgEntry{'P', prim('S', {250, 250, 250}, {400, 600, 200}), 0}};
-  SceneObject cube;
-  cube.number = 2;
-  cube.hue = {0.5, 1.0, {0.2, 0.7, 0.4}, 0.999, 3, 3, 1.5};
-  cube.entries = {CsgEntry{'P', prim('B', {300, 300, 300}, {550, 200, 100}), 0}};
-  s.objects = {sphere, cube};
+  small.object(0.3, {0.6, 0.4, 0.2}, small.prim('S', {250, 250, 250}, {400, 600, 200}));
+  small.object(0.5, {0.2, 0.7, 0.4}, small.prim('B', {300, 300, 300}, {550, 200, 100}));
   return small.scene;
 }
 

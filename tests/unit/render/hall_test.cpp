@@ -254,9 +254,9 @@ TEST(HallShortcut, TakenWhenTheFactorsAreFiniteAndSameColours) {
   EXPECT_TRUE(p.zeroReflected);
   EXPECT_TRUE(p.zeroTransmitted);
   const Rgb full =
-      processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights, ia, false);
-  const Rgb fast =
-      processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights, ia, true);
+      processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights, ia, {});
+  const Rgb fast = processColor1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0}, {0, 0, 0}, 0.0, g, lights,
+                                    ia, HallSkipping::forScene(lights, ia));
   for (int k = 0; k < 3; ++k)
     EXPECT_TRUE(sameColour(full[k], fast[k])) << k << ": " << full[k] << " " << fast[k];
   // The diffuse terms are all that is left. By hand for channel 0, with
@@ -278,8 +278,9 @@ TEST(HallShortcut, NotTakenWhereTheListingGetsNaN) {
   EXPECT_FALSE(p.zeroSpecularReflection);
   EXPECT_TRUE(
       p.zeroSpecularTransmission);  // kTH = 2: an integer power of a negative base is finite
-  const Rgb fast = processColor1991(hue, {0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, 0.0, headOn(),
-                                    lights, {0.2, 0.2, 0.2}, true);
+  const Rgb fast =
+      processColor1991(hue, {0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, 0.0, headOn(), lights,
+                       {0.2, 0.2, 0.2}, HallSkipping::forScene(lights, {0.2, 0.2, 0.2}));
   EXPECT_TRUE(std::isnan(fast[0]));
   // K13: indx 1 makes Hj_ NaN: the transmission shortcut is refused too.
   const HallPrepared q =
@@ -287,9 +288,13 @@ TEST(HallShortcut, NotTakenWhereTheListingGetsNaN) {
   EXPECT_FALSE(q.zeroSpecularTransmission);
   EXPECT_TRUE(q.zeroSpecularReflection);
   // An unbounded input (an infinite reflected colour) switches the shortcut off.
-  EXPECT_FALSE(hallInputsBounded({0.5, 0.5, 0.5}, {std::numeric_limits<double>::infinity(), 0, 0},
-                                 {0, 0, 0}, lights, {0.2, 0.2, 0.2}));
-  EXPECT_TRUE(hallInputsBounded({0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}, lights, {0.2, 0.2, 0.2}));
+  EXPECT_FALSE(hallHitInputsBounded({0.5, 0.5, 0.5},
+                                    {std::numeric_limits<double>::infinity(), 0, 0}, {0, 0, 0}));
+  EXPECT_TRUE(hallHitInputsBounded({0.5, 0.5, 0.5}, {0, 0, 0}, {0, 0, 0}));
+  // An unbounded light switches the shortcut off for the whole scene.
+  EXPECT_TRUE(HallSkipping::forScene(lights, {0.2, 0.2, 0.2}).on());
+  const std::vector<HallLight> blinding = {{{0, 0, -10}, {1e200, 1.0, 1.0}}};
+  EXPECT_FALSE(HallSkipping::forScene(blinding, {0.2, 0.2, 0.2}).on());
 }
 
 TEST(HallShortcut, RandomHitsGiveTheListingsColours) {
@@ -334,8 +339,9 @@ TEST(HallShortcut, RandomHitsGiveTheListingsColours) {
                     : trial % 3 == 1 ? Rgb{}
                                      : Rgb{rnd(), rnd(), rnd()};
     const Rgb iST = trial % 4 == 0 ? Rgb{rnd(), rnd(), rnd()} : Rgb{};
-    const Rgb full = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia, false);
-    const Rgb fast = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia, true);
+    const Rgb full = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia, {});
+    const Rgb fast = processColor1991(hue, surf, iSR, iST, sT, g, lights, ia,
+                                      HallSkipping::forScene(lights, ia));
     for (int k = 0; k < 3; ++k)
       ASSERT_TRUE(sameColour(full[k], fast[k])) << "trial " << trial << " channel " << k;
     nans += std::isnan(full[0]);
@@ -360,16 +366,16 @@ TEST(HallShortcut, BlackReflectedColourNeedsNoReflectionAngle) {
   EXPECT_FALSE(p.zeroSpecularReflection);
   for (const Rgb& iSR : {Rgb{0, 0, 0}, Rgb{0, 0, 0.5}}) {
     const Rgb full =
-        processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(), lights, ia, false);
-    const Rgb fast =
-        processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(), lights, ia, true);
+        processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(), lights, ia, {});
+    const Rgb fast = processColor1991(hue, {0.5, 0.25, 0.125}, iSR, {0, 0, 0}, 0.0, headOn(),
+                                      lights, ia, HallSkipping::forScene(lights, ia));
     for (int k = 0; k < 3; ++k)
       EXPECT_TRUE(sameColour(full[k], fast[k])) << k << ": " << full[k] << " " << fast[k];
   }
   // Channel 2 with iSR = 0.5: the reflected term kSR * iSR * FSR(s, IA, 0 deg)
   // (N.R = 1: FSR = IA*s) = 0.7 * 0.5 * 0.4 * 0.125 = 0.0175; channel 0 has 0.
   const auto terms = hallTermsRgb1991(hue, {0.5, 0.25, 0.125}, {0, 0, 0.5}, {0, 0, 0}, 0.0,
-                                      headOn(), lights, ia, true);
+                                      headOn(), lights, ia, HallSkipping::forScene(lights, ia));
   EXPECT_NEAR(terms[2].reflected, 0.7 * 0.5 * 0.4 * 0.125, 1e-12);
   EXPECT_EQ(terms[0].reflected, 0.0);
 }

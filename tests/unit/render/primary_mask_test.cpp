@@ -111,29 +111,17 @@ TEST(PrimaryRayMask, RandomBoxesAndCamerasNeverMaskAnAcceptedRay) {
 // A small scene: a sphere and a CSG difference in the middle of the window.
 Scene sceneOfTwo() {
   test::SmallScene small;
-  Scene& s = small.scene;
-  auto prim = [&](char type, const Vec3& scale, const Vec3& at) {
-    return small.prim(type, scale, at);
-  };
-  SceneObject sphere;
-  sphere.number = 1;
-  sphere.hue = {0.3, 1.0, {0.6, 0.4, 0.2}, 0.999, 3, 3, 1.5};
-  sphere.entries = {CsgEntry{'P', prim('S', {150, 150, 150}, {350, 600, 200}), 0}};
-  SceneObject cut;
-  cut.number = 2;
-  cut.hue = {1.0, 1.0, {0.2, 0.7, 0.4}, 0.999, 3, 3, 1.5};
-  const int a = prim('B', {200, 200, 200}, {600, 300, 100}),
-            b = prim('S', {120, 120, 120}, {700, 400, 100});
-  cut.entries = {CsgEntry{'-', 1, 2}, CsgEntry{'P', a, 0}, CsgEntry{'P', b, 0}};
+  small.object(0.3, {0.6, 0.4, 0.2}, small.prim('S', {150, 150, 150}, {350, 600, 200}));
+  const int a = small.prim('B', {200, 200, 200}, {600, 300, 100});
+  const int b = small.prim('S', {120, 120, 120}, {700, 400, 100});
+  small.object(1.0, {0.2, 0.7, 0.4},
+               {CsgEntry{'-', 1, 2}, CsgEntry{'P', a, 0}, CsgEntry{'P', b, 0}});
   // Two small spheres far apart in one union: most of the object's box is
   // empty, and the mask keeps only the two spheres' own boxes.
-  SceneObject pair;
-  pair.number = 3;
-  pair.hue = {0.5, 1.0, {0.9, 0.9, 0.2}, 0.999, 3, 3, 1.5};
-  const int p1 = prim('S', {40, 40, 40}, {150, 150, 50}),
-            p2 = prim('S', {40, 40, 40}, {850, 850, 450});
-  pair.entries = {CsgEntry{'+', 1, 2}, CsgEntry{'P', p1, 0}, CsgEntry{'P', p2, 0}};
-  s.objects = {sphere, cut, pair};
+  const int p1 = small.prim('S', {40, 40, 40}, {150, 150, 50});
+  const int p2 = small.prim('S', {40, 40, 40}, {850, 850, 450});
+  small.object(0.5, {0.9, 0.9, 0.2},
+               {CsgEntry{'+', 1, 2}, CsgEntry{'P', p1, 0}, CsgEntry{'P', p2, 0}});
   return small.scene;
 }
 

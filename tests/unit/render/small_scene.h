@@ -1,9 +1,14 @@
 // A small in-memory scene for render tests: one 2 x 2 map (map 1), a grey
 // ambient, one white light up and to the left, a dark blue background.
-// prim() adds a primitive scaled, turned (10, 20, 0) degrees and moved.
+// prim() adds a primitive scaled, turned (10, 20, 0) degrees and moved;
+// object() an object made of primitives.
 #pragma once
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
+#include "src/render/hall.h"
 #include "src/scene/scene.h"
 
 namespace prime::test {
@@ -31,6 +36,18 @@ struct SmallScene {
     scene.prims.push_back(p);
     return static_cast<int>(scene.prims.size()) - 1;
   }
+
+  // Appends an object numbered in list order: opaque (kDT = 1), kDR and fDR
+  // as given, kRH = kTH = 3, indx 1.5; `entries` is its CSG tree.
+  void object(double kDR, const Rgb& fDR, std::vector<CsgEntry> entries) {
+    SceneObject o;
+    o.number = static_cast<int>(scene.objects.size()) + 1;
+    o.hue = {kDR, 1.0, {fDR[0], fDR[1], fDR[2]}, 0.999, 3, 3, 1.5};
+    o.entries = std::move(entries);
+    scene.objects.push_back(o);
+  }
+  // A one-primitive object.
+  void object(double kDR, const Rgb& fDR, int prim) { object(kDR, fDR, {CsgEntry{'P', prim, 0}}); }
 };
 
 }  // namespace prime::test
