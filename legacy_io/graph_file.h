@@ -29,7 +29,7 @@ GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::str
 GraphFile readGraphFile(const std::string& path);
 
 // A graph file that may stop early: the `.partial` file an aborted
-// `prime trace` leaves (docs/palette.md), or a graph_scr cut short the way the
+// `prime trace` leaves (docs/prime/palette.md), or a graph_scr cut short the way the
 // listing's exit(1) in ExitOnEsc left it. The header, then as many whole
 // pixels as there are, in the listing's inclusive layout. A complete file
 // reads exactly as readGraphFile reads it; a longer one is the same error.

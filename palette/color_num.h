@@ -29,7 +29,7 @@ struct ColorNumCounters {
 //   index = r*32 + g*4 + b; 0 -> 1
 // Both branches (graphType 0 "VGA" and anything else "8514/A") are the same
 // code, so graphType has no effect. Negative colours give negative indices
-// (K15); NaN channels count as level 0 (docs/port-notes/shading.md S10).
+// (K15); NaN channels count as level 0 (docs/prime/port-notes/shading.md S10).
 int colorNum(const Rgb& color, int graphType, ColorNumCounters* counters = nullptr);
 
 // Colour Plate 3 (X1, Q10): index = 16*floor(R*15) + floor(G*15), 0 -> 1;

@@ -9,7 +9,7 @@
 // red 224 becomes DAC 56 of 63, and 80 and 83 are the same colour.
 //
 // The tables keep the 6-bit values; they become 8-bit only when presented
-// (DacTo8). docs/palette.md explains why rounding is the default.
+// (DacTo8). docs/prime/palette.md explains why rounding is the default.
 #pragma once
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// A user's own 256-entry palette, as a small text file (docs/palette.md):
+// A user's own 256-entry palette, as a small text file (docs/prime/palette.md):
 //
 //   # anything after '#' is a comment; blank lines are ignored
 //   prime-palette 1            first line: the format and its version

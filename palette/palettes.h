@@ -1,5 +1,5 @@
 // The named palettes: each a 256-entry DAC table (6 bits per channel) with a
-// name and a one-line description. docs/palette.md lists them in full.
+// name and a one-line description. docs/prime/palette.md lists them in full.
 //
 //   listing  InitPalette (lines 3894-3929, K17) through setrgbpalette: what the
 //            8514/A showed for graphType 1, the only mode RayTrace.c uses

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write PRIME texture maps in the original map text format (AddMap, listing
-line 7206; docs/file-formats.md section 3.8):
+line 7206; docs/prime/file-formats.md section 3.8):
 
     mapNum
     uScale vScale
@@ -79,7 +79,7 @@ FONT = {
 }
 GLYPH_W, GLYPH_H = 5, 7
 
-MAX_ENTRIES = 32767  # AddMap counts uScale*vScale in a 16-bit int (docs/file-formats.md 2.4)
+MAX_ENTRIES = 32767  # AddMap counts uScale*vScale in a 16-bit int (docs/prime/file-formats.md 2.4)
 
 
 def fmt(x):

@@ -1,5 +1,5 @@
 // prime palette [NAME|FILE]: print a palette in the palette-file format
-// (docs/palette.md), ready to copy and edit; --list names the built-in ones.
+// (docs/prime/palette.md), ready to copy and edit; --list names the built-in ones.
 #include <iostream>
 
 #include "palette/palette_file.h"

@@ -6,7 +6,7 @@ namespace prime::cli {
 
 void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText) {
   cmd->add_option("--palette", o.palette,
-                  "Palette: listing, plate3, vga, or a palette file (docs/palette.md); default: " +
+                  "Palette: listing, plate3, vga, or a palette file (docs/prime/palette.md); default: " +
                       defaultText);
 }
 

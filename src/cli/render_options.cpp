@@ -42,7 +42,7 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option(
          "--profile", o.profile,
          "1991: the listing, quirks and all (default); modern: the same scenes with robust "
-         "arithmetic and correct geometry (docs/deviations.md)")
+         "arithmetic and correct geometry (docs/prime/deviations.md)")
       ->check(CLI::IsMember({"1991", "modern"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
 }

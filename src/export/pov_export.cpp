@@ -161,7 +161,7 @@ class Exporter {
          << " -A File_Gamma=1.0 +FN\n"
          << "// from this file's directory (the texture maps are next to it).\n"
          << "// Geometry, CSG, camera rays, lights and recursion depth are exact; texture\n"
-         << "// mapping is close; the finish only approximates Hall's model (docs/pov-export.md).\n"
+         << "// mapping is close; the finish only approximates Hall's model (docs/prime/pov-export.md).\n"
          << "#version 3.7;\n\n"
          << "global_settings {\n"
          << "  // PRIME's MaxDepth " << o_.maxDepth

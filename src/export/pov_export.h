@@ -5,7 +5,7 @@
 // scene, and for timing PRIME against POV-Ray on the same geometry
 // (bench/pov_compare.sh).
 //
-// What is exact and what is approximate (docs/pov-export.md):
+// What is exact and what is approximate (docs/prime/pov-export.md):
 //   exact   geometry (the five unit primitives, their matrices, CSG), the
 //           camera rays through the pixel centres, lights, ambient, and the
 //           recursion limit (max_trace_level = MaxDepth + 1);

@@ -4,7 +4,7 @@
 // Notation in the comments: A = *tList (left operand, receives the result),
 // B = *tList1 (right operand); a0/a1 = the val of A's front pair (entry/exit),
 // b0/b1 the same for B. The branch ids U1..U13, D1..D13, I1..I13 are the ones
-// used in docs/port-notes/csg.md and in the unit tests.
+// used in docs/prime/port-notes/csg.md and in the unit tests.
 #include "src/geom/csg_1991.h"
 
 #include <string>
@@ -284,7 +284,7 @@ void intersection1991(TList& a, TList& b) {
         } else if (tList1.val() < tList.nextVal()) {  // 3655
           // I8: a0 < b0 < a1 < b1. Outputs [b0, a1]; B becomes [b1, b1], so
           // (a1, b1) is lost for A's later pairs (not listed in Q3; see
-          // docs/port-notes/csg.md).
+          // docs/prime/port-notes/csg.md).
           Roth::Copy(tList1.node(), tList.node());   // 3657
           Roth::Copy(tList1.next(), tList1.node());  // 3658
           r.Add(tList);                              // 3659

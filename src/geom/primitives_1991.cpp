@@ -25,7 +25,7 @@ constexpr int V = 1;  // Define.h: #define V 1
 // The pyramid's side-face constants exactly as printed (all 16 occurrences in
 // the listing agree). kP is NOT 1/sqrt(5) = 0.4472135954999579: it is about
 // 5.0e-10 smaller (a digit was dropped by the author, not by the OCR), while kQ
-// is 2/sqrt(5) to 15 digits. Kept as printed; see docs/port-notes/primitives.md.
+// is 2/sqrt(5) to 15 digits. Kept as printed; see docs/prime/port-notes/primitives.md.
 constexpr double kP = 0.44721359499958;
 constexpr double kQ = 0.894427190999916;
 

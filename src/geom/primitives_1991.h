@@ -11,7 +11,7 @@
 //   'N' cone     apex at the origin, radius-1 cap at z = 1, no apex cap (K43)
 //   'Y' pyramid  base 1x1 on y = 0 (x, z in [0,1]), apex (0.5, 1, 0.5)
 //
-// 1991 behaviour kept on purpose (see docs/port-notes/primitives.md):
+// 1991 behaviour kept on purpose (see docs/prime/port-notes/primitives.md):
 //  - K7: a hit is only reported when two surfaces lie ahead (t > 0); a ray that
 //    starts inside (or on) a primitive does not see it.
 //  - K6: nIn/nOut are the raw face normals as Swap() hands them out, so the exit

@@ -12,7 +12,7 @@
 //   'Y' pyramid  base y=0 over [0,1]x[0,1] (x,z), apex (0.5, 1, 0.5).
 // The routines are NOT corrected: the listing's face order (K27), its NaNs
 // (K28), its constants (E47, Q5) and its Roundoff tests (K24) are kept.
-// docs/port-notes/shading.md lists every reading the errata do not cover.
+// docs/prime/port-notes/shading.md lists every reading the errata do not cover.
 #pragma once
 #include <array>
 #include <optional>

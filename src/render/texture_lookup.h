@@ -13,7 +13,7 @@
 // uninitialised local; the 1991 profile returns 0.0 (E51) and flags it (X3).
 // index < 0 (a negative newV): the byte offset is negative, so fseek fails
 // and the file position stays just after the header: the read returns
-// texel 0 (K25). Flagged separately (see docs/port-notes/shading.md S7).
+// texel 0 (K25). Flagged separately (see docs/prime/port-notes/shading.md S7).
 #pragma once
 #include <array>
 #include <cstdint>

@@ -32,7 +32,7 @@ struct TraceOptions {
   // walk through the object) where kST = 1 - kDT = 0, and Roth's early exit
   // (Q4) for '-' and '&' with an empty left list. The pixels are identical
   // unless a skipped subtree would have produced NaN/Inf or a fatal listing
-  // error (E57), which the original could not render either (docs/deviations.md).
+  // error (E57), which the original could not render either (docs/prime/deviations.md).
   // false: do every piece of work the listing did (for ray counts and checks).
   bool skipUnneededWork = true;
   // Adaptive tree-depth control (thesis 2.4): a reflected or transmitted

@@ -1,6 +1,6 @@
 // The modern profile's ray tree: the same scenes and databases as the 1991
 // profile, with the arithmetic and the geometry done right (see the "Modern
-// profile" section of docs/deviations.md for every difference):
+// profile" section of docs/prime/deviations.md for every difference):
 //   - whole-line primitive intervals with cancellation-free quadratics and
 //     correct set operations (a ray that starts inside a solid sees its exit);
 //   - the nearest hit is the smallest t ahead, not the list's first node;

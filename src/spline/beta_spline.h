@@ -1,7 +1,7 @@
 // Uniformly shaped beta-splines (Barsky): the curves and surfaces of thesis
 // section 3.4.2 and Colour Plate 1. The 1991 listing has no spline code; this
 // is our own implementation of the published formulas, cited in
-// docs/plates.md ("Colour Plate 1"):
+// docs/prime/plates.md ("Colour Plate 1"):
 //
 //   B. A. Barsky and J. C. Beatty, "Local control of bias and tension in
 //   Beta-splines", ACM Transactions on Graphics 2(2), 1983, 109-134 (also

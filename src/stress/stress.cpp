@@ -1,4 +1,4 @@
-// The stress generator and the measurements (see stress.h and docs/numerics.md).
+// The stress generator and the measurements (see stress.h and docs/prime/numerics.md).
 #include "src/stress/stress.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The numerical stress suite (issue 7): adversarial rays against every
 // primitive and CSG operator, traced by the 1991 and the modern profile and
 // compared with a reference computed in long double and __float128 from
-// the same double inputs. docs/numerics.md explains every figure.
+// the same double inputs. docs/prime/numerics.md explains every figure.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -61,7 +61,7 @@ struct StressOptions {
   bool run1991 = true, runModern = true;
   int threads = 1;
   bool quad = true;           // also evaluate the __float128 reference
-  double toleranceUlps = 64;  // C of the conditioning tolerance (docs/numerics.md)
+  double toleranceUlps = 64;  // C of the conditioning tolerance (docs/prime/numerics.md)
   std::function<void(const std::string&)> log;
 };
 

@@ -10,7 +10,7 @@
 //   Add(X) moves X's front pair to out; Kill(X) drops it.
 // Node shorthand: en(t,p) = an entry node as AddToTList builds it for prim p
 // (surfType Out, norm nIn(p)); ex(t,p) = an exit node (surfType In, nOut(p)).
-// Branch ids U1..U13, D1..D13, I1..I13 are those of docs/port-notes/csg.md.
+// Branch ids U1..U13, D1..D13, I1..I13 are those of docs/prime/port-notes/csg.md.
 #include "src/geom/csg_1991.h"
 
 #include <gtest/gtest.h>
@@ -427,7 +427,7 @@ TEST(Intersection1991, I8_L3655_BOverlapsAFromAfter) {
 }
 
 TEST(Intersection1991, I8_L3658_DegenerateB1B1MeetsTheNextAPair) {
-  // Not in Q3's list, same pattern as Union 3349 (docs/port-notes/csg.md).
+  // Not in Q3's list, same pattern as Union 3349 (docs/prime/port-notes/csg.md).
   // A=[2,4]/1,[4.5,6]/3, B=[3,5]/2. iter1 = I8: out=[en3/2 ex4/1], B=[ex5/2 ex5/2].
   // iter2 A=[4.5,6] B=[5,5]: 3599 5<4.5 no; 3638 5>4.5; 3640 5<6 -> I6:
   // 3642 Copy(B.next->A.first): A=[ex5/2 ex6/3]; 3643 Add(B): out+=[ex5/2 ex5/2].

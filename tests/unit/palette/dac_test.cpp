@@ -73,7 +73,7 @@ TEST(Dac, RoundIsTheDefaultAndTheOthersAreWithinOneOfIt) {
     replicateDiffers += kReplicate[v] != kRound[v];
     truncateDiffers += kTruncate[v] != kRound[v];
   }
-  EXPECT_EQ(replicateDiffers, 10);  // 11..15 and 48..52 (docs/palette.md)
+  EXPECT_EQ(replicateDiffers, 10);  // 11..15 and 48..52 (docs/prime/palette.md)
   EXPECT_EQ(truncateDiffers, 30);
 }
 

@@ -1,4 +1,4 @@
-// The bounds docs/numerics.md promises, held on a modest ray count: the
+// The bounds docs/prime/numerics.md promises, held on a modest ray count: the
 // modern profile has no NaN/Inf, no wrong decision and no self-intersection
 // in any class; the 1991 profile runs every class without crashing and its
 // NaNs and known deviations are counted, not hidden.
