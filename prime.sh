@@ -36,7 +36,7 @@ case "${1:-}" in
     setup
     build release
     mkdir -p out
-    ./build/release/src/cli/prime trace scenes/default --model --png out/default.png
+    ./build/release/src/cli/prime trace scenes/prime/default --model --png out/default.png
     echo "prime.sh: the screen image is out/default.png"
     ;;
   test)

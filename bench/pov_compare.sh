@@ -2,7 +2,7 @@
 # PRIME against POV-Ray 3.7 on every shipped scene (issue 6, "against the
 # renderer a user would pick instead").
 #
-# For each scenes/*/ that has a Model.txt: `prime model`, `prime export-pov`,
+# For each scenes/prime/*/ that has a Model.txt: `prime model`, `prime export-pov`,
 # then RUNS paired runs of
 #   prime trace DIR --threads 1                       (one ray per pixel, MaxDepth 5)
 #   povray +W.. +H.. -A +WT1 (max_trace_level 6, adc_bailout 0, shadowless lights)
@@ -69,7 +69,7 @@ echo "scene,width,height,runs,prime_cpu_s_median,pov_cpu_s_median,ratio_median,r
 ROWS=""
 NOTES=""
 
-for modelTxt in "$ROOT"/scenes/*/Model.txt; do
+for modelTxt in "$ROOT"/scenes/prime/*/Model.txt; do
   src=$(dirname "$modelTxt")
   name=$(basename "$src")
   dir=$OUT/scenes/$name

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench/run.sh [OUT]: rerun every measurement of docs/benchmarks.md (except the
 # POV-Ray comparison, bench/pov_compare.sh) into OUT (default docs/benchmarks):
-#   bench.csv, bench.md, time_error.png      prime bench, every scenes/*/
+#   bench.csv, bench.md, time_error.png      prime bench, every scenes/prime/*/
 #   scale.csv, scale.md, scale_*.png         the scale study (1 .. 10,000 objects)
 #   micro.csv                                prime_micro, 9 repetitions (mean, median, stddev, cv)
 # Takes about 15 minutes on 2 cores. Run it on a quiet machine: `uptime` first.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates every texture map under scenes/ that tools/mapgen.py makes (the
+# Regenerates every texture map under scenes/prime/ that tools/mapgen.py makes (the
 # others are typed by hand: 1 x 1 maps). With --check, writes nothing and
 # fails if a committed map differs from what the script makes (CTest
 # tools.maps_are_generated runs this).
@@ -10,7 +10,7 @@ check=0
 status=0
 
 gen() {  # gen scene/map/MapN.txt mapgen-arguments...
-  local target="scenes/$1"
+  local target="scenes/prime/$1"
   shift
   if [ $check = 1 ]; then
     if ! python3 tools/mapgen.py "$@" | cmp -s - "$target"; then

@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "src/geom/csg_1991.h"
-#include "src/geom/csg_sets.h"
+#include "src/prime/geom/csg_1991.h"
+#include "src/prime/geom/csg_sets.h"
 
 namespace {
 
@@ -68,7 +68,7 @@ TList setDifferenceOutward(const TList& a, const TList& b) {
   return prime::setDifference(a, b);
 }
 
-// The thesis example tree of scenes/default object 1 (section 5.3.2):
+// The thesis example tree of scenes/prime/default object 1 (section 5.3.2):
 // "+ 1 4 / - 2 3 / P / P / P", i.e. (A - B) + C, every leaf hit.
 void walk(benchmark::State& state) {
   const std::vector<prime::CsgEntry> tree = {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "src/geom/primitives_1991.h"
+#include "src/prime/geom/primitives_1991.h"
 
 namespace {
 

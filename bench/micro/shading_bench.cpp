@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "palette/color_num.h"
-#include "src/geom/uv_mapping_1991.h"
+#include "palette/prime/color_num.h"
+#include "src/prime/geom/uv_mapping_1991.h"
 #include "src/math/vec.h"
-#include "src/render/hall.h"
+#include "src/prime/render/hall_1991.h"
 
 namespace {
 

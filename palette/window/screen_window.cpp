@@ -1,5 +1,5 @@
-// The window as `prime` sees it: palettes, DAC conversion, zoom, keys, the
-// converted picture and screenshots. The SDL calls are in a module,
+// The window as `prime` sees it: zoom, keys, the converted picture and
+// screenshots; what the picture is and its own keys belong to the LiveFrame. The SDL calls are in a module,
 // libprime_window_sdl.so (sdl_window_module.cpp, interface in
 // window_module.h), loaded with dlopen() when the first window opens, so
 // that a headless `prime` never loads libSDL2 and its libraries.
@@ -112,10 +112,8 @@ OpenWindow loadModule() {
 }  // namespace
 
 struct ScreenWindow::Impl {
-  LiveScreen& screen;
+  LiveFrame& screen;
   WindowConfig config;
-  std::size_t paletteIndex = 0;
-  DacTo8 dac;
   int zoom;
   std::string status;
   // The zoomed picture as sent to the display: XRGB8888 (0x00RRGGBB),
@@ -123,13 +121,12 @@ struct ScreenWindow::Impl {
   std::vector<std::uint32_t> frame;
   int frameWidth = 0, frameHeight = 0;
   std::unique_ptr<module::WindowBackend> window;
-  std::array<std::uint32_t, 256> lut = {};
+  std::vector<std::uint32_t> changedPixels;  // the frame's changed rectangle, unzoomed
   bool exposed = false;
   bool quit = false;
   std::string title;
 
-  Impl(LiveScreen& s, WindowConfig c) : screen(s), config(std::move(c)), dac(config.dac) {
-    if (config.palettes.empty()) config.palettes.push_back(*findBuiltinPalette("listing"));
+  Impl(LiveFrame& s, WindowConfig c) : screen(s), config(std::move(c)) {
     zoom = clampZoom(config.zoom, screen.width(), screen.height());
     const OpenWindow openWindow = loadModule();
     char why[1024] = "";
@@ -138,15 +135,6 @@ struct ScreenWindow::Impl {
     if (window == nullptr) throw WindowError(why);
     rebuildFrame();
     updateTitle();
-  }
-
-  const Palette& palette() const { return config.palettes[paletteIndex]; }
-
-  void rebuildLut() {
-    const Rgb8Table colours = present(palette().dac, dac);
-    for (std::size_t i = 0; i < 256; ++i)
-      lut[i] = static_cast<std::uint32_t>(colours[i].r) << 16 |
-               static_cast<std::uint32_t>(colours[i].g) << 8 | colours[i].b;
   }
 
   void rebuildFrame() {
@@ -161,14 +149,13 @@ struct ScreenWindow::Impl {
     if (!window->setFrame(frame.data(), frameWidth, frameHeight,
                           frameWidth * static_cast<int>(sizeof(std::uint32_t))))
       throw WindowError(window->error());
-    rebuildLut();
     screen.markAllDirty();
   }
 
   void updateTitle() {
     std::string t = "PRIME";
     if (!config.caption.empty()) t += " - " + config.caption;
-    t += " - palette " + palette().name + " (DAC " + std::string(dacTo8Name(dac)) + ")";
+    if (const std::string about = screen.describe(); !about.empty()) t += " - " + about;
     if (zoom != 1) t += " - zoom " + std::to_string(zoom) + "x";
     if (!status.empty()) t += " - " + status;
     if (t != title) {
@@ -180,20 +167,19 @@ struct ScreenWindow::Impl {
   // Converts the changed band into `frame` and sends it to the display.
   void refresh(bool everything) {
     if (!window->ready()) return;  // not mapped yet: the changes wait for EXPOSED
-    Rect changed;
-    screen.takeDirty([&](const Screen& s, Rect r) {
-      changed = r;
+    const Rect changed = screen.takeDirty(changedPixels);
+    if (!changed.empty()) {
+      const Rect& r = changed;
       const auto line = [&](int zy) {
         return frame.data() + static_cast<std::size_t>(zy) * frameWidth + r.x * zoom;
       };
-      for (int y = r.y; y < r.y + r.h; ++y) {
-        const auto src = s.row(y);
-        std::uint32_t* out = line(y * zoom);
-        for (int x = 0; x < r.w; ++x)
-          std::fill_n(out + x * zoom, zoom, lut[src[static_cast<std::size_t>(r.x + x)]]);
-        for (int zy = 1; zy < zoom; ++zy) std::copy_n(out, r.w * zoom, line(y * zoom + zy));
+      for (int y = 0; y < r.h; ++y) {
+        const std::uint32_t* src = changedPixels.data() + static_cast<std::size_t>(y) * r.w;
+        std::uint32_t* out = line((r.y + y) * zoom);
+        for (int x = 0; x < r.w; ++x) std::fill_n(out + x * zoom, zoom, src[x]);
+        for (int zy = 1; zy < zoom; ++zy) std::copy_n(out, r.w * zoom, line((r.y + y) * zoom + zy));
       }
-    });
+    }
     if (changed.empty() && !everything) return;
     if (everything)
       window->present(0, 0, frameWidth, frameHeight);
@@ -223,18 +209,8 @@ struct ScreenWindow::Impl {
         setZoom(zoom - 1);
         return;
       case Key::Palette:
-        paletteIndex = (paletteIndex + 1) % config.palettes.size();
-        rebuildLut();
-        screen.markAllDirty();
-        updateTitle();
-        return;
       case Key::Dac:
-        dac = dac == DacTo8::Round       ? DacTo8::Replicate
-              : dac == DacTo8::Replicate ? DacTo8::Truncate
-                                         : DacTo8::Round;
-        rebuildLut();
-        screen.markAllDirty();
-        updateTitle();
+        if (screen.onKey(e.key)) updateTitle();
         return;
       case Key::Screenshot:
         try {
@@ -312,7 +288,7 @@ struct ScreenWindow::Impl {
   }
 };
 
-ScreenWindow::ScreenWindow(LiveScreen& screen, WindowConfig config)
+ScreenWindow::ScreenWindow(LiveFrame& screen, WindowConfig config)
     : impl_(std::make_unique<Impl>(screen, std::move(config))) {}
 
 ScreenWindow::~ScreenWindow() = default;
@@ -334,12 +310,6 @@ unsigned long ScreenWindow::nativeId() const {
   return impl_->window->nativeId();
 }
 
-const Palette& ScreenWindow::palette() const {
-  return impl_->palette();
-}
-DacTo8 ScreenWindow::dac() const {
-  return impl_->dac;
-}
 int ScreenWindow::zoom() const {
   return impl_->zoom;
 }

@@ -1,12 +1,12 @@
-// The emulated 8514/A in a real window (SDL2): the whole screen, each index
-// through the palette's DAC table and a 6-to-8-bit conversion, scaled by an
-// integer zoom. It draws with SDL's window surface (no GPU renderer), sending
-// only the band of rows that changed, so what the X server shows is exactly
-// the converted indices.
+// A live picture (a LiveFrame: PRIME's emulated 8514/A screen, or any
+// system's true-colour rows) in a real window (SDL2), scaled by an integer
+// zoom. It draws with SDL's window surface (no GPU renderer), sending only
+// the band of rows that changed, so what the X server shows is exactly what
+// the frame converted.
 //
-// Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, P next
-// palette, D next DAC conversion, S or F12 save a screenshot PNG. The close
-// button, SIGINT and SIGTERM count as Esc.
+// Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, S or F12
+// save a screenshot PNG, and the frame's own keys (PRIME: P next palette, D
+// next DAC conversion). The close button, SIGINT and SIGTERM count as Esc.
 //
 // The SDL calls are in a module, libprime_window_sdl.so (window_module.h),
 // that the first ScreenWindow loads with dlopen(): `prime` does not link
@@ -18,9 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "palette/dac.h"
-#include "palette/palettes.h"
-#include "palette/window/live_screen.h"
+#include "palette/window/live_frame.h"
 
 namespace prime::display {
 
@@ -34,10 +32,8 @@ class WindowError : public std::runtime_error {
 std::optional<std::string> headlessReason(bool noWindowFlag);
 
 struct WindowConfig {
-  std::string caption;            // first part of the title: scene or file
-  std::vector<Palette> palettes;  // P cycles through them; the first is shown first
-  DacTo8 dac = kDefaultDacTo8;
-  int zoom = 1;  // 1..8
+  std::string caption;  // first part of the title: scene or file
+  int zoom = 1;         // 1..8
   std::string screenshotDir = ".";
 };
 
@@ -45,7 +41,7 @@ class ScreenWindow {
  public:
   // Loads the window module and opens the window; throws WindowError when
   // the module (or libSDL2) cannot be loaded or SDL cannot open a window.
-  ScreenWindow(LiveScreen& screen, WindowConfig config);
+  ScreenWindow(LiveFrame& frame, WindowConfig config);
   ~ScreenWindow();
   ScreenWindow(const ScreenWindow&) = delete;
   ScreenWindow& operator=(const ScreenWindow&) = delete;
@@ -61,8 +57,6 @@ class ScreenWindow {
   bool upToDate() const;
   // The X11 window id (0 on other video drivers), for tools such as xwd.
   unsigned long nativeId() const;
-  const Palette& palette() const;
-  DacTo8 dac() const;
   int zoom() const;
   // Saves the window's pixels, as sent to the display, as a PNG in the
   // screenshot directory; returns the path.

@@ -3,7 +3,7 @@
 // exit status 1; usage errors exit with CLI11's status (106 and friends).
 #include <iostream>
 
-#include "legacy_io/error.h"
+#include "legacy_io/common/error.h"
 #include "src/cli/commands.h"
 
 int main(int argc, char** argv) {

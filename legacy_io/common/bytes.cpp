@@ -1,0 +1,76 @@
+#include "legacy_io/common/bytes.h"
+
+#include <bit>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace prime::io {
+
+void ByteWriter::putInt16(std::int16_t v) {
+  const auto u = static_cast<std::uint16_t>(v);
+  bytes_.push_back(static_cast<std::uint8_t>(u & 0xFF));
+  bytes_.push_back(static_cast<std::uint8_t>(u >> 8));
+}
+
+void ByteWriter::putDouble(double v) {
+  const auto u = std::bit_cast<std::uint64_t>(v);
+  for (int i = 0; i < 8; ++i) bytes_.push_back(static_cast<std::uint8_t>(u >> (8 * i)));
+}
+
+void ByteReader::need(std::size_t n, const std::string& field) {
+  if (remaining() < n)
+    throw InputError({file_, std::nullopt, offset()}, field,
+                     std::to_string(n) + " more byte(s)",
+                     "end of file after " + std::to_string(remaining()) + " byte(s) (truncated)");
+}
+
+std::uint8_t ByteReader::getChar(const std::string& field) {
+  need(1, field);
+  return bytes_[pos_++];
+}
+
+std::int16_t ByteReader::getInt16(const std::string& field) {
+  need(2, field);
+  const auto u = static_cast<std::uint16_t>(bytes_[pos_] | (bytes_[pos_ + 1] << 8));
+  pos_ += 2;
+  return static_cast<std::int16_t>(u);
+}
+
+double ByteReader::getDouble(const std::string& field) {
+  need(8, field);
+  std::uint64_t u = 0;
+  for (int i = 0; i < 8; ++i) u |= static_cast<std::uint64_t>(bytes_[pos_ + i]) << (8 * i);
+  pos_ += 8;
+  return std::bit_cast<double>(u);
+}
+
+void ByteReader::skip(std::size_t n, const std::string& field) {
+  need(n, field);
+  pos_ += n;
+}
+
+std::vector<std::uint8_t> readFileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, std::nullopt, std::nullopt}, "cannot open file (missing or unreadable)");
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return bytes;
+}
+
+void writeFileAtomically(const std::string& path, std::span<const std::uint8_t> bytes) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError({path, std::nullopt, std::nullopt}, "cannot create file for writing");
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(tmp);
+      throw InputError({path, std::nullopt, std::nullopt}, "write failed (disk full?)");
+    }
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace prime::io

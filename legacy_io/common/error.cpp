@@ -1,0 +1,28 @@
+#include "legacy_io/common/error.h"
+
+namespace prime::io {
+
+std::string describe(const InputLocation& where) {
+  std::string s = where.file;
+  if (where.line) s += ":" + std::to_string(*where.line);
+  if (where.byte) s += " (byte " + std::to_string(*where.byte) + ")";
+  return s;
+}
+
+static std::string compose(const InputLocation& where, const std::string& field,
+                           const std::string& expected, const std::string& found) {
+  return describe(where) + ": " + field + ": expected " + expected + ", found " + found;
+}
+
+InputError::InputError(InputLocation where, std::string field, std::string expected,
+                       std::string found)
+    : std::runtime_error(compose(where, field, expected, found)),
+      where_(std::move(where)),
+      field_(std::move(field)),
+      expected_(std::move(expected)),
+      found_(std::move(found)) {}
+
+InputError::InputError(InputLocation where, std::string message)
+    : std::runtime_error(describe(where) + ": " + message), where_(std::move(where)) {}
+
+}  // namespace prime::io

@@ -1,0 +1,106 @@
+#include "legacy_io/common/text_reader.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace prime::io {
+
+TextReader::TextReader(std::string text, std::string display)
+    : text_(std::move(text)), display_(std::move(display)) {}
+
+TextReader TextReader::open(const std::string& path, const std::string& display) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({display, std::nullopt, std::nullopt}, "file does not exist or cannot be read");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return TextReader(ss.str(), display);
+}
+
+void TextReader::skipBlanks() {
+  while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+    if (text_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+}
+
+std::string TextReader::peekWord() const {
+  std::size_t end = pos_;
+  while (end < text_.size() && !std::isspace(static_cast<unsigned char>(text_[end])) && end - pos_ < 40)
+    ++end;
+  if (end == pos_) return "end of file";
+  return "\"" + text_.substr(pos_, end - pos_) + "\"";
+}
+
+void TextReader::fail(const std::string& field, const std::string& expected,
+                      const std::string& found) const {
+  // At the end of the file the missing value belongs after the last word read.
+  const int line = pos_ >= text_.size() ? lastTokenLine_ : line_;
+  throw InputError({display_, line, std::nullopt}, field, expected, found);
+}
+
+bool TextReader::atEnd() {
+  skipBlanks();
+  return pos_ >= text_.size();
+}
+
+std::string TextReader::token(const std::string& field) {
+  skipBlanks();
+  if (pos_ >= text_.size()) fail(field, "a word", "end of file");
+  std::size_t end = pos_;
+  while (end < text_.size() && !std::isspace(static_cast<unsigned char>(text_[end]))) ++end;
+  std::string word = text_.substr(pos_, end - pos_);
+  pos_ = end;
+  lastTokenLine_ = line_;
+  return word;
+}
+
+double TextReader::number(const std::string& field) {
+  skipBlanks();
+  if (pos_ >= text_.size()) fail(field, "a number", "end of file (too few numbers)");
+  const char* begin = text_.data() + pos_;
+  const char* end = text_.data() + text_.size();
+  const bool plus = *begin == '+';
+  if (plus) ++begin;  // from_chars does not take a leading '+', fscanf does
+  double value = 0;
+  auto [ptr, ec] = std::from_chars(begin, end, value);
+  const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
+  // "+-5": one sign only (from_chars would read the '-' after the skipped '+').
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "a number", peekWord());
+  if (!std::isfinite(value)) fail(field, "a finite number", peekWord() + " (NaN/Inf not allowed)");
+  pos_ = static_cast<std::size_t>(ptr - text_.data());
+  lastTokenLine_ = line_;
+  return value;
+}
+
+std::int16_t TextReader::int16(const std::string& field) {
+  skipBlanks();
+  if (pos_ >= text_.size()) fail(field, "an integer", "end of file (too few numbers)");
+  const char* begin = text_.data() + pos_;
+  const char* end = text_.data() + text_.size();
+  const bool plus = *begin == '+';
+  if (plus) ++begin;
+  long long value = 0;
+  auto [ptr, ec] = std::from_chars(begin, end, value);
+  const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "an integer", peekWord());
+  if (value < -32768 || value > 32767)
+    fail(field, "an integer in -32768..32767 (Turbo C's 16-bit int)", peekWord());
+  pos_ = static_cast<std::size_t>(ptr - text_.data());
+  lastTokenLine_ = line_;
+  return static_cast<std::int16_t>(value);
+}
+
+char TextReader::firstChar(const std::string& field) {
+  if (text_.empty()) fail(field, "a type letter at the very start of the file", "an empty file");
+  const char c = text_[0];
+  if (std::isspace(static_cast<unsigned char>(c)))
+    fail(field, "a type letter as the file's first byte (the listing reads it with %c, K36)",
+         "a blank");
+  pos_ = 1;
+  return c;
+}
+
+}  // namespace prime::io

@@ -1,0 +1,91 @@
+#include "legacy_io/prime/graph_file.h"
+
+namespace prime::io {
+
+std::vector<std::uint8_t> toBytes(const GraphFile& f) {
+  ByteWriter w;
+  w.reserve(2 * (3 + f.pixels.size()));
+  w.putInt16(f.graphType);
+  w.putInt16(f.numPixAcross);
+  w.putInt16(f.numPixDown);
+  for (auto p : f.pixels) w.putInt16(p);
+  return w.take();
+}
+
+GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::string& name) {
+  ByteReader r(bytes, name);
+  GraphFile f;
+  f.graphType = r.getInt16("graphType");
+  f.numPixAcross = r.getInt16("numPixAcross");
+  f.numPixDown = r.getInt16("numPixDown");
+  if (f.numPixAcross < 0 || f.numPixDown < 0)
+    throw InputError({name, std::nullopt, 2}, "numPixAcross/numPixDown", "non-negative sizes",
+                     std::to_string(f.numPixAcross) + " x " + std::to_string(f.numPixDown));
+  const std::size_t pixelBytes = r.remaining();
+  const std::size_t inclusiveCount =
+      static_cast<std::size_t>(f.numPixAcross + 1) * (f.numPixDown + 1);
+  const std::size_t exactCount = static_cast<std::size_t>(f.numPixAcross) * f.numPixDown;
+  if (pixelBytes == inclusiveCount * kTurboInt) {
+    f.inclusive = true;
+  } else if (pixelBytes == exactCount * kTurboInt) {
+    f.inclusive = false;
+  } else {
+    throw InputError({name, std::nullopt, bytes.size()}, "pixel data",
+                     std::to_string(inclusiveCount) + " pixels (" +
+                         std::to_string(f.numPixAcross + 1) + " x " +
+                         std::to_string(f.numPixDown + 1) + ", the listing's inclusive loops) or " +
+                         std::to_string(exactCount) + " pixels",
+                     std::to_string(pixelBytes) + " bytes (" + std::to_string(pixelBytes / 2) +
+                         " pixels" + (pixelBytes % 2 ? " and an odd byte" : "") + ")");
+  }
+  f.pixels.reserve(pixelBytes / 2);
+  while (r.remaining() > 0) f.pixels.push_back(r.getInt16("pixel"));
+  return f;
+}
+
+GraphFile readGraphFile(const std::string& path) {
+  return graphFileFromBytes(readFileBytes(path), path);
+}
+
+GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes,
+                                         const std::string& name) {
+  ByteReader r(bytes, name);
+  GraphFile f;
+  f.graphType = r.getInt16("graphType");
+  f.numPixAcross = r.getInt16("numPixAcross");
+  f.numPixDown = r.getInt16("numPixDown");
+  const std::size_t present = r.remaining() / kTurboInt;
+  const std::size_t inclusiveCount = f.numPixAcross < 0 || f.numPixDown < 0
+                                         ? 0
+                                         : static_cast<std::size_t>(f.numPixAcross + 1) *
+                                               static_cast<std::size_t>(f.numPixDown + 1);
+  if (f.numPixAcross < 0 || f.numPixDown < 0 || present >= inclusiveCount ||
+      present ==
+          static_cast<std::size_t>(f.numPixAcross) * static_cast<std::size_t>(f.numPixDown)) {
+    GraphFile whole = graphFileFromBytes(bytes, name);  // complete, or the usual error
+    const std::size_t n = whole.pixels.size();
+    return {std::move(whole), n};
+  }
+  // A cut-short file is padded to the size its header claims: bound that
+  // claim (a 6-byte file must not make us allocate gigabytes).
+  constexpr std::size_t kMaxPartialPixels = std::size_t{8192} * 8192;
+  if (inclusiveCount > kMaxPartialPixels)
+    throw InputError({name, std::nullopt, 2}, "numPixAcross/numPixDown of a partial graph file",
+                     "at most 8192 x 8192 pixels",
+                     std::to_string(f.numPixAcross + 1) + " x " + std::to_string(f.numPixDown + 1));
+  f.inclusive = true;
+  f.pixels.reserve(inclusiveCount);
+  for (std::size_t i = 0; i < present; ++i) f.pixels.push_back(r.getInt16("pixel"));
+  f.pixels.resize(inclusiveCount, 0);
+  return {std::move(f), present};
+}
+
+GraphFilePrefix readGraphFilePrefix(const std::string& path) {
+  return graphFilePrefixFromBytes(readFileBytes(path), path);
+}
+
+void writeGraphFile(const std::string& path, const GraphFile& f) {
+  writeFileAtomically(path, toBytes(f));
+}
+
+}  // namespace prime::io

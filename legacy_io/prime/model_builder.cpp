@@ -1,0 +1,331 @@
+#include "legacy_io/prime/model_builder.h"
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "legacy_io/prime/turbo_c.h"
+#include "src/prime/math/listing_matrix.h"
+
+namespace prime::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// One modelling run: the in-memory databases and the state the listing kept
+// in its open files and heap.
+class Modeller {
+ public:
+  Modeller(const SceneDir& scene, const ModelOptions& options) : scene_(scene), options_(options) {}
+
+  void run(const std::vector<ModelCall>& calls, const std::string& origin) {
+    for (const auto& call : calls) {
+      const std::string where = origin + ":" + std::to_string(call.line);
+      if (call.name == "AddObj") addObj(call.args[0], where);
+      else if (call.name == "AddToObjList") addToObjList(call.args[0], where);
+      else if (call.name == "CopyObj") copyObj(call.args[0], call.args[1], call.args[2], where);
+      else if (call.name == "AddMap") addMap(call.args[0], where);
+    }
+  }
+
+  Model take() { return std::move(model_); }
+
+ private:
+  TextReader openText(const std::string& sub, const std::string& name, const std::string& origin) {
+    const fs::path p = scene_.existingInput(sub, name, origin);
+    return TextReader::open(p.string(), scene_.display(p));
+  }
+
+  // NewPrimNum: the next record number of PrimFile.
+  std::int16_t newPrimNum(const std::string& origin) {
+    const std::size_t n = model_.prims.prims.size();
+    const std::size_t fileSize = n * kPrimSizePacked;
+    if (options_.limitPrimFileTo16Bits && fileSize > 32767)
+      throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",
+                       "at most 113 primitives and bounding volumes (numbers 0..112: NewPrimNum keeps "
+                       "ftell() in a 16-bit int, which wraps once PrimFile passes 32767 bytes, errata "
+                       "E40/K37; --no-16bit-limit numbers on)",
+                       "primitive number " + std::to_string(n));
+    if (n > 32767)
+      throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",
+                       "at most 32768 primitives (16-bit primitive numbers)", std::to_string(n + 1));
+    return static_cast<std::int16_t>(n);
+  }
+
+  std::int16_t writePrim(PrimRecord p, const std::string& origin) {
+    const std::int16_t num = newPrimNum(origin);
+    lastPrimType_ = p.type;
+    model_.prims.prims.push_back(std::move(p));
+    return num;
+  }
+
+  void invert(PrimRecord& p, const std::string& file) {
+    if (!inverse(p.transform, p.inverse))
+      throw InputError({file, std::nullopt, std::nullopt}, "transformation",
+                       "an invertible matrix (no zero scale factor)", "a singular matrix");
+  }
+
+  // AddPrim: prim/<opcode><n>.txt -> a new PrimFile record.
+  std::int16_t addPrim(char opcode, std::int16_t n, const std::string& origin) {
+    TextReader in = openText("prim", std::string(1, opcode) + std::to_string(n) + ".txt", origin);
+    const PrimText text = parsePrimText(in);
+    PrimRecord p;
+    p.type = text.type;
+    p.transform = identity4();
+    transform(p.transform, text.place.s, text.place.t, text.place.pivot, text.place.r);
+    invert(p, in.name());
+    p.map = text.map;  // slots beyond the surface count: 0 (K34)
+    p.priority = text.priority;
+    return writePrim(std::move(p), in.name());
+  }
+
+  // AddBound: bound/<letter><n>.txt; maps and priority never set (zeros).
+  std::int16_t addBound(char letter, std::int16_t n, const std::string& origin) {
+    TextReader in = openText("bound", std::string(1, letter) + std::to_string(n) + ".txt", origin);
+    const BoundText text = parseBoundText(in);
+    PrimRecord p;
+    p.type = text.type;
+    p.transform = identity4();
+    transform(p.transform, text.place.s, text.place.t, text.place.pivot, text.place.r);
+    invert(p, in.name());
+    return writePrim(std::move(p), in.name());
+  }
+
+  // CopyPrim: inverse * S * R * T * transform of the source, from prim/A<n>.txt.
+  std::int16_t copyPrim(const PrimRecord& src, std::int16_t copyFile, const std::string& origin) {
+    TextReader in = openText("prim", "A" + std::to_string(copyFile) + ".txt", origin);
+    const Placement place = parsePlacement(in);
+    PrimRecord p;
+    p.type = options_.copyTypeFromSource ? src.type : lastPrimType_;  // K33
+    p.transform = src.inverse;
+    scale(p.transform, place.s);
+    rotate(p.transform, place.r[X], place.r[Y], place.r[Z]);
+    translate(p.transform, place.t);
+    matrixMul(p.transform, src.transform);
+    invert(p, in.name());
+    p.map = src.map;
+    p.priority = src.priority;
+    return writePrim(std::move(p), in.name());
+  }
+
+  const PrimRecord& prim(int num, const std::string& origin) {
+    if (num < 0 || num >= static_cast<int>(model_.prims.prims.size()))
+      throw InputError({origin, std::nullopt, std::nullopt}, "primitive number",
+                       "0.." + std::to_string(model_.prims.prims.size()) + " (exclusive)",
+                       std::to_string(num));
+    return model_.prims.prims[num];
+  }
+
+  static ObjRecord record(char op, std::int16_t l, std::int16_t r) {
+    ObjRecord o;
+    o.opCode = {op, 0, 0, 0};  // bytes after the NUL: never written by the listing; zeros
+    o.l = l;
+    o.r = r;
+    return o;
+  }
+
+  // "d1.txt" -> "1": AddObj patches the first character of the name (to H, D
+  // and O) and takes the object number from the characters up to the '.'.
+  static std::string objectStem(const std::string& name, const std::string& origin) {
+    const auto dot = name.find('.');
+    bool ok = dot != std::string::npos && dot >= 2;
+    for (std::size_t i = 1; ok && i < dot; ++i) ok = std::isdigit(static_cast<unsigned char>(name[i]));
+    if (!ok)
+      throw InputError({origin, std::nullopt, std::nullopt}, "AddObj file name",
+                       "a letter, the object number and an extension, like \"d1.txt\"",
+                       "\"" + name + "\"");
+    return name.substr(1, dot - 1);
+  }
+
+  void addObj(const std::string& name, const std::string& origin) {
+    if (!isPlainFileName(name)) scene_.file("obj", name, origin);  // throws the path error
+    const std::string stem = objectStem(name, origin);
+    const std::string rest = name.substr(1);
+
+    ObjFile obj;
+    {
+      TextReader in = openText("obj", "H" + rest, origin);
+      obj.header.hue = parseHueText(in);
+    }
+    TextReader in = openText("obj", "D" + rest, origin);
+    const ObjText text = parseObjText(in);
+
+    for (const auto& e : text.entries) {
+      const std::string where = in.name() + ":" + std::to_string(e.line);
+      if (isLeafOpcode(e.op)) obj.entries.push_back(record('P', addPrim(e.op, e.l, where), 0));
+      else obj.entries.push_back(record(e.op, e.l, e.r));
+    }
+
+    // Replace each 'O' entry by the root of the named object and append the
+    // rest of it, re-numbered; its primitives are copied through CopyPrim.
+    for (std::size_t i = 0; i < obj.entries.size(); ++i) {
+      if (obj.entries[i].op() != 'O') continue;
+      const int line = text.entries[i].line;
+      const std::string where = in.name() + ":" + std::to_string(line);
+      const std::string srcName = "O" + std::to_string(obj.entries[i].l);
+      auto found = model_.objects.find(srcName);
+      if (found == model_.objects.end())
+        throw InputError({in.name(), line, std::nullopt}, "O entry source object",
+                         "an object built earlier in Model.txt (obj/" + srcName + ")",
+                         "object " + std::to_string(obj.entries[i].l) + ", which does not exist");
+      const ObjFile src = found->second;
+      // Checked before copying: each O entry can append up to 32766 entries,
+      // and 32767 O entries would otherwise build gigabytes before the check
+      // at the end.
+      if (obj.entries.size() + src.entries.size() - 1 > 32767)
+        throw InputError({in.name(), line, std::nullopt}, "numEntries",
+                         "at most 32767 entries after copying objects",
+                         std::to_string(obj.entries.size() + src.entries.size() - 1) + " once this O entry copies the " +
+                             std::to_string(src.entries.size()) + " entries of object " + srcName.substr(1));
+      const std::int16_t copyFile = obj.entries[i].r;
+      const auto offset = static_cast<std::int16_t>(obj.entries.size() - 1);
+      ObjRecord root = src.entries.at(0);
+      if (root.op() == 'P')
+        model_.warnings.push_back(where + ": O entry copies object " + srcName.substr(1) +
+                                  ", whose root is a primitive; as in the listing its primitive "
+                                  "number is offset like a child index (K33) and the copy is "
+                                  "broken");
+      root.l = static_cast<std::int16_t>(root.l + offset);
+      root.r = static_cast<std::int16_t>(root.r + offset);
+      obj.entries[i] = root;
+      for (std::size_t j = 1; j < src.entries.size(); ++j) {
+        ObjRecord e = src.entries[j];
+        switch (e.op()) {
+          case '+': case '-': case '&':
+            e.l = static_cast<std::int16_t>(e.l + offset);
+            e.r = static_cast<std::int16_t>(e.r + offset);
+            break;
+          case 'P': e.l = copyPrim(prim(e.l, where), copyFile, where); break;
+          default:
+            throw InputError({where, std::nullopt, std::nullopt}, "entry of object " + srcName,
+                             "an operator or primitive", std::string("opcode '") + e.op() + "'");
+        }
+        obj.entries.push_back(e);
+      }
+    }
+    if (obj.entries.size() > 32767)
+      throw InputError({in.name(), std::nullopt, std::nullopt}, "numEntries",
+                       "at most 32767 entries after copying objects", std::to_string(obj.entries.size()));
+    obj.header.numEntries = static_cast<std::int16_t>(obj.entries.size());
+    obj.header.boundVol = -1;
+    if (text.bound)
+      obj.header.boundVol = addBound(text.bound->first, text.bound->second,
+                                     in.name() + ":" + std::to_string(text.boundLine));
+    model_.objects["O" + stem] = std::move(obj);
+  }
+
+  void addToObjList(const std::string& arg, const std::string& origin) {
+    TextReader in(arg, origin);
+    const std::int16_t n = in.int16("AddToObjList object number");
+    if (!in.atEnd()) in.fail("AddToObjList object number", "an integer", "\"" + arg + "\"");
+    if (!model_.objects.count("O" + std::to_string(n)))
+      throw InputError({origin, std::nullopt, std::nullopt}, "AddToObjList object number",
+                       "an object built earlier in Model.txt", std::to_string(n) + " (no obj/O" +
+                                                                   std::to_string(n) + ")");
+    model_.list.objects.push_back(n);
+  }
+
+  // CopyObj: copy obj/<src> byte for byte to obj/<dest>, then TransferObj:
+  // every primitive (and the bound) gets Transform() applied to its own matrix
+  // and is written as a new PrimFile record.
+  void copyObj(const std::string& srcName, const std::string& destName, const std::string& copyTxt,
+               const std::string& origin) {
+    scene_.file("obj", srcName, origin);
+    scene_.file("obj", destName, origin);
+    // The destination becomes the file obj/<destName>: it must not be one of
+    // the other files of obj/, which writing it would replace (List, a text
+    // input) or cannot replace (the Copy/ folder).
+    const bool textInput = destName.ends_with(".txt") || destName.ends_with(".TXT");
+    if (destName == "List" || destName == "Copy" || textInput)
+      throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj destination object",
+                       "a name for a new object file in obj/ like O4 (not List, Copy or a .txt input)",
+                       "\"" + destName + "\"");
+    auto found = model_.objects.find(srcName);
+    if (found == model_.objects.end())
+      throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj source object",
+                       "an object built earlier in Model.txt", "\"" + srcName + "\"");
+    ObjFile dest = found->second;
+    TextReader in = openText("obj/Copy", copyTxt, origin);
+    const Placement place = parsePlacement(in);
+    auto transfer = [&](int num) {
+      PrimRecord p = prim(num, origin);
+      transform(p.transform, place.s, place.t, place.pivot, place.r);
+      invert(p, in.name());
+      return writePrim(std::move(p), in.name());
+    };
+    for (auto& e : dest.entries)
+      if (e.op() == 'P') e.l = transfer(e.l);
+    if (dest.header.boundVol != -1) dest.header.boundVol = transfer(dest.header.boundVol);
+    if (destName.size() < 2 || destName[0] != 'O' ||
+        destName.find_first_not_of("0123456789", 1) != std::string::npos)
+      model_.warnings.push_back(origin + ": CopyObj destination \"" + destName +
+                                "\" is not of the form O<number>; RayTrace can only open objects "
+                                "named that way");
+    model_.objects[destName] = std::move(dest);
+  }
+
+  void addMap(const std::string& name, const std::string& origin) {
+    TextReader in = openText("map", name, origin);
+    const MapText text = parseMapText(in);
+    for (int c = 0; c < 3; ++c) {
+      MapFile f;
+      f.header = text.header;
+      f.texels = text.planes[c];
+      model_.maps[mapFileName(text.mapNum, c)] = std::move(f);
+    }
+  }
+
+  const SceneDir& scene_;
+  ModelOptions options_;
+  Model model_;
+  char lastPrimType_ = 0;
+};
+
+}  // namespace
+
+Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls, const ModelOptions& options) {
+  Modeller m(scene, options);
+  m.run(calls, scene.display(scene.root() / "Model.txt"));
+  return m.take();
+}
+
+Model buildModel(const SceneDir& scene, const ModelOptions& options) {
+  const fs::path p = scene.existingInput(".", "Model.txt", "prime model");
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return buildModel(scene, parseModelText(text.str(), scene.display(p)), options);
+}
+
+void writeModel(const SceneDir& scene, const Model& model) {
+  // Encode everything first; then write all temporaries; then rename all.
+  std::vector<std::pair<fs::path, std::vector<std::uint8_t>>> files;
+  files.emplace_back(scene.root() / "prim" / "PrimFile", toBytes(model.prims));
+  files.emplace_back(scene.root() / "obj" / "List", toBytes(model.list));
+  for (const auto& [name, obj] : model.objects) files.emplace_back(scene.root() / "obj" / name, toBytes(obj));
+  for (const auto& [name, map] : model.maps) files.emplace_back(scene.root() / "map" / name, toBytes(map));
+
+  std::vector<fs::path> temps;
+  try {
+    for (const auto& [path, bytes] : files) {
+      fs::create_directories(path.parent_path());
+      if (fs::is_symlink(fs::symlink_status(path)))
+        throw InputError({scene.display(path), std::nullopt, std::nullopt},
+                         "is a symbolic link; refusing to write through it");
+      const fs::path tmp = path.string() + ".prime-tmp";
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      temps.push_back(tmp);
+      out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+      out.close();
+      if (!out) throw InputError({scene.display(path), std::nullopt, std::nullopt}, "cannot be written");
+    }
+  } catch (...) {
+    for (const auto& t : temps) fs::remove(t);
+    throw;
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) fs::rename(temps[i], files[i].first);
+}
+
+}  // namespace prime::io

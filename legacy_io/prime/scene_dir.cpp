@@ -1,0 +1,61 @@
+#include "legacy_io/prime/scene_dir.h"
+
+#include <vector>
+
+#include "legacy_io/common/error.h"
+
+namespace prime::io {
+
+namespace fs = std::filesystem;
+
+SceneDir::SceneDir(fs::path root) : root_(std::move(root)) {}
+
+bool isPlainFileName(const std::string& name) {
+  if (name.empty() || name == "." || name == "..") return false;
+  for (char c : name)
+    if (c == '/' || c == '\\' || c == ':' || c == '\0') return false;
+  return true;
+}
+
+std::string SceneDir::display(const fs::path& p) const {
+  // Lexical only: a symbolic link is shown by its own name, not its target.
+  const fs::path rel = p.lexically_relative(root_);
+  return (rel.empty() || *rel.begin() == ".." ? p : root_ / rel).lexically_normal().generic_string();
+}
+
+fs::path SceneDir::file(const std::string& sub, const std::string& name,
+                        const std::string& origin) const {
+  if (!isPlainFileName(name))
+    throw InputError({origin, std::nullopt, std::nullopt}, "file name",
+                     "a plain file name inside the scene's " + sub +
+                         "/ directory (no '..', no '/' or '\\', no drive letter)",
+                     "\"" + name + "\"");
+  // Longer names make every file system call fail (ENAMETOOLONG), which
+  // std::filesystem reports as an exception of its own, not as bad input.
+  if (name.size() > kMaxFileName)
+    throw InputError({origin, std::nullopt, std::nullopt}, "file name",
+                     "at most " + std::to_string(kMaxFileName) + " bytes (the file system's NAME_MAX)",
+                     std::to_string(name.size()) + " bytes (\"" + name.substr(0, 40) + "...\")");
+  return root_ / sub / name;
+}
+
+fs::path SceneDir::existingInput(const std::string& sub, const std::string& name,
+                                 const std::string& origin) const {
+  const fs::path p = file(sub, name, origin);
+  std::vector<fs::path> chain;
+  fs::path dir = root_;
+  for (const auto& part : fs::path(sub)) chain.push_back(dir /= part);
+  chain.push_back(p);
+  for (const fs::path& q : chain) {
+    if (fs::is_symlink(fs::symlink_status(q)))
+      throw InputError({display(q), std::nullopt, std::nullopt},
+                       "is a symbolic link; scene files must be real files inside the scene "
+                       "directory (named by " + origin + ")");
+  }
+  if (!fs::exists(p))
+    throw InputError({display(p), std::nullopt, std::nullopt},
+                     "file does not exist (named by " + origin + ")");
+  return p;
+}
+
+}  // namespace prime::io

@@ -1,0 +1,124 @@
+#include "palette/prime/export.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace prime {
+
+namespace {
+
+Image8 blank(int w, int h) {
+  Image8 img;
+  img.width = w;
+  img.height = h;
+  img.rgb.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 0);
+  return img;
+}
+
+void set(Image8& img, int x, int y, Rgb8 c) {
+  std::uint8_t* p =
+      &img.rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + x) * 3];
+  p[0] = c.r;
+  p[1] = c.g;
+  p[2] = c.b;
+}
+
+Rect imageAreaOrThrow(int screenWidth, int screenHeight, const io::GraphFile& graph, Placement at) {
+  const Rect area = intersect({0, 0, screenWidth, screenHeight},
+                              {at.left, at.top, graph.width(), graph.height()});
+  if (area.empty())
+    throw std::runtime_error("the " + std::to_string(graph.width()) + " x " +
+                             std::to_string(graph.height()) + " image at (" +
+                             std::to_string(at.left) + ", " + std::to_string(at.top) +
+                             ") lies entirely off the " + std::to_string(screenWidth) + " x " +
+                             std::to_string(screenHeight) + " screen; use --area file or --at");
+  return area;
+}
+
+}  // namespace
+
+std::string_view imageAreaName(ImageArea area) {
+  switch (area) {
+    case ImageArea::Screen:
+      return "screen";
+    case ImageArea::File:
+      return "file";
+    case ImageArea::Image:
+      break;
+  }
+  return "image";
+}
+
+std::optional<ImageArea> imageAreaFromName(std::string_view name) {
+  for (ImageArea a : {ImageArea::Image, ImageArea::Screen, ImageArea::File})
+    if (name == imageAreaName(a)) return a;
+  return std::nullopt;
+}
+
+Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area) {
+  area = intersect(area, screen.bounds());
+  Image8 img = blank(area.w, area.h);
+  for (int y = 0; y < area.h; ++y) {
+    const auto row = screen.row(area.y + y);
+    for (int x = 0; x < area.w; ++x)
+      set(img, x, y, colours[row[static_cast<std::size_t>(area.x + x)]]);
+  }
+  return img;
+}
+
+Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent,
+                   Placement at, const Rgb8Table& colours, ImageArea area) {
+  switch (area) {
+    case ImageArea::Screen:
+      return screenImage(screen, colours, screen.bounds());
+    case ImageArea::File: {
+      Image8 img = blank(graph.width(), graph.height());
+      for (std::size_t i = 0; i < graph.pixels.size(); ++i) {
+        const int index = i < pixelsPresent ? (graph.pixels[i] & 0xFF) : 0;  // Q12
+        const int w = graph.width();
+        set(img, static_cast<int>(i % static_cast<std::size_t>(w)),
+            static_cast<int>(i / static_cast<std::size_t>(w)),
+            colours[static_cast<std::size_t>(index)]);
+      }
+      return img;
+    }
+    case ImageArea::Image:
+      break;
+  }
+  return screenImage(screen, colours, imageAreaOrThrow(screen.width(), screen.height(), graph, at));
+}
+
+Rgb8 trueColour(const Rgb& c) {
+  auto to8 = [](double v) -> std::uint8_t {
+    if (std::isnan(v) || v <= 0.0) return 0;
+    if (v >= 1.0) return 255;
+    return static_cast<std::uint8_t>(std::lround(v * 255.0));
+  };
+  return {to8(c[0]), to8(c[1]), to8(c[2])};
+}
+
+Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph,
+                        std::span<const Rgb> rgb, Placement at, ImageArea area) {
+  const int gw = graph.width(), gh = graph.height();
+  if (rgb.size() != static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh))
+    throw std::invalid_argument("exportTrueColour: one colour per graph-file pixel expected");
+  auto colourAt = [&](int gx, int gy) {
+    return trueColour(rgb[static_cast<std::size_t>(gy) * gw + gx]);
+  };
+  if (area == ImageArea::File) {
+    Image8 img = blank(gw, gh);
+    for (int y = 0; y < gh; ++y)
+      for (int x = 0; x < gw; ++x) set(img, x, y, colourAt(x, y));
+    return img;
+  }
+  const Rect on = imageAreaOrThrow(screenWidth, screenHeight, graph, at);
+  const Rect frame = area == ImageArea::Screen ? Rect{0, 0, screenWidth, screenHeight} : on;
+  Image8 img = blank(frame.w, frame.h);
+  for (int y = on.y; y < on.y + on.h; ++y)
+    for (int x = on.x; x < on.x + on.w; ++x)
+      set(img, x - frame.x, y - frame.y, colourAt(x - at.left, y - at.top));
+  return img;
+}
+
+}  // namespace prime

@@ -1,0 +1,41 @@
+// What a window shows: a picture that render threads draw into while the
+// window's thread looks, any system's. PRIME's is the emulated 8514/A screen
+// seen through a palette and a DAC (palette/prime/live_screen.h); a system
+// that renders true colour gives rows of RGB. The window only ever asks for
+// the rectangle that changed, as XRGB8888, and scales it by its zoom.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "palette/rect.h"
+#include "palette/window/window_module.h"
+
+namespace prime::display {
+
+class LiveFrame {
+ public:
+  virtual ~LiveFrame() = default;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+
+  // The window's thread: if anything changed since the last call, writes the
+  // changed rectangle as XRGB8888 (0x00RRGGBB), row by row, w * h values,
+  // into `pixels` and returns the rectangle; otherwise returns an empty one.
+  virtual Rect takeDirty(std::vector<std::uint32_t>& pixels) = 0;
+  // Any thread: the whole frame counts as changed (the window was resized,
+  // the frame's colours changed).
+  virtual void markAllDirty() = 0;
+  // Any thread: something waits to be taken.
+  virtual bool dirty() const = 0;
+
+  // Keys that mean something for this frame only (PRIME: P the next palette,
+  // D the next DAC conversion). True when the key was used: the window then
+  // redraws everything and updates its title.
+  virtual bool onKey(module::Key) { return false; }
+  // What the window's title says about the frame ("palette listing (DAC
+  // round)"), or nothing.
+  virtual std::string describe() const { return {}; }
+};
+
+}  // namespace prime::display

@@ -1,0 +1,47 @@
+// prime export GRAPHFILE OUT.png: the picture a graph file makes on the
+// emulated 8514/A screen, as a PNG.
+#include <iostream>
+
+#include "src/cli/commands.h"
+#include "src/cli/prime/display_options.h"
+
+namespace prime::cli {
+
+void addExportCommand(CLI::App& app, Action& action) {
+  auto* cmd =
+      app.add_subcommand("export", "Write the picture of a graph file as PNG, through a palette");
+  auto file = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  auto quiet = std::make_shared<bool>(false);
+  auto o = std::make_shared<DisplayOptions>();
+  cmd->add_option("GRAPHFILE", *file, "Graph file (graph_scr, or the .partial of an aborted trace)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("OUT", *out, "PNG file to write")->required();
+  addPaletteOption(cmd, *o, "from the file's graphType (0: vga, else listing)");
+  addDacOption(cmd, *o);
+  addAreaOption(cmd, *o, "--area");
+  addGeometryOptions(cmd, *o);
+  cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
+  cmd->callback([=, &action] {
+    action = [=] {
+      const Geometry g = geometryOf(*o);
+      const io::GraphFilePrefix f = readGraphForDisplay(*file, g, *quiet);
+      const Palette palette = paletteOf(*o, paletteNameForGraphType(f.graph.graphType));
+      Screen screen(g.width, g.height);
+      drawGraph(screen, f.graph, g.at, f.pixelsPresent);
+      const Image8 img = exportImage(screen, f.graph, f.pixelsPresent, g.at,
+                                     present(palette.dac, dacOf(*o)), areaOf(*o));
+      writePng(*out, img);
+      if (!*quiet)
+        std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
+                  << " area; the file's " << f.graph.width() << " x " << f.graph.height()
+                  << " pixels at (" << g.at.left << ", " << g.at.top << ") on a " << g.width
+                  << " x " << g.height << " screen), palette " << palette.name << ", DAC " << o->dac
+                  << "\n";
+      return 0;
+    };
+  });
+}
+
+}  // namespace prime::cli

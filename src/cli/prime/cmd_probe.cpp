@@ -1,0 +1,85 @@
+// prime probe DIR --pixel X Y | --ray ox oy oz dx dy dz: explain one pixel.
+#include <iostream>
+
+#include "palette/prime/color_num.h"
+#include "src/cli/commands.h"
+#include "src/cli/prime/render_options.h"
+
+namespace prime::cli {
+
+void addProbeCommand(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand(
+      "probe", "Explain one pixel: its whole ray tree, tests, hit, texture and shading");
+  auto dir = std::make_shared<std::string>();
+  auto pixel = std::make_shared<std::vector<int>>();
+  auto ray = std::make_shared<std::vector<double>>();
+  auto asJson = std::make_shared<bool>(false);
+  auto options = std::make_shared<RenderOptions>();
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  auto* px =
+      cmd->add_option(
+             "--pixel", *pixel,
+             "Column and row of the rendered image, 0-based from its top-left (graph-file order)")
+          ->expected(2)
+          ->allow_extra_args(false);
+  auto* rx = cmd->add_option("--ray", *ray, "A world-space ray: origin x y z, direction x y z")
+                 ->expected(6)
+                 ->allow_extra_args(false);
+  px->excludes(rx);
+  cmd->add_flag("--json", *asJson, "Print JSON (one object with an events array)");
+  addRenderOptions(cmd, *options);
+  cmd->callback([=, &action] {
+    action = [=] {
+      if (pixel->empty() && ray->empty())
+        throw CLI::ValidationError("probe", "give --pixel X Y or --ray ox oy oz dx dy dz");
+      finishRenderOptions(*options);
+      const Scene scene = prepareScene(*dir, options->model);
+      const ListingCamera camera(options->settings.camera);
+      Ray r;
+      std::string where;
+      if (!pixel->empty()) {
+        const int x = (*pixel)[0], y = (*pixel)[1];
+        if (x < 0 || x >= camera.columns() || y < 0 || y >= camera.rows())
+          throw CLI::ValidationError("--pixel", "pixel " + std::to_string(x) + " " +
+                                                    std::to_string(y) + " is outside the image (" +
+                                                    std::to_string(camera.columns()) + " x " +
+                                                    std::to_string(camera.rows()) + ")");
+        r = camera.primaryRay(y, x);
+        where = "pixel " + std::to_string(x) + " " + std::to_string(y) + " (screen " +
+                std::to_string(camera.screenX(x)) + ", " + std::to_string(camera.screenY(y)) + ")";
+      } else {
+        r.o = {(*ray)[0], (*ray)[1], (*ray)[2]};
+        r.d = {(*ray)[3], (*ray)[4], (*ray)[5]};
+        where = "ray from " + fmt(r.o) + " towards " + fmt(r.d);
+      }
+      const Tracer1991 tracer(scene, options->settings.trace);
+      TraceStats stats;
+      Probe probe;
+      const Rgb color = tracer.castRay(r, 0, stats, &probe);
+      const int index = paletteIndex(color, options->settings, stats);
+      const PaletteTable table =
+          options->settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
+      const PaletteRgb shown = table[static_cast<std::size_t>(index & 0xFF)];
+      if (*asJson) {
+        std::cout << "{\"scene\":\"" << scene.name << "\",\"where\":\"" << where
+                  << "\",\"events\":[";
+        for (std::size_t i = 0; i < probe.events.size(); ++i)
+          std::cout << (i ? "," : "") << "{\"depth\":" << probe.events[i].depth << ",\"event\":\""
+                    << probe.events[i].kind << "\",\"data\":" << probe.events[i].json << "}";
+        std::cout << "],\"color\":" << json(Vec3{color[0], color[1], color[2]})
+                  << ",\"index\":" << index << ",\"paletteRgb\":[" << shown.r << "," << shown.g
+                  << "," << shown.b << "],\"rays\":" << stats.rays() << "}\n";
+      } else {
+        std::cout << scene.name << ": " << where << "\n";
+        for (const auto& e : probe.events)
+          std::cout << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
+        std::cout << "colour " << fmt(Vec3{color[0], color[1], color[2]}) << " -> palette index "
+                  << index << " = (" << shown.r << ", " << shown.g << ", " << shown.b
+                  << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace prime::cli

@@ -1,0 +1,93 @@
+#include "src/cli/prime/display_options.h"
+
+#include <iostream>
+
+namespace prime::cli {
+
+void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText) {
+  cmd->add_option("--palette", o.palette,
+                  "Palette: listing, plate3, vga, or a palette file (docs/prime/palette.md); default: " +
+                      defaultText);
+}
+
+void addDacOption(CLI::App* cmd, DisplayOptions& o) {
+  cmd->add_option("--dac", o.dac,
+                  "How the 6-bit DAC values become 8-bit: round (default), replicate, truncate")
+      ->check(CLI::IsMember({"round", "replicate", "truncate"}));
+}
+
+void addAreaOption(CLI::App* cmd, DisplayOptions& o, const std::string& name) {
+  cmd->add_option(
+         name, o.area,
+         "PNG area: image (the part of the screen the picture covers; default), screen (all "
+         "1024x768), file (every pixel in the graph file)")
+      ->check(CLI::IsMember({"image", "screen", "file"}));
+}
+
+void addGeometryOptions(CLI::App* cmd, DisplayOptions& o) {
+  cmd->add_option("--screen", o.screen, "Emulated screen size W H (default: 1024 768, the 8514/A)")
+      ->expected(2)
+      ->allow_extra_args(false);
+  cmd->add_option("--at", o.at,
+                  "Screen position X Y of the file's first pixel (default: where RayTrace.c drew, "
+                  "AssignScrPts(0.66, 0, ...): 675 0)")
+      ->expected(2)
+      ->allow_extra_args(false);
+}
+
+void addWindowOptions(CLI::App* cmd, DisplayOptions& o) {
+  cmd->add_flag("--no-window", o.noWindow,
+                "Do not open a window (also the case when there is no DISPLAY)");
+  cmd->add_option("--zoom", o.zoom, "Window zoom, an integer 1..8 (keys + and - change it)")
+      ->check(CLI::Range(1, 8));
+}
+
+DacTo8 dacOf(const DisplayOptions& o) {
+  return dacTo8FromName(o.dac).value_or(kDefaultDacTo8);
+}
+
+ImageArea areaOf(const DisplayOptions& o) {
+  return imageAreaFromName(o.area).value_or(ImageArea::Image);
+}
+
+Palette paletteOf(const DisplayOptions& o, const std::string& impliedName) {
+  return resolvePalette(o.palette.empty() ? impliedName : o.palette);
+}
+
+std::vector<Palette> windowPalettes(const Palette& first) {
+  std::vector<Palette> all{first};
+  for (const auto& name : builtinPaletteNames())
+    if (name != first.name) all.push_back(*findBuiltinPalette(name));
+  return all;
+}
+
+Geometry geometryOf(const DisplayOptions& o) {
+  Geometry g;
+  if (o.screen.size() == 2) {
+    g.width = o.screen[0];
+    g.height = o.screen[1];
+  }
+  g.at = o.at.size() == 2 ? Placement{o.at[0], o.at[1]} : listingPlacement(g.width, g.height);
+  return g;
+}
+
+io::GraphFilePrefix readGraphForDisplay(const std::string& path, const Geometry& g, bool quiet) {
+  io::GraphFilePrefix f = io::readGraphFilePrefix(path);
+  if (quiet) return f;
+  const int w = f.graph.width();
+  if (!f.complete())
+    std::cerr << "prime: " << path
+              << ": partial graph file (an aborted trace): " << f.pixelsPresent / w << " of "
+              << f.graph.height() << " rows; the rest is not drawn\n";
+  // The listing's own file overhangs by one column and one row (K21); more
+  // than that means the screen or the position is not the one it was made for.
+  const long long right = static_cast<long long>(g.at.left) + f.graph.numPixAcross;
+  const long long bottom = static_cast<long long>(g.at.top) + f.graph.numPixDown;
+  if (g.at.left < 0 || g.at.top < 0 || right > g.width || bottom > g.height)
+    std::cerr << "prime: warning: the " << w << " x " << f.graph.height() << " image at ("
+              << g.at.left << ", " << g.at.top << ") does not fit the " << g.width << " x "
+              << g.height << " screen; part of it is clipped (see --screen and --at)\n";
+  return f;
+}
+
+}  // namespace prime::cli

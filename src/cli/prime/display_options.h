@@ -1,0 +1,55 @@
+// Options shared by the commands that show or write pictures of the emulated
+// 8514/A screen (`trace`, `view`, `export`, `diff`, `palette`): palette, DAC
+// conversion, screen geometry, image area, window.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "legacy_io/prime/graph_file.h"
+#include "palette/prime/dac.h"
+#include "palette/prime/export.h"
+#include "palette/prime/palettes.h"
+#include "palette/prime/screen.h"
+
+namespace prime::cli {
+
+struct DisplayOptions {
+  std::string palette;         // empty: the one the graph type (or the mapping) implies
+  std::string dac = "round";   // 6-to-8-bit conversion
+  std::string area = "image";  // PNG area
+  std::vector<int> at;         // --at X Y
+  std::vector<int> screen;     // --screen W H (view, export)
+  int zoom = 1;
+  bool noWindow = false;
+};
+
+void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText);
+void addDacOption(CLI::App* cmd, DisplayOptions& o);
+void addAreaOption(CLI::App* cmd, DisplayOptions& o, const std::string& name);
+// --screen W H and --at X Y, for a graph file whose screen is not known.
+void addGeometryOptions(CLI::App* cmd, DisplayOptions& o);
+// --no-window and --zoom.
+void addWindowOptions(CLI::App* cmd, DisplayOptions& o);
+
+DacTo8 dacOf(const DisplayOptions& o);
+ImageArea areaOf(const DisplayOptions& o);
+// The palette to show: --palette if given, else `impliedName`.
+Palette paletteOf(const DisplayOptions& o, const std::string& impliedName);
+// `first`, then the other built-in palettes: what the window's P key cycles.
+std::vector<Palette> windowPalettes(const Palette& first);
+
+struct Geometry {
+  int width = Screen::kWidth, height = Screen::kHeight;
+  Placement at;
+};
+// --screen (default 1024 x 768) and --at (default: the listing's placement).
+Geometry geometryOf(const DisplayOptions& o);
+
+// Reads a graph file, complete or cut short; says on stderr when it is partial
+// and when the image does not fit the screen (beyond the listing's off-screen
+// column and row).
+io::GraphFilePrefix readGraphForDisplay(const std::string& path, const Geometry& g, bool quiet);
+
+}  // namespace prime::cli

@@ -1,0 +1,30 @@
+// Options shared by `prime trace` and `prime probe`: the camera and window of
+// RayTrace.c (each listing constant overridable), the tracing limits, and the
+// staleness check of the scene's databases.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "src/cli/prime/camera_options.h"
+#include "src/prime/render/renderer.h"
+
+namespace prime::cli {
+
+struct RenderOptions {
+  RenderSettings settings;
+  CameraOptions camera;
+  bool model = false;  // --model: run `prime model` first
+  std::string palette = "listing";
+  std::string profile = "1991";
+  int samples = 1;
+  double adaptiveTolerance = -1.0;  // < 0: off
+};
+
+void addRenderOptions(CLI::App* cmd, RenderOptions& o);
+// Copies the parsed vectors into o.settings.
+void finishRenderOptions(RenderOptions& o);
+// Loads the scene, after modelling it (`model`: --model) or checking that its
+// databases are up to date (else an InputError saying what to run).
+Scene prepareScene(const std::string& dir, bool model);
+
+}  // namespace prime::cli

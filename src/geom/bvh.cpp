@@ -1,0 +1,42 @@
+#include "src/geom/bvh.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace prime {
+
+Bvh::Bvh(std::vector<Aabb> boxes) : boxes_(std::move(boxes)) {
+  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i)
+    if (!boxes_[i].empty()) order_.push_back(i);
+  if (!order_.empty()) build(0, static_cast<int>(order_.size()), 0);
+}
+
+// Median split on the longest axis of the box centres; leaves of <= 4.
+int Bvh::build(int first, int count, int depth) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back({});
+  Aabb box, centres;
+  for (int k = first; k < first + count; ++k) {
+    box.add(boxes_[order_[k]]);
+    centres.add(boxes_[order_[k]].centre());
+  }
+  nodes_[index].box = box;
+  if (count <= 4 || depth >= 60) {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return index;
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (centres.hi[i] - centres.lo[i] > centres.hi[axis] - centres.lo[axis]) axis = i;
+  const int mid = first + count / 2;
+  std::nth_element(order_.begin() + first, order_.begin() + mid, order_.begin() + first + count,
+                   [&](int a, int b) { return boxes_[a].centre()[axis] < boxes_[b].centre()[axis]; });
+  const int left = build(first, mid - first, depth + 1);
+  const int right = build(mid, first + count - mid, depth + 1);
+  nodes_[index].left = left;
+  nodes_[index].right = right;
+  return index;
+}
+
+}  // namespace prime

@@ -1,0 +1,88 @@
+// A bounding volume hierarchy over any set of boxes (a system's objects,
+// primitives or triangles), so that a ray visits only the boxes it meets,
+// nearest first. It prunes a box only when the box starts strictly beyond
+// the caller's limit, so a caller that keeps the nearest hit (and breaks ties
+// by its own order) gets exactly what a linear search over all boxes gives.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "src/geom/aabb.h"
+
+namespace prime {
+
+class Bvh {
+ public:
+  Bvh() = default;
+  // Boxes keep their index; empty boxes are never visited.
+  explicit Bvh(std::vector<Aabb> boxes);
+
+  // Calls visit(index, boxEntry) for every box the ray meets at
+  // boxEntry <= limit(), nearest box first. `limit` is re-read after each
+  // visit, so the caller can shrink it as hits are found.
+  template <class Visit, class Limit>
+  void traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const;
+
+  const Aabb& box(int index) const { return boxes_[index]; }
+  std::span<const Aabb> boxes() const { return boxes_; }
+
+ private:
+  struct Node {
+    Aabb box;
+    int left = -1, right = -1;  // children, or -1 for a leaf
+    int first = 0, count = 0;   // leaf: range in order_
+  };
+  int build(int first, int count, int depth);
+  std::vector<Aabb> boxes_;
+  std::vector<int> order_;  // box indices, grouped by leaf
+  std::vector<Node> nodes_;
+};
+
+template <class Visit, class Limit>
+void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
+  if (nodes_.empty()) return;
+  struct Item {
+    int node;
+    double t;
+  };
+  // The node in hand is kept in registers, not pushed and popped: most rays
+  // meet one or two nodes, and a push followed at once by its pop stalls on
+  // store-to-load forwarding.
+  Item stack[64];
+  int top = 0;
+  int node = 0;
+  if (!(nodes_[0].box.entry(ray) <= limit())) return;
+  for (;;) {
+    const Node& n = nodes_[node];
+    bool descend = false;
+    if (n.left < 0) {
+      for (int k = n.first; k < n.first + n.count; ++k) {
+        const int index = order_[k];
+        const double t = boxes_[index].entry(ray);
+        if (t <= limit()) visit(index, t);
+      }
+    } else {
+      // The nearer child next, the farther one onto the stack.
+      const double tl = nodes_[n.left].box.entry(ray), tr = nodes_[n.right].box.entry(ray);
+      const bool leftFirst = tl <= tr;
+      const int nearNode = leftFirst ? n.left : n.right, farNode = leftFirst ? n.right : n.left;
+      const double tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
+      if (tFar <= limit()) stack[top++] = {farNode, tFar};
+      if (tNear <= limit()) {
+        node = nearNode;
+        descend = true;
+      }
+    }
+    if (descend) continue;
+    for (;;) {  // the nearest waiting node that can still hold a nearer hit
+      if (top == 0) return;
+      const Item it = stack[--top];
+      if (it.t <= limit()) {
+        node = it.node;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace prime

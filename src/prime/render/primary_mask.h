@@ -1,0 +1,39 @@
+// Which pixels' primary rays can meet any object at all. Every primary ray
+// starts at the eye, so an object's box is seen through a fixed region of the
+// image: the central projection of the box onto the window, which is the
+// convex hull of its eight corners' projections when the whole box lies in
+// front of the eye. Pixels outside every object's projected rectangle (widened
+// by two pixels for rounding and for supersampling offsets of up to half a
+// pixel) get the background without a ray: the box tests they would run
+// cannot accept the ray, so the pixel is the one the tracer would return.
+// A box that reaches behind the eye, or a degenerate camera, covers every
+// pixel (the mask is then simply not used).
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "src/prime/render/camera.h"
+#include "src/geom/aabb.h"
+
+namespace prime {
+
+class PrimaryRayMask {
+ public:
+  // `boxes`: every object's box as the tracer's box tests see it (empty
+  // boxes are objects that cannot be hit).
+  PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes);
+
+  // False only when no primary ray through (row, column)'s footprint can meet a box.
+  bool mayHit(int row, int column) const {
+    return covered_.empty() || covered_[static_cast<std::size_t>(row) * columns_ + column] != 0;
+  }
+  // The share of pixels that need a ray (1 when the mask covers everything).
+  double coverage() const;
+
+ private:
+  int rows_ = 0, columns_ = 0;
+  std::vector<std::uint8_t> covered_;  // empty: every pixel may hit
+};
+
+}  // namespace prime

@@ -1,0 +1,67 @@
+// RayTrace.c's main loop: one ray tree per pixel of the listing's window,
+// ColorNum'ed to a palette index and collected into a graph file. Rows are
+// rendered in parallel; each pixel is independent and written to its own slot,
+// so the bytes are the same for any thread count.
+#pragma once
+#include <atomic>
+#include <functional>
+
+#include "legacy_io/prime/graph_file.h"
+#include "src/prime/render/camera.h"
+#include "src/prime/render/tracer_1991.h"
+
+namespace prime {
+
+enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
+
+// Rays per pixel. Single is the listing (one ray through the window point);
+// Grid shoots n x n rays over the pixel's footprint; Adaptive is Whitted's
+// adaptive supersampling (thesis 2.6.1): the centre and four corners, and the
+// four quarters again wherever those differ by more than `tolerance` in any
+// channel, down to `maxLevel` subdivisions.
+struct Sampling {
+  enum class Mode { Single, Grid, Adaptive } mode = Mode::Single;
+  int gridN = 1;
+  double tolerance = 0.05;
+  int maxLevel = 2;
+};
+
+enum class Profile { Listing1991, Modern };
+
+struct RenderSettings {
+  Profile profile = Profile::Listing1991;
+  CameraSettings camera;
+  Sampling sampling;
+  TraceOptions trace;
+  int threads = 0;    // 0: all cores
+  int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
+  ColorMapping mapping = ColorMapping::Listing;
+  // Keep every pixel's unquantised colour in RenderResult::rgb (true-colour
+  // PNG, prime bench); false leaves rgb empty and saves its memory.
+  bool keepColours = true;
+};
+
+struct RenderResult {
+  io::GraphFile graph;   // header 349 x 768 etc., (across+1) x (down+1) pixels
+  std::vector<Rgb> rgb;  // the unquantised colour of each pixel, same order
+  TraceStats stats;
+  double seconds = 0;
+  int threads = 1;
+  bool aborted = false;  // stopped by `abort` before the last row
+};
+
+struct RenderCallbacks {
+  // Called on the calling thread about five times a second and once at the end.
+  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
+  // Called on the calling thread for every finished row, in no fixed order.
+  std::function<void(int row, const std::vector<std::int16_t>& rowIndices)> rowDone;
+  const std::atomic<bool>* abort = nullptr;
+};
+
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const RenderCallbacks& callbacks = {});
+
+// One pixel's index from its colour, as the settings map it.
+int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& stats);
+
+}  // namespace prime

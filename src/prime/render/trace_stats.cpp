@@ -1,0 +1,24 @@
+#include "src/prime/render/trace_stats.h"
+
+namespace prime {
+
+TraceStats& TraceStats::operator+=(const TraceStats& o) {
+  primaryRays += o.primaryRays;
+  reflectedRays += o.reflectedRays;
+  transmittedRays += o.transmittedRays;
+  boundTests += o.boundTests;
+  objectTests += o.objectTests;
+  primitiveTests += o.primitiveTests;
+  hits += o.hits;
+  maskedPrimaryRays += o.maskedPrimaryRays;
+  totalInternalReflections += o.totalInternalReflections;
+  emptyTransmitLists += o.emptyTransmitLists;
+  cappedTirLoops += o.cappedTirLoops;
+  failedTexelReads += o.failedTexelReads;
+  noFaceMatched += o.noFaceMatched;
+  nanColours += o.nanColours;
+  indicesOutOfRange += o.indicesOutOfRange;
+  return *this;
+}
+
+}  // namespace prime

@@ -1,0 +1,357 @@
+#include "src/prime/render/tracer_1991.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "src/prime/geom/primitives_1991.h"
+#include "src/prime/geom/uv_mapping_1991.h"
+#include "src/prime/math/listing_math.h"
+#include "src/prime/render/texture_lookup.h"
+#include "src/prime/math/listing_vec.h"
+
+namespace prime {
+
+namespace {
+constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
+}
+
+Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
+    : scene_(scene), options_(options), bvh_(scene) {
+  if (options_.skipUnneededWork) options_.csg.skipRightWhenLeftEmpty = true;  // Q4
+  for (const auto& obj : scene.objects)
+    programs_.push_back(CsgProgram1991::compile(obj.entries, options_.csg));
+  for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+  if (options_.skipUnneededWork)
+    hallSkipping_ =
+        HallSkipping::forScene(lights_, {scene.ambient[0], scene.ambient[1], scene.ambient[2]});
+}
+
+std::vector<Aabb> Tracer1991::primaryMaskBoxes() const {
+  std::vector<Aabb> boxes;
+  for (const SceneObject& obj : scene_.objects)
+    for (const CsgEntry& e : obj.entries)
+      if (e.op == 'P' && !bvh_.objectBox(static_cast<int>(&obj - scene_.objects.data())).empty())
+        boxes.push_back(bvh_.primBox(e.l));
+  return boxes;
+}
+
+bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
+                           int depth) const {
+  if (obj.boundPrim == -1) return true;  // no bounding volume
+  ++stats.boundTests;
+  const ScenePrim& b = scene_.prims[obj.boundPrim];
+  const bool hit = boundHit1991(b.type, transformRay(ray, b.inverse));
+  if (probe)
+    probe->add(depth, "bound",
+               "object " + std::to_string(obj.number) + ": bounding " + io::primTypeName(b.type) +
+                   " (prim " + std::to_string(obj.boundPrim) + ") " +
+                   (hit ? "hit" : "missed: object skipped"),
+               "{\"object\":" + std::to_string(obj.number) + ",\"boundPrim\":" +
+                   std::to_string(obj.boundPrim) + ",\"hit\":" + (hit ? "true" : "false") + "}");
+  return hit;
+}
+
+// IntersectObj's CSG(): the object's Roth list for `ray`.
+TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, TraceStats& stats,
+                             Probe* probe, int depth) const {
+  const Ray& ray = boxRay.ray;
+  ++stats.objectTests;
+  const bool cull = options_.skipUnneededWork && !probe;
+  auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+    // A ray that misses the primitive's (padded) box ahead cannot hit it.
+    if (cull && bvh_.primBox(primNum).entry(boxRay) == std::numeric_limits<double>::infinity())
+      return std::nullopt;
+    ++stats.primitiveTests;
+    const ScenePrim& p = scene_.prims[primNum];
+    PrimHit hit;
+    const bool ok = intersectPrimitive1991(p.type, transformRay(ray, p.inverse), hit);
+    if (probe) {
+      std::string text = "object " + std::to_string(obj.number) + " prim " +
+                         std::to_string(primNum) + " (" + io::primTypeName(p.type) + "): ";
+      text += ok ? "in " + fmt(hit.tIn) + " n " + fmt(hit.nIn) + ", out " + fmt(hit.tOut) + " n " +
+                       fmt(hit.nOut)
+                 : "miss";
+      probe->add(depth, "primitive", text,
+                 "{\"object\":" + std::to_string(obj.number) +
+                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" + p.type +
+                     "\",\"hit\":" + (ok ? "true" : "false") +
+                     (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) +
+                               ",\"nIn\":" + json(hit.nIn) + ",\"nOut\":" + json(hit.nOut)
+                         : std::string()) +
+                     "}");
+    }
+    if (!ok) return std::nullopt;
+    return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
+  };
+  TList list;
+  const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
+  if (program && program->isSingleLeaf()) {
+    // A lone primitive: exactly what csg1991 returns for a one-entry tree
+    // (the leaf's pair, or nothing), without the walk.
+    if (const std::optional<PrimInterval> hit = leaf(obj.entries[0].l))
+      list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, obj.entries[0].l);
+  } else
+    try {
+      // The flattened tree where it compiled, else the walk (which reports
+      // the tree's error as the listing would).
+      list = program ? program->run(leaf) : csg1991(obj.entries, leaf, options_.csg);
+    } catch (const CsgError& e) {
+      // The original stopped with Error() here; name the object and the ray.
+      throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
+                               std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
+                               fmt(ray.d) + ": " + e.what());
+    }
+  if (probe)
+    probe->add(depth, "csg",
+               "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
+               "{\"object\":" + std::to_string(obj.number) + ",\"list\":" + jsonList(list) + "}");
+  return list;
+}
+
+// ReflectedRay (6896-6925, K18): Heckbert's reflection, normalised, origin
+// moved one world unit along it.
+Ray Tracer1991::reflectedRay(const Ray& ray, double t, const Vec3& n) const {
+  Ray r;
+  const double twoDot = dot(ray.d, n) * 2.0;
+  for (int i = 0; i < 3; ++i) {
+    r.o[i] = ray.o[i] + t * ray.d[i];
+    r.d[i] = ray.d[i] - (n[i] * twoDot);
+  }
+  unitVector(r.d, r.d);
+  for (int i = 0; i < 3; ++i) r.o[i] += r.d[i];
+  return r;
+}
+
+// TransmittedRay (6927-7012, K19, K5): refract in, walk through the whole
+// object (its CSG list, without the bound), reflect internally while the exit
+// is beyond the critical angle, refract out, step one unit on.
+Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t, const Vec3& n,
+                               double indx, double& distance, TraceStats& stats, Probe* probe,
+                               int depth) const {
+  Ray tr;
+  distance = 0.0;
+  const double indxInv = 1.0 / indx;
+  double c1 = -dot(ray.d, n);
+  double c2 = std::sqrt(1.0 - sqr(indxInv) * (1.0 - sqr(c1)));
+  for (int i = 0; i < 3; ++i) {
+    tr.d[i] = indxInv * ray.d[i] + (indxInv * c1 - c2) * n[i];
+    tr.o[i] = ray.o[i] + t * ray.d[i] - tr.d[i];
+  }
+  bool ok = false;
+  TList list;
+  int iterations = 0;
+  while (!ok) {
+    list = objectList(obj, BoxRay(tr), stats, nullptr, depth);
+    if (list.size() < 2) {  // E46: the original read through a NULL list
+      ++stats.emptyTransmitLists;
+      break;
+    }
+    if (options_.tirCap > 0 && iterations >= options_.tirCap) {  // E59
+      ++stats.cappedTirLoops;
+      list.clear();
+      break;
+    }
+    ++iterations;
+    const TNode& exit = list[1];  // tList->next
+    c1 = dot(tr.d, exit.norm);
+    if ((c2 = (1.0 - sqr(indx) * (1.0 - sqr(c1)))) < 0.0) {  // total internal reflection
+      ++stats.totalInternalReflections;
+      for (int i = 0; i < 3; ++i) {
+        tr.o[i] += exit.t * tr.d[i];
+        tr.d[i] += 2.0 * c1 * -exit.norm[i];
+        tr.o[i] -= tr.d[i];
+      }
+      distance += exit.t;
+    } else {
+      c2 = std::sqrt(c2);
+      ok = true;
+      distance += exit.t;
+    }
+  }
+  if (ok) {
+    const TNode& exit = list[1];
+    for (int i = 0; i < 3; ++i) {
+      tr.o[i] += exit.t * tr.d[i];
+      tr.d[i] = indx * tr.d[i] + (indx * c1 - c2) * -exit.norm[i];
+    }
+  }
+  for (int i = 0; i < 3; ++i) tr.o[i] += tr.d[i];
+  if (probe)
+    probe->add(depth, "transmit",
+               "through object " + std::to_string(obj.number) + ": " + std::to_string(iterations) +
+                   " internal step(s), distance " + fmt(distance) +
+                   (ok ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " +
+                   fmt(tr.o) + " dir " + fmt(tr.d),
+               "{\"object\":" + std::to_string(obj.number) +
+                   ",\"steps\":" + std::to_string(iterations) + ",\"distance\":" + json(distance) +
+                   ",\"exited\":" + (ok ? "true" : "false") + ",\"origin\":" + json(tr.o) +
+                   ",\"dir\":" + json(tr.d) + "}");
+  return tr;
+}
+
+Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
+                        double weight) const {
+  stats.countRay(kind);
+  unitVector(ray.d, ray.d);  // E41
+  if (probe)
+    probe->add(depth, "ray",
+               std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
+                   fmt(ray.o) + " dir " + fmt(ray.d),
+               "{\"kind\":\"" + std::string(rayKindName(kind)) +
+                   "\",\"depth\":" + std::to_string(depth) + ",\"origin\":" + json(ray.o) +
+                   ",\"dir\":" + json(ray.d) + "}");
+
+  const BoxRay boxRay(ray);  // prepared once for all the box tests
+  double nearest = kInfinity;
+  Nearest best;
+  // One object of obj/List: its bound, its CSG list, and the listing's
+  // `t != 0.0 && t < nearest` with ties going to the earlier object.
+  auto consider = [&](int k) {
+    const SceneObject& obj = scene_.objects[k];
+    if (!hitsBound(obj, ray, stats, probe, depth)) return;
+    const TList list = objectList(obj, boxRay, stats, probe, depth);
+    if (list.empty()) return;
+    const double t = list.front().t;  // K30: the FIRST node, not the smallest
+    if (t != 0.0 && (t < nearest || (t == nearest && k < best.obj))) {
+      nearest = t;
+      best.t = t;
+      best.obj = k;
+      best.prim = list.front().prim;
+      best.surfType = list.front().surfType;
+      unitVector(list.front().norm, best.norm);
+    }
+  };
+  if (options_.skipUnneededWork && !probe) {
+    // Nearest boxes first; an object whose box starts beyond the nearest hit
+    // cannot win (its list's t values all lie in its box).
+    bvh_.traverse(
+        boxRay, [&](int k, double) { consider(k); }, [&] { return nearest; });
+  } else {
+    for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
+  }
+  if (nearest == kInfinity) {
+    if (probe)
+      probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");
+    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  }
+  ++stats.hits;
+
+  const SceneObject& obj = scene_.objects[best.obj];
+  const ScenePrim& prim = scene_.prims[best.prim];
+  const Ray local = transformRay(ray, prim.inverse);
+  Vec3 surfPt{}, tmpV{};
+  for (int i = 0; i < 3; ++i) {
+    surfPt[i] = ray.o[i] + nearest * ray.d[i];
+    tmpV[i] = local.o[i] + nearest * local.d[i];
+  }
+  const auto uv = inverseMap1991(prim.type, tmpV);  // types were checked at load
+  if (uv->noFaceMatched) ++stats.noFaceMatched;
+  Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
+  unitVector(n, n);
+
+  const int mapNum = prim.map[uv->surface][best.surfType];
+  const SceneTexture& map = scene_.maps[mapNum];
+  Rgb surfColor{};
+  for (int c = 0; c < 3; ++c) {
+    TextureReadCounters counters;
+    surfColor[c] = readMap1991({map.uScale, map.vScale, map.channel[c]}, uv->u, uv->v, &counters);
+    stats.failedTexelReads += counters.failedReads;
+  }
+  if (probe) {
+    probe->add(
+        depth, "hit",
+        "nearest: object " + std::to_string(obj.number) + " prim " + std::to_string(best.prim) +
+            " (" + io::primTypeName(prim.type) + ") at t " + fmt(nearest) + ", point " +
+            fmt(surfPt) + ", local " + fmt(tmpV) + ", normal " + fmt(n) + " (" +
+            (best.surfType ? "inside" : "outside") + " surface)",
+        "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(best.prim) +
+            ",\"t\":" + json(nearest) + ",\"point\":" + json(surfPt) + ",\"local\":" + json(tmpV) +
+            ",\"normal\":" + json(n) + ",\"surfType\":\"" + (best.surfType ? "In" : "Out") + "\"}");
+    probe->add(depth, "texture",
+               "u " + fmt(uv->u) + " v " + fmt(uv->v) + " surface " + std::to_string(uv->surface) +
+                   (uv->noFaceMatched ? " (no face matched: E44)" : "") + " -> map " +
+                   std::to_string(mapNum) + " (" + std::to_string(map.uScale) + "x" +
+                   std::to_string(map.vScale) + ") colour " +
+                   fmt(Vec3{surfColor[0], surfColor[1], surfColor[2]}),
+               "{\"u\":" + json(uv->u) + ",\"v\":" + json(uv->v) + ",\"surface\":" +
+                   std::to_string(uv->surface) + ",\"map\":" + std::to_string(mapNum) +
+                   ",\"color\":" + json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
+  }
+
+  // kSR = 1 - kDR and kST = 1 - kDT weigh the reflected and transmitted
+  // colours in Hall's sum; where one is 0 its ray tree cannot change the
+  // pixel (see TraceOptions::skipUnneededWork).
+  const bool skip = options_.skipUnneededWork;
+  const bool wantReflected = !skip || 1.0 - obj.hue.kDR != 0.0;
+  const bool wantTransmitted = !skip || 1.0 - obj.hue.kDT != 0.0;
+  const Ray reflected = reflectedRay(ray, nearest, n);  // its direction is a Hall input
+  double sT = 0.0;
+  Ray transmitted{surfPt, ray.d};  // unused by Hall (S13) when not traced
+  if (wantTransmitted)
+    transmitted = transmittedRay(ray, obj, nearest, n, obj.hue.indx, sT, stats, probe, depth);
+  Rgb colorReflected{}, colorTransmitted{};
+  if (depth++ < options_.maxDepth) {  // K20
+    double wR = weight, wT = weight;
+    if (options_.minWeight > 0.0) {  // adaptive tree-depth control: the children's weights
+      const double cosR = cosDeg(acosDeg(dot(n, reflected.d)));
+      double fR = 0.0, fT = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        fR = std::max(fR, std::abs(fsrFromCos1991(surfColor[c], scene_.ambient[c], cosR)));
+        fT = std::max(fT, std::abs(1.0 - fsrFromCos1991(surfColor[c], scene_.ambient[c], 1.0)));
+      }
+      wR *= std::abs(1.0 - obj.hue.kDR) * fR;
+      wT *= std::abs(1.0 - obj.hue.kDT) * fT * std::abs(std::pow(obj.hue.tT, sT));
+    }
+    const double cut = options_.minWeight;
+    if (wantReflected && !(cut > 0.0 && wR < cut))
+      colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected, wR);
+    if (wantTransmitted && !(cut > 0.0 && wT < cut))
+      colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted, wT);
+  }
+  const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
+                    obj.hue.tT,  obj.hue.kRH, obj.hue.kTH,
+                    obj.hue.indx};
+  const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
+  const Rgb color =
+      processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                       {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]}, hallSkipping_);
+  if (probe) {
+    const auto terms =
+        hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
+                         {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
+    static const char* kChannel[3] = {"R", "G", "B"};
+    std::string jsonTerms = "[";
+    for (int c = 0; c < 3; ++c) {
+      const HallTerms& t = terms[c];
+      probe->add(depth - 1, "hall",
+                 std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) +
+                     " + specular trans " + fmt(t.specularTransmission) + " + diffuse refl " +
+                     fmt(t.diffuseReflection) + " + diffuse trans " + fmt(t.diffuseTransmission) +
+                     " + reflected " + fmt(t.reflected) + " + transmitted " + fmt(t.transmitted) +
+                     " = " + fmt(t.sum()),
+                 "{\"channel\":\"" + std::string(kChannel[c]) +
+                     "\",\"specularReflection\":" + json(t.specularReflection) +
+                     ",\"specularTransmission\":" + json(t.specularTransmission) +
+                     ",\"diffuseReflection\":" + json(t.diffuseReflection) +
+                     ",\"diffuseTransmission\":" + json(t.diffuseTransmission) +
+                     ",\"reflected\":" + json(t.reflected) +
+                     ",\"transmitted\":" + json(t.transmitted) + ",\"sum\":" + json(t.sum()) + "}");
+    }
+  }
+  if (probe)
+    probe->add(
+        depth - 1, "shade",
+        "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+            ", transmitted " +
+            fmt(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) + ", sT " +
+            fmt(sT) + " -> colour " + fmt(Vec3{color[0], color[1], color[2]}),
+        "{\"reflected\":" + json(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
+            ",\"transmitted\":" +
+            json(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
+            ",\"sT\":" + json(sT) + ",\"color\":" + json(Vec3{color[0], color[1], color[2]}) + "}");
+  return color;
+}
+
+}  // namespace prime

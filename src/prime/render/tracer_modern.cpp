@@ -1,0 +1,419 @@
+#include "src/prime/render/tracer_modern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "src/prime/geom/csg_modern.h"
+#include "src/prime/geom/primitives_modern.h"
+#include "src/prime/geom/uv_mapping_1991.h"
+#include "src/prime/math/listing_matrix.h"
+
+namespace prime {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;  // unit roundoff
+// pbrt's gamma(n) = n u / (1 - n u): the relative error bound of n roundings.
+constexpr double gamma(int n) {
+  return (n * kEps) / (1 - n * kEps);
+}
+
+Vec3 absV(const Vec3& v) {
+  return {std::abs(v[0]), std::abs(v[1]), std::abs(v[2])};
+}
+Vec3 unit(const Vec3& v) {
+  const double l = std::sqrt(dot(v, v));
+  return l > 0 ? v * (1.0 / l) : v;
+}
+double clamp1(double x) {
+  return std::clamp(x, -1.0, 1.0);
+}
+double finiteOr0(double x) {
+  return std::isfinite(x) ? x : 0.0;
+}
+
+// Normals transform by the inverse transpose: with row vectors p' = p M,
+// n' = n (M^-1)^T, i.e. n'[j] = sum_i n[i] inv[j][i].
+Vec3 normalToWorld(const Vec3& n, const Matrix4& inv) {
+  Vec3 w{};
+  for (int j = 0; j < 3; ++j) w[j] = n[0] * inv[j][0] + n[1] * inv[j][1] + n[2] * inv[j][2];
+  return unit(w);
+}
+
+// Modern texel lookup: u, v clamped into [0, 1); NaN reads texel 0.
+double texel(const SceneTexture& m, int c, double u, double v) {
+  auto index = [](double x, int n) {
+    if (!(x > 0.0)) return 0;  // also NaN
+    return std::min(static_cast<int>(x * n), n - 1);
+  };
+  return m.channel[c][static_cast<std::size_t>(index(u, m.uScale) + m.uScale * index(v, m.vScale))];
+}
+
+}  // namespace
+
+Matrix4 accurateInverse(const Matrix4& m) {
+  // Affine row-vector matrix: p' = p A + tr. A^-1 by cofactors in long
+  // double, one Newton step X <- X (2I - A X) in long double, then the
+  // translation row -tr A^-1; every entry rounded to double once.
+  using LD = long double;
+  LD a[3][3], x[3][3], c[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = m[i][j];
+  c[0][0] = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+  c[0][1] = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+  c[0][2] = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+  c[1][0] = a[0][2] * a[2][1] - a[0][1] * a[2][2];
+  c[1][1] = a[0][0] * a[2][2] - a[0][2] * a[2][0];
+  c[1][2] = a[0][1] * a[2][0] - a[0][0] * a[2][1];
+  c[2][0] = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+  c[2][1] = a[0][2] * a[1][0] - a[0][0] * a[1][2];
+  c[2][2] = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+  const LD det = a[0][0] * c[0][0] + a[0][1] * c[0][1] + a[0][2] * c[0][2];
+  Matrix4 inv = identity4();
+  if (!(det != 0) || !std::isfinite(static_cast<double>(det))) {
+    inverse(m, inv);  // degenerate: the database's inverse is all there is
+    return inv;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) x[i][j] = c[j][i] / det;
+  LD ax[3][3], y[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      ax[i][j] = 0;
+      for (int k = 0; k < 3; ++k) ax[i][j] += a[i][k] * x[k][j];
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      LD s = 0;  // X (2I - A X)
+      for (int k = 0; k < 3; ++k) s += x[i][k] * ((k == j ? 2 : 0) - ax[k][j]);
+      y[i][j] = s;
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) inv[i][j] = static_cast<double>(y[i][j]);
+  for (int j = 0; j < 3; ++j) {
+    LD t = 0;
+    for (int k = 0; k < 3; ++k) t -= static_cast<LD>(m[3][k]) * y[k][j];
+    inv[3][j] = static_cast<double>(t);
+  }
+  return inv;
+}
+
+Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w) {
+  const double d = dot(absV(n), pError);
+  Vec3 offset = n * d;
+  if (dot(w, n) < 0) offset = -offset;
+  Vec3 po = p + offset;
+  for (int i = 0; i < 3; ++i) {  // round away from p so the offset survives rounding
+    if (offset[i] > 0)
+      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+    else if (offset[i] < 0)
+      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+  }
+  return po;
+}
+
+TracerModern::TracerModern(const Scene& scene, TraceOptions options)
+    : scene_(scene), options_(options), bvh_(scene) {
+  for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
+  inverse_.reserve(scene.prims.size());
+  for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
+}
+
+TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
+                                    TraceStats& stats) const {
+  ++stats.objectTests;
+  auto leaf = [&](int primNum) -> std::optional<Interval> {
+    ++stats.primitiveTests;
+    const ScenePrim& p = scene_.prims[primNum];
+    Interval in;
+    if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
+    return in;
+  };
+  return csgModern(obj.entries, leaf);
+}
+
+// The hit point o + t d of `node` and a bound on its distance from the true
+// surface, derived from the computation that found it (Ray Tracing Gems
+// ch. 6, pbrt-v4 3.9): the ray's transform into primitive space (one
+// rounding per product and sum of the accurate inverse), the root or plane
+// clip (a few roundings of the magnitudes involved), mapped back to the world
+// by |A|, plus the rounding of o + t d itself. Then every surface of every
+// primitive of the object that passes within that bound of the point (one at
+// a face, two or three at an edge or corner, those of other operands where
+// CSG faces meet), so that secondary rays can step off all of them.
+void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node,
+                             SurfaceHit& hit) const {
+  const ScenePrim& prim = scene_.prims[node.prim];
+  const Matrix4& inv = inverse_[node.prim];
+  const Matrix4& a = prim.transform;
+  const Ray local = transformRay(ray, inv);
+  const double t = node.t;
+  hit.t = t;
+  hit.prim = node.prim;
+  hit.exitsObject = node.surfType == kSurfIn;
+  double pl = 1.0;  // 1 + |local point|
+  for (int i = 0; i < 3; ++i) {
+    hit.point[i] = ray.o[i] + t * ray.d[i];
+    hit.local[i] = local.o[i] + t * local.d[i];
+    pl = std::max(pl, 1.0 + std::abs(hit.local[i]));
+  }
+  Vec3 el{};  // local error bound per axis
+  for (int i = 0; i < 3; ++i) {
+    double eo = std::abs(inv[3][i]), ed = 0;
+    for (int k = 0; k < 3; ++k) {
+      eo += std::abs(ray.o[k] * inv[k][i]);
+      ed += std::abs(ray.d[k] * inv[k][i]);
+    }
+    el[i] = gamma(4) * (eo + std::abs(t) * ed) +
+            gamma(10) * (std::abs(local.o[i]) + std::abs(t * local.d[i]) + pl);
+  }
+  for (int j = 0; j < 3; ++j) {
+    double e = gamma(2) * (std::abs(ray.o[j]) + std::abs(t * ray.d[j]));
+    for (int i = 0; i < 3; ++i) e += std::abs(a[i][j]) * el[i];
+    hit.pointError[j] = e;
+  }
+  hit.normal = normalToWorld(node.norm, inv);  // outward of the primitive (not faced yet)
+  // Surfaces near the point, in every primitive of the object.
+  hit.nearCount = 0;
+  for (const CsgEntry& e : obj.entries) {
+    if (e.op != 'P' || e.l < 0 || e.l >= static_cast<int>(scene_.prims.size())) continue;
+    const ScenePrim& q = scene_.prims[e.l];
+    const Matrix4& qi = inverse_[e.l];
+    const Vec3 ql = e.l == node.prim ? hit.local : pointMatrixMul(hit.point, qi);
+    Vec3 qe{};
+    for (int i = 0; i < 3; ++i) {
+      double spread = 0, mag = std::abs(qi[3][i]);
+      for (int k = 0; k < 3; ++k) {
+        spread += hit.pointError[k] * std::abs(qi[k][i]);
+        mag += std::abs(hit.point[k] * qi[k][i]);
+      }
+      qe[i] = e.l == node.prim ? el[i] : spread + gamma(4) * mag;
+    }
+    Vec3 normals[10];
+    const int n = nearSurfacesModern(q.type, ql, qe, normals, 10);
+    for (int k = 0; k < n && hit.nearCount < static_cast<int>(hit.near.size()); ++k) {
+      const Vec3 nw = normalToWorld(normals[k], qi);
+      // World distance to step off this surface: the point's error along
+      // the normal, and the next ray's transform error at the point.
+      double step = 0;
+      for (int j = 0; j < 3; ++j) {
+        double m = 0;  // |A_q|^T (|P| |inv_q| + |inv_q[3]|), along axis j
+        for (int i = 0; i < 3; ++i) {
+          double li = std::abs(qi[3][i]);
+          for (int k2 = 0; k2 < 3; ++k2) li += std::abs(hit.point[k2] * qi[k2][i]);
+          m += std::abs(q.transform[i][j]) * li;
+        }
+        step += std::abs(nw[j]) * (hit.pointError[j] + gamma(4) * m);
+      }
+      hit.near[static_cast<std::size_t>(hit.nearCount)] = nw;
+      hit.nearStep[static_cast<std::size_t>(hit.nearCount)] = step;
+      ++hit.nearCount;
+    }
+  }
+}
+
+Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
+  if (hit.nearCount == 0) {  // no surface found near: the hit's own normal
+    return offsetRayOrigin(hit.point, hit.pointError, hit.normal, w);
+  }
+  // Step to the side of every near surface that w travels into, far enough
+  // that the step survives the other surfaces' tilt (a few rounds).
+  Vec3 offset{0, 0, 0};
+  for (int round = 0; round < 64; ++round) {
+    bool ok = true;
+    for (int k = 0; k < hit.nearCount; ++k) {
+      const Vec3& n = hit.near[static_cast<std::size_t>(k)];
+      const double wn = dot(w, n);
+      if (wn == 0) continue;  // along the surface: either side is as good
+      const double side = wn > 0 ? 1.0 : -1.0;
+      const double want = hit.nearStep[static_cast<std::size_t>(k)];
+      const double have = side * dot(n, offset);
+      if (have < want) {
+        offset = offset + n * (side * (want - have) * (round == 0 ? 1.0 : 1.5));
+        ok = false;
+      }
+    }
+    if (ok) break;
+  }
+  Vec3 po = hit.point + offset;
+  for (int i = 0; i < 3; ++i) {  // round away from the point so the step survives rounding
+    if (offset[i] > 0)
+      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+    else if (offset[i] < 0)
+      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+  }
+  return po;
+}
+
+bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const {
+  double nearest = std::numeric_limits<double>::infinity();
+  int bestObj = -1;
+  TNode bestNode{};
+  auto consider = [&](int k) {
+    const SceneObject& obj = scene_.objects[k];
+    if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
+      ++stats.boundTests;
+      const ScenePrim& b = scene_.prims[obj.boundPrim];
+      Interval in;
+      if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
+          !(in.tOut > 0.0))
+        return;
+    }
+    const TList list = objectIntervals(obj, ray, stats);
+    for (const TNode& node : list) {
+      if (!(node.t > 0.0)) continue;  // behind the origin (or NaN)
+      if (node.t < nearest || (node.t == nearest && k < bestObj)) {
+        nearest = node.t;
+        bestObj = k;
+        bestNode = node;
+      }
+      break;  // sorted: the first node ahead is this object's nearest
+    }
+  };
+  bvh_.traverse(
+      ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+  if (bestObj < 0) return false;
+
+  surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
+  hit.obj = bestObj;
+  Vec3 n = hit.normal;
+  // Which side of the PRIMITIVE's own surface the ray is on picks the
+  // outside or inside map (a difference's cut face shows B's inside).
+  Interval own;
+  if (intersectModern(scene_.prims[bestNode.prim].type, transformRay(ray, inverse_[bestNode.prim]),
+                      own))
+    hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
+  if (dot(n, ray.d) > 0) n = -n;  // face the ray
+  hit.normal = n;
+  return true;
+}
+
+// Refract into the object at the hit, walk to where the ray leaves it
+// (reflecting internally while beyond the critical angle), refract out.
+Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance,
+                           bool& through, TraceStats& stats) const {
+  distance = 0.0;
+  through = false;
+  const SceneObject& obj = scene_.objects[hit.obj];
+  const Vec3 d = unit(ray.d);
+  // Snell with the facing normal: entering, eta = 1/indx; a ray that starts
+  // inside the object and leaves it here refracts out with eta = indx.
+  const double eta = hit.exitsObject ? indx : 1.0 / indx;
+  const double cosI = clamp1(-dot(d, hit.normal));
+  const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
+  if (!(k >= 0.0)) return {};  // total internal reflection: nothing transmitted
+  Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
+  r.o = spawnOrigin(hit, r.d);
+  if (hit.exitsObject) {
+    through = true;
+    return r;
+  }
+  const int cap = options_.tirCap > 0 ? std::min(options_.tirCap, 64) : 64;
+  for (int step = 0; step < cap; ++step) {
+    const TList list = objectIntervals(obj, r, stats);
+    const TNode* exit = nullptr;
+    for (const TNode& node : list)
+      if (node.t > 0.0 && node.surfType == kSurfIn) {
+        exit = &node;
+        break;
+      }
+    if (!exit) {  // numerically outside already: leave as we are
+      ++stats.emptyTransmitLists;
+      through = true;
+      return r;
+    }
+    distance += exit->t;
+    SurfaceHit at;
+    surfaceAt(obj, r, *exit, at);
+    Vec3 nOut = at.normal;  // outward of the solid
+    if (dot(nOut, r.d) < 0) nOut = -nOut;
+    const double c = clamp1(dot(r.d, nOut));
+    const double k2 = 1.0 - indx * indx * (1.0 - c * c);
+    if (k2 < 0.0) {  // total internal reflection: stay inside
+      ++stats.totalInternalReflections;
+      r.d = unit(r.d - nOut * (2.0 * c));
+      r.o = spawnOrigin(at, r.d);
+      continue;
+    }
+    r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
+    r.o = spawnOrigin(at, r.d);
+    through = true;
+    return r;
+  }
+  ++stats.cappedTirLoops;  // trapped: the light is absorbed
+  return {};
+}
+
+Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
+                          double weight) const {
+  stats.countRay(kind);
+  ray.d = unit(ray.d);
+  SurfaceHit hit;
+  if (!nearestHit(ray, hit, stats))
+    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  ++stats.hits;
+  const SceneObject& obj = scene_.objects[hit.obj];
+  const ScenePrim& prim = scene_.prims[hit.prim];
+  const auto uv = inverseMap1991(prim.type, hit.local);
+  const int surface =
+      uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
+  const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
+  Rgb surfColor{};
+  for (int c = 0; c < 3; ++c)
+    surfColor[c] = texel(map, c, uv ? finiteOr0(uv->u) : 0.0, uv ? finiteOr0(uv->v) : 0.0);
+
+  const io::Hue& h = obj.hue;
+  const Vec3& n = hit.normal;
+  const Vec3 refl = unit(ray.d - n * (2.0 * dot(ray.d, n)));
+  double sT = 0.0;
+  bool through = false;
+  const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
+  Ray transmitted{};
+  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats);
+  Rgb iSR{}, iST{};
+  if (depth < options_.maxDepth) {
+    if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
+      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, RayKind::Reflected,
+                    weight * std::abs(kSR));
+    if (through && weight * std::abs(kST) >= options_.minWeight)
+      iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
+  }
+
+  // Hall's sum with the light vector pointing AT the light (K10 fixed),
+  // clamped cosines and no negative base in pow (K10, X2).
+  const Vec3 v = -ray.d;  // towards the viewer
+  Rgb color{};
+  for (int c = 0; c < 3; ++c) {
+    double a = 0, b = 0, cd = 0, dd = 0;
+    for (const HallLight& light : lights_) {
+      const Vec3 l = unit(light.pt - hit.point);
+      const Vec3 hj = unit(l + v);
+      const double nl = dot(n, l);
+      const double iL = light.intensity[c];
+      const double nh = std::max(0.0, dot(n, hj));
+      a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
+      if (h.indx !=
+          1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
+        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
+        const double nht = std::max(0.0, -dot(n, ht));
+        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
+             std::pow(nht, std::max(0.0, h.kTH));
+      }
+      cd += iL * std::max(0.0, nl);
+      dd += iL * std::max(0.0, -nl);
+    }
+    const double ia = scene_.ambient[c];
+    const double fDR = h.fDR[c], fDT = 1.0 - fDR;
+    const double cosR = clamp1(dot(n, refl));
+    const double sum =
+        kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
+        kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
+        kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
+    if (!std::isfinite(sum)) ++stats.nanColours;
+    color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
+  }
+  return color;
+}
+
+}  // namespace prime

@@ -1,0 +1,85 @@
+// The modern profile's ray tree: the same scenes and databases as the 1991
+// profile, with the arithmetic and the geometry done right (see the "Modern
+// profile" section of docs/prime/deviations.md for every difference):
+//   - whole-line primitive intervals with cancellation-free quadratics and
+//     correct set operations (a ray that starts inside a solid sees its exit);
+//   - the nearest hit is the smallest t ahead, not the list's first node;
+//   - normals transformed by the inverse transpose, faced towards the ray;
+//   - secondary rays start from the hit point pushed off the surface by a
+//     bound on its floating-point error (pbrt-v4 style), not a 1-unit step;
+//   - Hall's terms with the light vector pointing at the light, clamped
+//     dot products and inverse trigonometry, world-frame refraction;
+//   - no NaN or Inf ever reaches a pixel.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "src/prime/render/hall_1991.h"
+#include "src/prime/render/trace_stats.h"
+#include "src/prime/render/tracer_1991.h"
+#include "src/prime/scene/object_bvh.h"
+#include "src/prime/scene/scene.h"
+
+namespace prime {
+
+struct SurfaceHit {
+  double t = 0;
+  int obj = -1, prim = -1;
+  bool fromInsidePrim = false;  // the ray meets the primitive's surface from inside (inside map)
+  bool exitsObject = false;     // the ray starts inside the object's solid and leaves it here
+  Vec3 point{}, local{},
+      normal{};       // world point, primitive-space point, unit normal facing the ray
+  Vec3 pointError{};  // bound on the point's distance from the exact surface, per axis
+  // Every surface of the object's primitives that passes within the error
+  // bound of `point` (the hit surface, and the other faces at an edge or a
+  // corner): world unit normals and how far to step off each.
+  std::array<Vec3, 12> near{};
+  std::array<double, 12> nearStep{};
+  int nearCount = 0;
+};
+
+class TracerModern {
+ public:
+  TracerModern(const Scene& scene, TraceOptions options = {});
+
+  Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary,
+              double weight = 1.0) const;
+  // The nearest surface along the ray with t > 0, if any.
+  bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const;
+  // The object's solid along the whole line of `ray` (sorted intervals).
+  TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const;
+
+  const Scene& scene() const { return scene_; }
+  // The object boxes every ray is tested against first (the BVH's).
+  const ObjectBvh& bvh() const { return bvh_; }
+
+ private:
+  void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
+  Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
+               TraceStats& stats) const;
+  const Scene& scene_;
+  TraceOptions options_;
+  ObjectBvh bvh_;
+  std::vector<HallLight> lights_;
+  std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform
+};
+
+// The inverse of an affine row-vector transform, accurate to about one
+// rounding per entry (long double cofactors and one Newton step), instead of
+// the database's unpivoted Gauss-Jordan inverse (K42, M18: good to 1.5e-9
+// only for a 90-degree rotation). A singular matrix gives prime::inverse's.
+Matrix4 accurateInverse(const Matrix4& m);
+
+// A point moved off its surface along `n` (the side the new ray leaves on)
+// by more than its error bound, so the new ray cannot re-hit the surface it
+// starts on (Ray Tracing Gems ch. 6 / pbrt-v4 OffsetRayOrigin).
+Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w);
+
+// The origin of a secondary ray leaving `hit` in direction w: the hit point
+// stepped, for every surface near it (hit.near), to the side w travels into,
+// by that surface's step, so that the new ray sees none of them at t ~ 0
+// (an edge or corner needs steps along two or three normals; one along the
+// hit normal alone leaves the point on the other face).
+Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w);
+
+}  // namespace prime

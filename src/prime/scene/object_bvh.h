@@ -1,0 +1,41 @@
+// The shared BVH (src/geom/bvh.h) over a scene's objects, so that a ray
+// tests only the objects whose boxes it meets, nearest first. It returns
+// exactly what the listing's linear search over obj/List returns: candidates
+// are pruned only when their box starts strictly beyond the nearest hit so
+// far, and the caller breaks ties between equal t by list order.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "src/geom/bvh.h"
+#include "src/prime/scene/prim_boxes.h"
+
+namespace prime {
+
+class ObjectBvh {
+ public:
+  explicit ObjectBvh(const Scene& scene);
+
+  // Calls visit(objectIndex, boxEntry) for every object whose box the ray
+  // meets at boxEntry <= limit(), nearest box first. `limit` is re-read
+  // after each visit, so the caller can shrink it as hits are found.
+  template <class Visit, class Limit>
+  void traverse(const Ray& ray, Visit&& visit, Limit&& limit) const {
+    bvh_.traverse(BoxRay(ray), visit, limit);
+  }
+  // The same with the ray prepared by the caller.
+  template <class Visit, class Limit>
+  void traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
+    bvh_.traverse(ray, visit, limit);
+  }
+
+  const Aabb& objectBox(int object) const { return bvh_.box(object); }
+  std::span<const Aabb> objectBoxes() const { return bvh_.boxes(); }
+  const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
+
+ private:
+  std::vector<Aabb> primBoxes_;
+  Bvh bvh_;
+};
+
+}  // namespace prime

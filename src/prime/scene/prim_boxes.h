@@ -1,0 +1,16 @@
+// World-space boxes around PRIME's primitives, used only to skip work: a ray
+// that misses a primitive's box cannot hit the primitive, and every t in an
+// object's Roth list is a point on one of its primitives. Boxes are padded so
+// that rounding in the primitive tests can never put a reported hit outside
+// its box.
+#pragma once
+#include "src/geom/aabb.h"
+#include "src/prime/scene/scene.h"
+
+namespace prime {
+
+// The unit primitive's box (S, C, N about the z axis; B and Y in the unit
+// cube) mapped by the primitive's transform, padded. Empty for an unknown type.
+Aabb primitiveBox(const ScenePrim& p);
+
+}  // namespace prime

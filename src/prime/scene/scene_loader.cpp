@@ -1,0 +1,199 @@
+#include "src/prime/scene/scene_loader.h"
+
+#include <filesystem>
+#include <set>
+
+#include "legacy_io/common/error.h"
+#include "legacy_io/prime/map_file.h"
+#include "legacy_io/prime/obj_file.h"
+#include "legacy_io/prime/obj_list.h"
+#include "legacy_io/prime/prim_file.h"
+
+namespace prime {
+
+namespace fs = std::filesystem;
+using io::InputError;
+
+namespace {
+
+bool isPrimType(char c) { return io::surfaceCount(c) > 0; }
+
+std::string primLabel(int n, const ScenePrim& p) {
+  return "primitive " + std::to_string(n) + " (" + io::primTypeName(p.type) + ")";
+}
+
+// Reads obj/O<n> and checks its CSG tree against the primitive table.
+SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<ScenePrim>& prims) {
+  const fs::path path =
+      dir.existingInput("obj", "O" + std::to_string(number),
+                        dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
+  const std::string shown = dir.display(path);
+  const io::ObjFile f = io::objFileFromBytes(io::readFileBytes(path.string()), shown);
+  SceneObject obj;
+  obj.number = number;
+  obj.hue = f.header.hue;
+  obj.boundPrim = f.header.boundVol;
+  const int n = static_cast<int>(f.entries.size());
+  if (n == 0) throw InputError({shown, std::nullopt, 0}, "object has no entries");
+  for (int i = 0; i < n; ++i) {
+    const auto& e = f.entries[i];
+    const std::uint64_t at = io::kObjHeaderSize + static_cast<std::uint64_t>(i) * io::kObjSize;
+    const std::string field = "entry " + std::to_string(i);
+    switch (e.op()) {
+      case '+':
+      case '-':
+      case '&':
+        for (int child : {e.l, e.r})
+          if (child < 0 || child >= n)
+            throw InputError({shown, std::nullopt, at}, field + " child",
+                             "an entry number 0.." + std::to_string(n - 1), std::to_string(child));
+        break;
+      case 'P':
+        if (e.l < 0 || e.l >= static_cast<int>(prims.size()))
+          throw InputError({shown, std::nullopt, at}, field + " primitive",
+                           "a primitive number 0.." + std::to_string(prims.size() - 1) +
+                               " (PrimFile has " + std::to_string(prims.size()) + ")",
+                           std::to_string(e.l));
+        if (!isPrimType(prims[e.l].type))
+          throw InputError({shown, std::nullopt, at}, field + " primitive " + std::to_string(e.l),
+                           "a primitive of type S, B, C, N or Y",
+                           std::string("type byte ") + std::to_string(static_cast<unsigned char>(prims[e.l].type)) +
+                               " (a primitive copied by an O entry? errata K33; try `prime model "
+                               "--copy-type-from-source`)");
+        break;
+      default:
+        throw InputError({shown, std::nullopt, at}, field + " opcode", "+, -, & or P",
+                         std::string("'") + e.op() + "'");
+    }
+    obj.entries.push_back({e.op(), e.l, e.r});
+  }
+  // The tree from entry 0 must not contain itself (CSG() would never return).
+  std::vector<int> state(n, 0);
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  while (!stack.empty()) {
+    auto& [i, phase] = stack.back();
+    const auto& e = obj.entries[i];
+    const bool op = e.op != 'P';
+    if (phase == 0) state[i] = 1;
+    if (op && phase < 2) {
+      const int child = phase == 0 ? e.l : e.r;
+      ++phase;
+      if (state[child] == 1)
+        throw InputError({shown, std::nullopt, std::nullopt}, "CSG tree", "a tree",
+                         "a cycle through entry " + std::to_string(child));
+      if (state[child] == 0) stack.push_back({child, 0});
+      continue;
+    }
+    state[i] = 2;
+    stack.pop_back();
+  }
+  if (obj.boundPrim != -1) {
+    if (obj.boundPrim < 0 || obj.boundPrim >= static_cast<int>(prims.size()))
+      throw InputError({shown, std::nullopt, 2}, "ObjHeader.boundVol",
+                       "-1 or a primitive number 0.." + std::to_string(prims.size() - 1),
+                       std::to_string(obj.boundPrim));
+    if (!isPrimType(prims[obj.boundPrim].type))
+      throw InputError({shown, std::nullopt, 2}, "bounding volume (primitive " + std::to_string(obj.boundPrim) + ")",
+                       "a primitive type S, B, C, N or Y",
+                       "type byte " + std::to_string(static_cast<unsigned char>(prims[obj.boundPrim].type)));
+  }
+  return obj;
+}
+
+SceneTexture loadMap(const io::SceneDir& dir, int number) {
+  SceneTexture m;
+  for (int c = 0; c < 3; ++c) {
+    const fs::path path = dir.existingInput("map", io::mapFileName(number, c), "prime trace");
+    const io::MapFile f = io::mapFileFromBytes(io::readFileBytes(path.string()), dir.display(path));
+    if (c > 0 && (f.header.uScale != m.uScale || f.header.vScale != m.vScale))
+      throw InputError({dir.display(path), std::nullopt, 0}, "MapHeader",
+                       "the same size as the _R file (" + std::to_string(m.uScale) + " x " +
+                           std::to_string(m.vScale) + ")",
+                       std::to_string(f.header.uScale) + " x " + std::to_string(f.header.vScale));
+    m.uScale = f.header.uScale;
+    m.vScale = f.header.vScale;
+    m.channel[c] = f.texels;
+  }
+  m.constant = true;
+  for (const auto& ch : m.channel)
+    for (double t : ch) m.constant = m.constant && t == ch.front();
+  return m;
+}
+
+}  // namespace
+
+Scene loadScene(const io::SceneDir& dir) {
+  Scene scene;
+  scene.name = dir.root().filename().string();
+  if (scene.name.empty() || scene.name == ".") scene.name = fs::absolute(dir.root()).lexically_normal().filename().string();
+
+  // Databases are read through existingInput too: no symbolic links.
+  const fs::path primPath = dir.existingInput("prim", "PrimFile", "prime trace");
+  const io::PrimFile primFile = io::primFileFromBytes(io::readFileBytes(primPath.string()), dir.display(primPath));
+  for (const auto& p : primFile.prims) {
+    ScenePrim sp;
+    sp.type = p.type;
+    sp.transform = p.transform;
+    sp.inverse = p.inverse;
+    for (int s = 0; s < io::kMaxSurface; ++s) sp.map[s] = {p.map[s][0], p.map[s][1]};
+    sp.priority = p.priority;
+    scene.prims.push_back(sp);
+  }
+
+  const fs::path listPath = dir.existingInput("obj", "List", "prime trace");
+  const io::ObjList list = io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
+  for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, scene.prims));
+
+  // Every map that a primitive of a listed object can read must exist.
+  std::set<int> mapsNeeded;
+  for (const auto& obj : scene.objects)
+    for (const auto& e : obj.entries) {
+      if (e.op != 'P') continue;
+      const ScenePrim& p = scene.prims[e.l];
+      for (int s = 0; s < io::surfaceCount(p.type); ++s)
+        for (int side = 0; side < 2; ++side) {
+          const int m = p.map[s][side];
+          const fs::path r = dir.root() / "map" / io::mapFileName(m, 0);
+          if (m < 0 || !fs::exists(r))
+            throw InputError({dir.display(dir.root() / "obj" / ("O" + std::to_string(obj.number))), std::nullopt, std::nullopt},
+                             primLabel(e.l, p) + " surface " + std::to_string(s) +
+                                 (side ? " inside" : " outside") + " map",
+                             "a map added by AddMap (map/" + io::mapFileName(m, 0) + ")",
+                             "map " + std::to_string(m) + ", which does not exist");
+          mapsNeeded.insert(m);
+        }
+    }
+  for (int m : mapsNeeded) {
+    if (static_cast<int>(scene.maps.size()) <= m) scene.maps.resize(m + 1);
+    scene.maps[m] = loadMap(dir, m);
+  }
+
+  const fs::path lightPath = dir.existingInput("light", "light.txt", "prime trace");
+  io::TextReader in = io::TextReader::open(lightPath.string(), dir.display(lightPath));
+  const io::LightText light = io::parseLightText(in);
+  scene.ambient = light.ambient;
+  scene.lights = light.lights;
+  return scene;
+}
+
+std::vector<std::string> staleDatabases(const io::SceneDir& dir) {
+  std::vector<std::string> problems;
+  const fs::path prim = dir.root() / "prim" / "PrimFile", list = dir.root() / "obj" / "List";
+  for (const auto& p : {prim, list})
+    if (!fs::exists(p)) problems.push_back(dir.display(p) + " does not exist");
+  if (!problems.empty()) return problems;
+  const auto built = std::min(fs::last_write_time(prim), fs::last_write_time(list));
+  for (const char* sub : {"", "prim", "bound", "obj", "obj/Copy", "map"}) {
+    const fs::path d = dir.root() / sub;
+    if (!fs::is_directory(d)) continue;
+    for (const auto& e : fs::directory_iterator(d)) {
+      const auto name = e.path().filename().string();
+      const bool input = e.is_regular_file() && (e.path().extension() == ".txt" || e.path().extension() == ".TXT");
+      if (input && name != "light.txt" && fs::last_write_time(e.path()) > built)
+        problems.push_back(dir.display(e.path()) + " is newer than the databases");
+    }
+  }
+  return problems;
+}
+
+}  // namespace prime

@@ -1,0 +1,100 @@
+// The `prime` commands as a user runs them: exit codes and messages.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+#include "tests/support/temp_scene.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status;
+  std::string output;  // stdout and stderr
+};
+
+CommandResult prime(const std::string& args) {
+  std::string out;
+  FILE* p = popen((std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf;
+  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+  const int status = pclose(p);
+  return {WEXITSTATUS(status), out};
+}
+
+void sphere(const prime::test::TempScene& s) {
+  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+}
+
+TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
+  prime::test::TempScene s;
+  sphere(s);
+  CommandResult r = prime("trace " + s.path().string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.output, HasSubstr("prim/PrimFile does not exist"));
+  EXPECT_THAT(r.output, HasSubstr("add --model"));
+  r = prime("trace --model " + s.path().string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("traced 350 x 769 pixels (graph file header 349 x 768)"));
+  EXPECT_THAT(r.output, HasSubstr("rays: 356330 (primary 269150, reflected 43590, transmitted 43590)"));
+  EXPECT_TRUE(s.exists("graph_scr"));
+}
+
+TEST(PrimeCommand, ModelErrorExitsNonZeroNamingFileLineAndField) {
+  prime::test::TempScene s;
+  sphere(s);
+  s.write("obj/H1.txt", "0.5 0.0\n0.8 x 0.2\n0.999\n2 2\n1.5\n");
+  const CommandResult r = prime("model " + s.path().string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.output, HasSubstr("obj/H1.txt:2: fDR[G]: expected a number, found \"x\""));
+}
+
+TEST(PrimeCommand, ProbeExplainsTheCentrePixel) {
+  prime::test::TempScene s;
+  sphere(s);
+  ASSERT_EQ(prime("model " + s.path().string()).status, 0);
+  CommandResult r = prime("probe " + s.path().string() + " --pixel 174 384");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("primary ray, depth 0"));
+  EXPECT_THAT(r.output, HasSubstr("nearest: object 1 prim 0 (sphere)"));
+  EXPECT_THAT(r.output, HasSubstr("palette index 68"));
+  r = prime("probe " + s.path().string() + " --pixel 0 0 --json");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("\"index\":1"));
+  EXPECT_THAT(r.output, HasSubstr("\"event\":\"miss\""));
+  r = prime("probe " + s.path().string() + " --pixel 350 0");
+  EXPECT_NE(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("outside the image (350 x 769)"));
+}
+
+TEST(PrimeCommand, VectorOptionsMayComeBeforeTheDirectory) {
+  // --viewport takes exactly four numbers; the scene directory after it is
+  // the positional argument, not a fifth number.
+  prime::test::TempScene s;
+  sphere(s);
+  const CommandResult r = prime("trace --viewport 0.125 0 0.875 1 --screen 512 384 --model --no-window " + s.path().string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("traced 385 x 385 pixels"));
+}
+
+TEST(PrimeCommand, DumpNamesTheKindOrAsksForIt) {
+  prime::test::TempScene s;
+  sphere(s);
+  ASSERT_EQ(prime("model " + s.path().string()).status, 0);
+  CommandResult r = prime("dump " + s.path("obj/O1").string());
+  EXPECT_EQ(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("1 entry, bounding volume none"));
+  EXPECT_THAT(r.output, HasSubstr("prim 0"));
+  r = prime("dump " + s.path("Model.txt").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.output, HasSubstr("--as prim|obj|list|map|graph"));
+}
+
+}  // namespace

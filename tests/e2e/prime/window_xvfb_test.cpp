@@ -1,0 +1,368 @@
+// The real SDL window, on a real X server (Xvfb): what the server shows is
+// captured with xwd (XGetImage on the window, from the server, not from our
+// own memory) and compared pixel for pixel with `prime export` of the same
+// graph file. Keys are typed through the XTEST extension with xdotool.
+//
+// Skipped (with the reason) only when Xvfb is not installed or will not
+// start; a missing xwd or xdotool is a failure (./prime.sh installs them).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "legacy_io/prime/graph_file.h"
+#include "palette/png_image.h"
+#include "tests/support/child_process.h"
+#include "tests/support/temp_scene.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+namespace fs = std::filesystem;
+using prime::test::ChildProcess;
+
+bool onPath(const std::string& tool) {
+  const char* path = std::getenv("PATH");
+  std::string p = path ? path : "/usr/bin:/bin";
+  for (std::size_t start = 0; start <= p.size();) {
+    const std::size_t end = std::min(p.find(':', start), p.size());
+    if (fs::exists(fs::path(p.substr(start, end - start)) / tool)) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+// One Xvfb server per test suite, on a display number it picks itself
+// (-displayfd), so tests can run in parallel with each other and anything else.
+class XvfbTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!onPath("Xvfb")) {
+      skipReason_ = "Xvfb is not installed (./prime.sh installs the xvfb package)";
+      return;
+    }
+    int fds[2];
+    if (pipe(fds) != 0) {
+      skipReason_ = "pipe failed";
+      return;
+    }
+    // 2560 x 2048: room for the 1024 x 768 screen at zoom 2.
+    server_ = new ChildProcess({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0",
+                                "2560x2048x24", "-nolisten", "tcp", "-noreset"});
+    close(fds[1]);
+    std::string number;
+    pollfd pfd{fds[0], POLLIN, 0};
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (number.find('\n') == std::string::npos && std::chrono::steady_clock::now() < end) {
+      if (poll(&pfd, 1, 100) > 0) {
+        char buf[32];
+        const ssize_t n = read(fds[0], buf, sizeof buf);
+        if (n <= 0) break;
+        number.append(buf, static_cast<std::size_t>(n));
+      }
+    }
+    close(fds[0]);
+    if (number.find('\n') == std::string::npos) {
+      server_->wait(100);
+      skipReason_ = "Xvfb did not start: " + server_->err();
+      delete server_;
+      server_ = nullptr;
+      return;
+    }
+    display_ = ":" + number.substr(0, number.find('\n'));
+  }
+  static void TearDownTestSuite() {
+    if (server_ != nullptr) {
+      server_->signal(SIGTERM);
+      server_->wait(5000);
+      delete server_;
+      server_ = nullptr;
+    }
+  }
+  void SetUp() override {
+    if (!skipReason_.empty()) GTEST_SKIP() << skipReason_;
+    ASSERT_TRUE(onPath("xwd")) << "xwd is not installed (package x11-apps; ./prime.sh installs it)";
+    ASSERT_TRUE(onPath("xdotool")) << "xdotool is not installed (./prime.sh installs it)";
+  }
+
+  // The children's environment: our server, the window module beside
+  // `prime` (whatever PRIME_WINDOW_MODULE the caller has set), and (for the
+  // ASan runs) the suppressions of SDL's third-party leaks.
+  std::map<std::string, std::string> env() const {
+    const char* lsan = std::getenv("LSAN_OPTIONS");
+    const std::string supp =
+        (fs::path(PRIME_TEST_SUPPORT) / "lsan-sdl.supp").string();
+    return {{"DISPLAY", display_},
+            {"WAYLAND_DISPLAY", ""},
+            {"PRIME_WINDOW_MODULE", ""},
+            {"LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") +
+                                 "suppressions=" + supp + ":print_suppressions=0"}};
+  }
+
+  // Runs a tool against the server and returns its exit status; what it
+  // said on stderr is kept in lastErr_.
+  int tool(const std::vector<std::string>& argv) {
+    ChildProcess p(argv, env());
+    const int status = p.wait(30000).value_or(-1);
+    lastErr_ = p.err();
+    return status;
+  }
+  std::string lastErr_;
+  // The same, telling on stderr when it fails.
+  int toolOrSay(const std::vector<std::string>& argv) {
+    const int status = tool(argv);
+    if (status != 0) std::cerr << argv[0] << " exited " << status << ": " << lastErr_ << "\n";
+    return status;
+  }
+
+  static inline ChildProcess* server_ = nullptr;
+  static inline std::string display_, skipReason_;
+};
+
+// The window id `prime` prints ("... (window 0x1a00008 ...").
+std::string windowId(const std::string& err) {
+  const auto at = err.find("window 0x");
+  if (at == std::string::npos) return "";
+  std::size_t end = at + 9;
+  while (end < err.size() && std::isxdigit(static_cast<unsigned char>(err[end]))) ++end;
+  return err.substr(at + 7, end - at - 7);
+}
+
+// An XWD file (X11/XWDFile.h) of a TrueColor window as 8-bit RGB. Its
+// header is big-endian CARD32s; the pixels are in the header's byte order.
+prime::Image8 readXwd(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> b((std::istreambuf_iterator<char>(in)),
+                                    std::istreambuf_iterator<char>());
+  if (b.size() < 100) throw std::runtime_error(path + ": not an XWD file");
+  auto card = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(b[4 * i] << 24 | b[4 * i + 1] << 16 | b[4 * i + 2] << 8 |
+                                      b[4 * i + 3]);
+  };
+  const std::uint32_t headerSize = card(0), format = card(2), width = card(4), height = card(5),
+                      byteOrder = card(7), bitsPerPixel = card(11), bytesPerLine = card(12),
+                      red = card(14), green = card(15), blue = card(16), ncolors = card(19);
+  if (card(1) != 7 || format != 2 || (bitsPerPixel != 32 && bitsPerPixel != 24))
+    throw std::runtime_error(path + ": expected a version 7 ZPixmap of 24 or 32 bits per pixel");
+  const std::size_t data = headerSize + 12u * ncolors;
+  if (b.size() < data + static_cast<std::size_t>(bytesPerLine) * height)
+    throw std::runtime_error(path + ": short");
+  auto shift = [](std::uint32_t mask) {
+    int s = 0;
+    while (mask != 0 && (mask & 1) == 0) mask >>= 1, ++s;
+    return s;
+  };
+  prime::Image8 img;
+  img.width = static_cast<int>(width);
+  img.height = static_cast<int>(height);
+  img.rgb.resize(static_cast<std::size_t>(width) * height * 3);
+  const std::size_t bytes = bitsPerPixel / 8;
+  for (std::uint32_t y = 0; y < height; ++y)
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const std::uint8_t* p = &b[data + static_cast<std::size_t>(y) * bytesPerLine + x * bytes];
+      std::uint32_t v = 0;
+      for (std::size_t k = 0; k < bytes; ++k)
+        v |= static_cast<std::uint32_t>(p[k])
+             << (8 * (byteOrder == 0 ? k : bytes - 1 - k));  // 0: LSBFirst
+      std::uint8_t* o = &img.rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+      o[0] = static_cast<std::uint8_t>((v & red) >> shift(red));
+      o[1] = static_cast<std::uint8_t>((v & green) >> shift(green));
+      o[2] = static_cast<std::uint8_t>((v & blue) >> shift(blue));
+    }
+  return img;
+}
+
+// How many pixels differ, and the first one.
+std::string compare(const prime::Image8& shown, const prime::Image8& want, int zoom,
+                    std::size_t& differing) {
+  differing = 0;
+  std::string first;
+  if (shown.width != want.width * zoom || shown.height != want.height * zoom)
+    return "size " + std::to_string(shown.width) + "x" + std::to_string(shown.height) + " vs " +
+           std::to_string(want.width * zoom) + "x" + std::to_string(want.height * zoom);
+  for (int y = 0; y < shown.height; ++y)
+    for (int x = 0; x < shown.width; ++x) {
+      const std::uint8_t* s = &shown.rgb[(static_cast<std::size_t>(y) * shown.width + x) * 3];
+      const std::uint8_t* w =
+          &want.rgb[(static_cast<std::size_t>(y / zoom) * want.width + x / zoom) * 3];
+      if (s[0] != w[0] || s[1] != w[1] || s[2] != w[2]) {
+        if (differing++ == 0)
+          first = "first at (" + std::to_string(x) + ", " + std::to_string(y) + "): shown " +
+                  std::to_string(s[0]) + "," + std::to_string(s[1]) + "," + std::to_string(s[2]) +
+                  ", exported " + std::to_string(w[0]) + "," + std::to_string(w[1]) + "," +
+                  std::to_string(w[2]);
+      }
+    }
+  return first;
+}
+
+// Captures the window from the server until it matches `want` (the window
+// may still be catching up), or returns the last mismatch.
+std::string captureMatches(const std::function<int(const std::vector<std::string>&)>& run,
+                           const std::string& id, const fs::path& xwd, const prime::Image8& want,
+                           int zoom) {
+  std::string why = "no capture";
+  for (int attempt = 0; attempt < 25; ++attempt) {
+    if (run({"xwd", "-silent", "-id", id, "-out", xwd.string()}) != 0) {
+      why = "xwd -id " + id + " failed";
+    } else {
+      std::size_t differing = 0;
+      why = compare(readXwd(xwd.string()), want, zoom, differing);
+      if (why.empty()) return "";
+      why += " (" + std::to_string(differing) + " pixels differ)";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  return why;
+}
+
+// 64 x 48 pixels whose values cover all 256 screen indices, negative and
+// >255 values included (Q12): v = 71*x + 37*y - 300.
+prime::io::GraphFile patternGraph() {
+  prime::io::GraphFile g;
+  g.numPixAcross = 63;
+  g.numPixDown = 47;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x)
+      g.pixels.push_back(static_cast<std::int16_t>(71 * x + 37 * y - 300));
+  return g;
+}
+
+TEST_F(XvfbTest, ViewShowsExactlyWhatExportWritesAtZoomOneAndTwo) {
+  prime::test::TempScene d;
+  prime::io::writeGraphFile(d.path("g").string(), patternGraph());
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  for (const std::string palette : {"listing", "plate3"}) {
+    ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area",
+                   "screen", "--palette", palette}),
+              0);
+    const prime::Image8 want = prime::readPng(d.path("want.png").string());
+    for (const int zoom : {1, 2}) {
+      ChildProcess view({PRIME_EXE, "view", d.path("g").string(), "--palette", palette, "--zoom",
+                         std::to_string(zoom)},
+                        env());
+      ASSERT_TRUE(view.waitForErr("; Esc or close the window to quit\n", 30000)) << view.err();
+      const std::string id = windowId(view.err());
+      const std::string why = captureMatches(run, id, d.path("shown.xwd"), want, zoom);
+      EXPECT_EQ(why, "") << palette << " zoom " << zoom;
+      // Esc closes it, as WaitForEsc.
+      EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+      const auto status = view.wait(20000);
+      ASSERT_TRUE(status.has_value()) << "prime view did not quit on Esc";
+      EXPECT_EQ(*status, 0) << view.err();
+    }
+  }
+}
+
+TEST_F(XvfbTest, ZoomAndScreenshotKeys) {
+  prime::test::TempScene d;
+  prime::io::writeGraphFile(d.path("g").string(), patternGraph());
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area",
+                 "screen"}),
+            0);
+  const prime::Image8 want = prime::readPng(d.path("want.png").string());
+  // Screenshots go to the current directory: run prime from the temp dir.
+  const fs::path cwd = fs::current_path();
+  fs::current_path(d.path());
+  ChildProcess view({PRIME_EXE, "view", d.path("g").string()}, env());
+  fs::current_path(cwd);
+  ASSERT_TRUE(view.waitForErr("; Esc or close the window to quit\n", 30000)) << view.err();
+  const std::string id = windowId(view.err());
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "plus"}), 0);
+  EXPECT_EQ(captureMatches(run, id, d.path("z2.xwd"), want, 2), "");
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "minus", "key", "s"}), 0);
+  ASSERT_TRUE(view.waitForErr("prime: screenshot ", 10000)) << view.err();
+  EXPECT_TRUE(view.waitForErr(".png\n", 5000));
+  const prime::Image8 shot = prime::readPng(d.path("prime-screenshot-1.png").string());
+  std::size_t differing = 0;
+  EXPECT_EQ(compare(shot, want, 1, differing), "");
+  EXPECT_EQ(captureMatches(run, id, d.path("z1.xwd"), want, 1), "");
+  view.signal(SIGTERM);  // SDL turns it into a quit, like closing the window
+  EXPECT_EQ(view.wait(20000).value_or(-1), 0);
+}
+
+fs::path sphere(const prime::test::TempScene& s) {
+  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  return s.path();
+}
+
+TEST_F(XvfbTest, TraceDrawsEachPixelWherePutPixelPutItAndWaitsForEsc) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ChildProcess trace({PRIME_EXE, "trace", "--model", s.path().string()}, env());
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+  EXPECT_THAT(trace.out(), HasSubstr("traced 350 x 769 pixels"));
+  ASSERT_EQ(run({PRIME_EXE, "export", s.path("graph_scr").string(), s.path("want.png").string(),
+                 "--area", "screen"}),
+            0);
+  const prime::Image8 want = prime::readPng(s.path("want.png").string());
+  const std::string id = windowId(trace.err());
+  ASSERT_FALSE(id.empty()) << trace.err();
+  EXPECT_EQ(captureMatches(run, id, s.path("shown.xwd"), want, 1), "");
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+  // The window changed nothing in the file: same bytes as a headless render.
+  const auto withWindow = s.read("graph_scr");
+  ASSERT_EQ(run({PRIME_EXE, "trace", "--no-window", "-q", s.path().string()}), 0);
+  EXPECT_EQ(s.read("graph_scr"), withWindow);
+}
+
+TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
+  // Sixteen times the pixels on one thread (about 2 s): time to press Esc.
+  ChildProcess trace(
+      {PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"}, env());
+  ASSERT_TRUE(trace.waitForErr("Esc aborts", 60000)) << trace.err();
+  const std::string id = windowId(trace.err());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  const auto status = trace.wait(60000);
+  ASSERT_TRUE(status.has_value());
+  EXPECT_EQ(*status, 1) << trace.err();
+  EXPECT_THAT(trace.err(), HasSubstr("prime: trace aborted after "));
+  EXPECT_FALSE(s.exists("graph_scr"));
+  ASSERT_TRUE(s.exists("graph_scr.partial"));
+  const prime::io::GraphFilePrefix part =
+      prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
+  EXPECT_FALSE(part.complete());
+  EXPECT_EQ(part.pixelsPresent % 1394, 0u);
+}
+
+// The SDL2 code is a module that `prime` loads when a window opens
+// (window_module_test.cpp has the headless side): without it there is no
+// window, even with a display, and the render says why and runs headless;
+// PRIME_WINDOW_MODULE names the module to load.
+TEST_F(XvfbTest, WithoutItsWindowModuleTraceRunsHeadlessAndSaysWhy) {
+  prime::test::TempScene s;
+  sphere(s);
+  ASSERT_EQ(toolOrSay({PRIME_EXE, "model", s.path().string()}), 0);
+  const std::string missing = s.path("missing/libprime_window_sdl.so").string();
+  auto e = env();
+  e["PRIME_WINDOW_MODULE"] = missing;
+  ChildProcess headless({PRIME_EXE, "trace", s.path().string(), "--screen", "64", "48"}, e);
+  EXPECT_EQ(headless.wait(60000).value_or(-1), 0) << headless.err();
+  EXPECT_THAT(headless.err(),
+              HasSubstr("prime: running headless (cannot load the window module " + missing +
+                        " (PRIME_WINDOW_MODULE): " + missing + ": cannot open shared object file"));
+  EXPECT_TRUE(s.exists("graph_scr"));
+
+  e["PRIME_WINDOW_MODULE"] =
+      (fs::path(PRIME_EXE).parent_path() / "libprime_window_sdl.so").string();
+  ChildProcess shown({PRIME_EXE, "trace", s.path().string(), "--screen", "64", "48", "--no-wait"},
+                     e);
+  EXPECT_EQ(shown.wait(60000).value_or(-1), 0) << shown.err();
+  EXPECT_THAT(shown.err(), HasSubstr("prime: drawing in window 0x"));
+  EXPECT_THAT(shown.err(), Not(HasSubstr("headless")));
+}
+
+}  // namespace

@@ -1,0 +1,2 @@
+// The fixture system's own header.
+#pragma once

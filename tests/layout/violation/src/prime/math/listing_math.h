@@ -1,0 +1,2 @@
+// The included side of the fixture.
+#pragma once

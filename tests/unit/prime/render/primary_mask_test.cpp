@@ -1,0 +1,152 @@
+// The primary-ray mask may answer "background" only for pixels whose rays
+// no box test can accept. Checked by brute force: every pixel's primary ray
+// (normalised as CastRay does) against every box, over random boxes and
+// cameras; and end to end, a masked render against the listing's linear
+// search, pixel for pixel.
+#include "src/prime/render/primary_mask.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "src/prime/render/renderer.h"
+#include "tests/unit/prime/render/small_scene.h"
+#include "src/prime/math/listing_vec.h"
+
+namespace prime {
+namespace {
+
+Aabb box(const Vec3& lo, const Vec3& hi) {
+  Aabb b;
+  b.add(lo);
+  b.add(hi);
+  return b;
+}
+
+bool anyBoxAccepts(const std::vector<Aabb>& boxes, Ray ray) {
+  unitVector(ray.d, ray.d);  // E41: CastRay's normalisation comes before the box tests
+  const Vec3 inv = reciprocal(ray.d);
+  for (const Aabb& b : boxes)
+    if (!b.empty() && b.entry(ray, inv) != std::numeric_limits<double>::infinity()) return true;
+  return false;
+}
+
+TEST(PrimaryRayMask, ListingCameraOneBoxInFront) {
+  const ListingCamera camera{CameraSettings{}};  // 350 x 769 pixels
+  const std::vector<Aabb> boxes = {box({400, 400, 100}, {600, 600, 300})};
+  const PrimaryRayMask mask(camera, boxes);
+  int accepted = 0, masked = 0;
+  for (int i = 0; i < camera.rows(); ++i)
+    for (int j = 0; j < camera.columns(); ++j) {
+      const bool accepts = anyBoxAccepts(boxes, camera.primaryRay(i, j));
+      accepted += accepts;
+      ASSERT_TRUE(!accepts || mask.mayHit(i, j)) << "row " << i << " column " << j;
+      masked += !mask.mayHit(i, j);
+    }
+  EXPECT_GT(accepted, 1000);
+  // The box covers about a fifth of the window each way; the rectangle is
+  // tight up to the 2-pixel margin, so most of the image is masked.
+  EXPECT_GT(masked, camera.rows() * camera.columns() / 2);
+  EXPECT_LT(mask.coverage(), 0.5);
+}
+
+TEST(PrimaryRayMask, BoxReachingBehindTheEyeCoversEverything) {
+  const ListingCamera camera{CameraSettings{}};
+  const std::vector<Aabb> boxes = {box({400, 400, 100}, {600, 600, 300}),
+                                   box({0, 0, -2000}, {10, 10, 0})};
+  const PrimaryRayMask mask(camera, boxes);
+  EXPECT_EQ(mask.coverage(), 1.0);
+  EXPECT_TRUE(mask.mayHit(0, 0));
+}
+
+TEST(PrimaryRayMask, NoBoxesMasksEverything) {
+  const ListingCamera camera{CameraSettings{}};
+  const PrimaryRayMask mask(
+      camera, std::vector<Aabb>{Aabb{}});  // one empty box: an object with no primitive
+  EXPECT_EQ(mask.coverage(), 0.0);
+}
+
+TEST(PrimaryRayMask, RandomBoxesAndCamerasNeverMaskAnAcceptedRay) {
+  std::mt19937 rng(1991);
+  std::uniform_real_distribution<double> u(0, 1);
+  int accepted = 0, masked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    CameraSettings s;
+    s.eye = {u(rng) * 1000, u(rng) * 1000, -500 - u(rng) * 3000};
+    s.windowLeft = {u(rng) * 200 - 100, 800 + u(rng) * 400, u(rng) * 200 - 100};
+    s.windowRight = {900 + u(rng) * 200, s.windowLeft[1] + u(rng) * 100 - 50, u(rng) * 200 - 100};
+    s.xMin = u(rng) * 0.5;
+    s.yMin = u(rng) * 0.5;
+    s.xMax = s.xMin + 0.1 + u(rng) * 0.4;
+    s.yMax = s.yMin + 0.1 + u(rng) * 0.4;
+    s.screenWidth = 320;
+    s.screenHeight = 240;
+    const ListingCamera camera(s);
+    std::vector<Aabb> boxes;
+    for (int k = 0, n = 1 + trial % 6; k < n; ++k) {
+      const Vec3 c{u(rng) * 1400 - 200, u(rng) * 1400 - 200, u(rng) * 2000 - 200};
+      const double h = 30 + u(rng) * 300;
+      boxes.push_back(
+          box({c[0] - h, c[1] - h * u(rng), c[2] - h}, {c[0] + h * u(rng), c[1] + h, c[2] + h}));
+    }
+    const PrimaryRayMask mask(camera, boxes);
+    for (int i = 0; i < camera.rows(); ++i)
+      for (int j = 0; j < camera.columns(); ++j) {
+        const bool accepts = anyBoxAccepts(boxes, camera.primaryRay(i, j));
+        accepted += accepts;
+        masked += !mask.mayHit(i, j);
+        ASSERT_TRUE(!accepts || mask.mayHit(i, j))
+            << "trial " << trial << " row " << i << " column " << j;
+        // Supersampling offsets stay inside the margin.
+        for (double f : {-0.5, 0.5})
+          ASSERT_TRUE(mask.mayHit(i, j) || !anyBoxAccepts(boxes, camera.sampleRay(i, j, f, -f)))
+              << "trial " << trial << " sample of row " << i << " column " << j;
+      }
+  }
+  EXPECT_GT(accepted, 10000);  // the trials do see boxes ...
+  EXPECT_GT(masked, 10000);    // ... and the mask does skip pixels
+}
+
+// A small scene: a sphere and a CSG difference in the middle of the window.
+Scene sceneOfTwo() {
+  test::SmallScene small;
+  small.object(0.3, {0.6, 0.4, 0.2}, small.prim('S', {150, 150, 150}, {350, 600, 200}));
+  const int a = small.prim('B', {200, 200, 200}, {600, 300, 100});
+  const int b = small.prim('S', {120, 120, 120}, {700, 400, 100});
+  small.object(1.0, {0.2, 0.7, 0.4},
+               {CsgEntry{'-', 1, 2}, CsgEntry{'P', a, 0}, CsgEntry{'P', b, 0}});
+  // Two small spheres far apart in one union: most of the object's box is
+  // empty, and the mask keeps only the two spheres' own boxes.
+  const int p1 = small.prim('S', {40, 40, 40}, {150, 150, 50});
+  const int p2 = small.prim('S', {40, 40, 40}, {850, 850, 450});
+  small.object(0.5, {0.9, 0.9, 0.2},
+               {CsgEntry{'+', 1, 2}, CsgEntry{'P', p1, 0}, CsgEntry{'P', p2, 0}});
+  return small.scene;
+}
+
+TEST(PrimaryRayMask, MaskedRenderEqualsTheListingsLinearSearch) {
+  const Scene scene = sceneOfTwo();
+  RenderSettings settings;
+  settings.threads = 2;
+  const RenderResult r = render(scene, settings);
+  EXPECT_GT(r.stats.maskedPrimaryRays, 100000u);  // most of the window is empty
+  TraceOptions listing;
+  listing.skipUnneededWork = false;  // obj/List searched linearly, every ray traced
+  const Tracer1991 tracer(scene, listing);
+  const ListingCamera camera(settings.camera);
+  TraceStats stats;
+  int hits = 0;
+  for (int i = 0; i < camera.rows(); ++i)
+    for (int j = 0; j < camera.columns(); ++j) {
+      const Rgb c = tracer.castRay(camera.primaryRay(i, j), 0, stats);
+      const Rgb& m = r.rgb[static_cast<std::size_t>(i) * camera.columns() + j];
+      hits += c != Rgb{0.05, 0.1, 0.15};
+      ASSERT_EQ(std::memcmp(c.data(), m.data(), sizeof c), 0) << "row " << i << " column " << j;
+    }
+  EXPECT_GT(hits, 10000);
+}
+
+}  // namespace
+}  // namespace prime
