@@ -147,7 +147,7 @@ def read_index():
 
 def id_pattern(single_letters):
     # A bare id: one of the index's letters and 1-3 digits, not part of a longer word, a path,
-    # a file name (D1.txt), an option (+W350) or a system-prefixed id (CGL-E3).
+    # a file name (D1.txt), an option (+W350) or a system-prefixed id (CGL-E<n>).
     letters = "".join(sorted(single_letters))
     return re.compile(
         r"(?<![\w\\+])(?<!CGL-)(?<!MAL-)([" + letters + r"])(\d{1,3})(?![\w])(?!\.[A-Za-z0-9])")
