@@ -2,8 +2,10 @@
 // CSG module as printed (csg_1991.h).
 //
 // Every expected list below was obtained by tracing the printed C of the
-// listing by hand (line numbers of ../seeds/000_9a1de24ff0ae8846.txt, read
-// with errata E12/E13), never by running the port. Trace notation:
+// listing by hand (CSG.c and tList.c of Appendix A of O'Reilly's 1991 DCU
+// thesis; the numbers are OCR line numbers of its transcription, see
+// docs/prime/listing-errata.md; read with errata E12/E13), never by running
+// the port. Trace notation:
 //   A = *tList (left operand), B = *tList1 (right); a0/a1, b0/b1 = the val of
 //   their front pairs; "out" = the list hung off tmpPtDummy (tListPos).
 //   Copy(x->y) copies node x's data (val, primNum, surfType, norm) onto y.

@@ -2,7 +2,7 @@
 // (src/prime/geom/primitives_1991.h). Every expectation is computed by hand from the
 // listing's formulas or from the geometry of the unit primitive; the working is
 // in the comment next to it. Quirks are named by their errata ids
-// (/work/shared/docs/listing-errata.md).
+// (docs/prime/listing-errata.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
