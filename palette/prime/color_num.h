@@ -5,9 +5,9 @@
 #include <array>
 #include <cstdint>
 
-namespace prime {
+#include "src/math/rgb.h"
 
-using Rgb = std::array<double, 3>;
+namespace prime {
 
 // One setrgbpalette() entry, 0..255 per component as the listing passes them.
 struct PaletteRgb {

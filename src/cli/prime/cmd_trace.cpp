@@ -9,59 +9,22 @@
 // An aborted render never leaves a graph file that looks complete: the target
 // is removed (an older one too), and TARGET.partial holds the header and the
 // rows finished from the top, as the listing's exit(1) would have left it.
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
-#include <sstream>
-#include <thread>
 
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/export.h"
 #include "palette/prime/live_screen.h"
-#include "palette/window/screen_window.h"
 #include "src/cli/commands.h"
+#include "src/cli/live_render.h"
 #include "src/cli/prime/display_options.h"
 #include "src/cli/prime/render_options.h"
 
 namespace prime::cli {
 
 namespace {
-
-// Headless Ctrl-C / SIGTERM: set the render's abort flag (an atomic store is
-// async-signal-safe). With a window, SDL turns both into a quit event instead.
-std::atomic<bool>* gAbortOnSignal = nullptr;
-extern "C" void abortOnSignal(int) {
-  if (gAbortOnSignal != nullptr) gAbortOnSignal->store(true);
-}
-
-class SignalsAbort {
- public:
-  explicit SignalsAbort(std::atomic<bool>& flag) {
-    gAbortOnSignal = &flag;
-    struct sigaction sa {};
-    sa.sa_handler = abortOnSignal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &oldInt_);
-    sigaction(SIGTERM, &sa, &oldTerm_);
-  }
-  ~SignalsAbort() {
-    sigaction(SIGINT, &oldInt_, nullptr);
-    sigaction(SIGTERM, &oldTerm_, nullptr);
-    gAbortOnSignal = nullptr;
-  }
-  SignalsAbort(const SignalsAbort&) = delete;
-  SignalsAbort& operator=(const SignalsAbort&) = delete;
-
- private:
-  struct sigaction oldInt_ {
-  }, oldTerm_{};
-};
 
 void printSummary(const RenderResult& r, const std::string& out) {
   const auto& s = r.stats;
@@ -142,87 +105,25 @@ void addTraceCommand(CLI::App& app, Action& action) {
                                   ? "plate3"
                                   : paletteNameForGraphType(settings.graphType));
 
-      // The window, if there can be one.
-      auto headless = display::headlessReason(display->noWindow);
-      std::unique_ptr<display::LiveScreen> live;
-      std::unique_ptr<display::ScreenWindow> window;
-      if (!headless) {
-        try {
-          live = std::make_unique<display::LiveScreen>(screenW, screenH, windowPalettes(palette),
-                                                       dacOf(*display));
-          window = std::make_unique<display::ScreenWindow>(
-              *live, display::WindowConfig{*dir, display->zoom, "."});
-        } catch (const std::exception& e) {
-          headless = e.what();
-          window.reset();
-          live.reset();
-        }
-      }
-      if (!window && !*quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
-      // InitGraph before the render: the window mapped and its first full
-      // picture sent (up to 1 s), so that cost does not fall inside it.
-      for (int i = 0; window && i < 100 && !window->upToDate(); ++i) window->poll(10);
-      if (window && !*quiet)
-        std::cerr << (std::ostringstream()
-                      << "prime: drawing in window 0x" << std::hex << window->nativeId()
-                      << "; Esc aborts (keys: + - zoom, P palette, D DAC, S screenshot)\n")
-                         .str()
-                  << std::flush;
+      // The emulated screen, in a window if there can be one.
+      display::LiveScreen screen(screenW, screenH, windowPalettes(palette), dacOf(*display));
+      LiveRender live(screen, {display->noWindow, *quiet, *noWait, display->zoom, *dir, "trace",
+                               "P palette, D DAC"});
 
-      std::atomic<bool> abort{false};
-      std::atomic<int> rowsDone{0}, rowsTotal{camera.rows()};
       // Which rows are done (rowDone runs on one thread, the render's caller).
       std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);
       RenderCallbacks cb;
-      cb.abort = &abort;
-      const bool tty = isatty(STDERR_FILENO) && !*quiet;
-      const auto start = std::chrono::steady_clock::now();
-      cb.progress = [&, start](int done, int rows, std::uint64_t rays) {
-        rowsDone = done;
-        rowsTotal = rows;
-        if (!tty) return;
-        const double s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const double left = done > 0 ? s * (rows - done) / done : 0.0;
-        std::fprintf(stderr, "\rrows %d/%d  %.0f rays/s  %.0f s left   ", done, rows,
-                     s > 0 ? rays / s : 0.0, left);
-        std::fflush(stderr);
-      };
+      cb.abort = live.abortFlag();
+      cb.progress = live.progress();
       cb.rowDone = [&](int row, const std::vector<std::int16_t>& indices) {
         finished[static_cast<std::size_t>(row)] = 1;
-        if (live) live->drawRow(at, row, indices);  // PutPixel(j, i, color)
+        if (live.windowed()) screen.drawRow(at, row, indices);  // PutPixel(j, i, color)
       };
-
       RenderResult result;
-      if (window) {
-        // The render on its own thread; this one keeps the window alive.
-        std::exception_ptr error;
-        std::atomic<bool> done{false};
-        std::thread worker([&] {
-          try {
-            result = render(scene, settings, cb);
-          } catch (...) {
-            error = std::current_exception();
-          }
-          done = true;
-        });
-        while (!done) {
-          if (window->poll(30)) abort = true;  // Esc, close, Ctrl-C: ExitOnEsc
-          const int d = rowsDone, n = rowsTotal;
-          window->setStatus(abort ? "aborting"
-                                  : "rows " + std::to_string(d) + "/" + std::to_string(n) + " (" +
-                                        std::to_string(n > 0 ? 100 * d / n : 0) + "%)");
-        }
-        worker.join();
-        if (error) std::rethrow_exception(error);
-      } else {
-        SignalsAbort signals(abort);
-        result = render(scene, settings, cb);
-      }
-      if (tty) std::fprintf(stderr, "\n");
+      live.run([&] { result = render(scene, settings, cb); });
 
       if (result.aborted) {
-        window.reset();  // ExitOnEsc: the screen goes at once
+        live.closeWindow();  // ExitOnEsc: the screen goes at once
         std::size_t prefix = 0;
         while (prefix < finished.size() && finished[prefix]) ++prefix;
         std::error_code ec;
@@ -253,22 +154,13 @@ void addTraceCommand(CLI::App& app, Action& action) {
         }
         if (!trueColourPng->empty())
           writePng(*trueColourPng,
-                   exportTrueColour(screenW, screenH, result.graph, result.rgb, at, area));
+                   exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area));
       }
       if (!*quiet) printSummary(result, target);
       std::fflush(stdout);
-      // Esc (or close) pressed as the last rows finished: the user has had
-      // the WaitForEsc already.
-      if (window && !*noWait && !abort.load()) {
-        char status[64];
-        std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);
-        window->setStatus(status);
-        if (!*quiet)
-          std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); "
-                       "--no-wait or --no-window to skip this\n";
-        while (!window->poll(100)) {
-        }
-      }
+      char status[64];
+      std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);
+      live.waitForEsc(status);
       return 0;
     };
   });

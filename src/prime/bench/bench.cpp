@@ -194,8 +194,8 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
     r.wallMedian = r.wallMin = r.wallMax = wall;
     r.cpuMedian = r.cpuMin = r.cpuMax = cpu;
     r.stats = reference.stats;
-    r.error =
-        compareImages(reference.rgb, reference.graph.pixels, reference.rgb, reference.graph.pixels);
+    r.error = compareImages(reference.rgb.pixels, reference.graph.pixels, reference.rgb.pixels,
+                            reference.graph.pixels);
     rows.push_back(r);
     log(scene.name + ": " + settingLabel(r.setting) + ": " + fmt("%.3f s", wall));
   }
@@ -228,7 +228,8 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
         r.columns = res.graph.width();
         r.rows = res.graph.height();
         r.stats = res.stats;
-        r.error = compareImages(reference.rgb, reference.graph.pixels, res.rgb, res.graph.pixels);
+        r.error = compareImages(reference.rgb.pixels, reference.graph.pixels, res.rgb.pixels,
+                                res.graph.pixels);
       }
     }
     r.wallMedian = median(walls);

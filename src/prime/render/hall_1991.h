@@ -19,11 +19,10 @@
 #include <array>
 #include <span>
 
+#include "src/math/rgb.h"
 #include "src/math/vec.h"
 
 namespace prime {
-
-using Rgb = std::array<double, 3>;
 
 // Hue.h (the object's shading coefficients), lines 2380-2392.
 struct HallHue {

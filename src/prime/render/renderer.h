@@ -1,7 +1,9 @@
 // RayTrace.c's main loop: one ray tree per pixel of the listing's window,
-// ColorNum'ed to a palette index and collected into a graph file. Rows are
-// rendered in parallel; each pixel is independent and written to its own slot,
-// so the bytes are the same for any thread count.
+// ColorNum'ed to a palette index and collected into a graph file (PRIME's
+// "film"). The rows go through the shared scheduler (src/render/render_rows.h)
+// and the optional supersampling through the shared sampler
+// (src/render/pixel_sampling.h); what is PRIME's is here: the profile's
+// tracer, the listing's camera, the primary-ray mask and ColorNum.
 #pragma once
 #include <atomic>
 #include <functional>
@@ -9,22 +11,13 @@
 #include "legacy_io/prime/graph_file.h"
 #include "src/prime/render/camera.h"
 #include "src/prime/render/tracer_1991.h"
+#include "src/render/pixel_sampling.h"
+#include "src/render/render_rows.h"
+#include "src/render/rgb_image.h"
 
 namespace prime {
 
 enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
-
-// Rays per pixel. Single is the listing (one ray through the window point);
-// Grid shoots n x n rays over the pixel's footprint; Adaptive is Whitted's
-// adaptive supersampling (thesis 2.6.1): the centre and four corners, and the
-// four quarters again wherever those differ by more than `tolerance` in any
-// channel, down to `maxLevel` subdivisions.
-struct Sampling {
-  enum class Mode { Single, Grid, Adaptive } mode = Mode::Single;
-  int gridN = 1;
-  double tolerance = 0.05;
-  int maxLevel = 2;
-};
 
 enum class Profile { Listing1991, Modern };
 
@@ -42,14 +35,16 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-  io::GraphFile graph;   // header 349 x 768 etc., (across+1) x (down+1) pixels
-  std::vector<Rgb> rgb;  // the unquantised colour of each pixel, same order
+  io::GraphFile graph;  // header 349 x 768 etc., (across+1) x (down+1) pixels
+  RgbImage rgb;         // the unquantised colour of each pixel, same order
   TraceStats stats;
   double seconds = 0;
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row
 };
 
+// The shared scheduler's callbacks, with each finished row's palette
+// indices (what the live 8514/A screen draws).
 struct RenderCallbacks {
   // Called on the calling thread about five times a second and once at the end.
   std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;

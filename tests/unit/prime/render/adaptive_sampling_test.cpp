@@ -71,7 +71,7 @@ TEST(AdaptiveSampling, SharedPointsTracedOnceSamePixels) {
       for (int j = 0; j < camera.columns(); ++j) {
         const Rgb want =
             reference(tracer, camera, i, j, 0.0, 0.0, 0.5, 0, settings.sampling, plain);
-        const Rgb& got = r.rgb[static_cast<std::size_t>(i) * camera.columns() + j];
+        const Rgb& got = r.rgb.at(i, j);
         ASSERT_EQ(std::memcmp(want.data(), got.data(), sizeof want), 0)
             << "levels " << levels << " row " << i << " column " << j;
       }

@@ -11,9 +11,9 @@
 #include <limits>
 #include <random>
 
+#include "src/prime/math/listing_vec.h"
 #include "src/prime/render/renderer.h"
 #include "tests/unit/prime/render/small_scene.h"
-#include "src/prime/math/listing_vec.h"
 
 namespace prime {
 namespace {
@@ -141,7 +141,7 @@ TEST(PrimaryRayMask, MaskedRenderEqualsTheListingsLinearSearch) {
   for (int i = 0; i < camera.rows(); ++i)
     for (int j = 0; j < camera.columns(); ++j) {
       const Rgb c = tracer.castRay(camera.primaryRay(i, j), 0, stats);
-      const Rgb& m = r.rgb[static_cast<std::size_t>(i) * camera.columns() + j];
+      const Rgb& m = r.rgb.at(i, j);
       hits += c != Rgb{0.05, 0.1, 0.15};
       ASSERT_EQ(std::memcmp(c.data(), m.data(), sizeof c), 0) << "row " << i << " column " << j;
     }

@@ -1,0 +1,68 @@
+// Running any system's render live: in a window when there can be one (else
+// headless, saying why once), the render on a worker thread while this one
+// keeps the window alive, Esc / close / Ctrl-C aborting it (headless:
+// SIGINT and SIGTERM), progress on a terminal, and afterwards a window that
+// stays until Esc (the 1991 program's WaitForEsc) unless asked not to.
+// What the window shows is the system's LiveFrame; what the render writes is
+// the command's business.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "palette/window/live_frame.h"
+#include "palette/window/screen_window.h"
+
+namespace prime::cli {
+
+struct LiveOptions {
+  bool noWindow = false;  // --no-window
+  bool quiet = false;     // no progress, no messages
+  bool noWait = false;    // close the window when the render is done
+  int zoom = 1;
+  std::string caption;      // the window title's first part: scene or file
+  std::string commandName;  // for messages: "trace"
+  std::string keys;         // the frame's own keys, for the first message ("P palette, D DAC")
+};
+
+class LiveRender {
+ public:
+  // Opens a window on `frame` unless there can be none (no DISPLAY,
+  // --no-window, no window module): then headless, and says why unless quiet.
+  LiveRender(display::LiveFrame& frame, LiveOptions options);
+  ~LiveRender();
+  LiveRender(const LiveRender&) = delete;
+  LiveRender& operator=(const LiveRender&) = delete;
+
+  bool windowed() const { return window_ != nullptr; }
+  // The flag the render must honour (between rows).
+  const std::atomic<bool>* abortFlag() const { return &abort_; }
+  bool aborted() const { return abort_.load(); }
+
+  // A progress callback that prints rows, rays per second and the time left
+  // on a terminal (nothing otherwise), and feeds the window's title.
+  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress();
+
+  // Runs `render` to its end: with a window, on a worker thread while this
+  // thread polls the window; headless, here, with SIGINT/SIGTERM setting
+  // the abort flag. An exception from `render` is rethrown here.
+  void run(const std::function<void()>& render);
+
+  // The window goes at once (an aborted render: the 1991 ExitOnEsc).
+  void closeWindow() { window_.reset(); }
+  // After a finished render: the window shows `status` and stays until Esc
+  // or close, unless --no-wait, no window, or Esc was already pressed.
+  void waitForEsc(const std::string& status);
+
+ private:
+  LiveOptions options_;
+  std::unique_ptr<display::ScreenWindow> window_;
+  std::atomic<bool> abort_{false};
+  std::atomic<int> rowsDone_{0}, rows_{0};
+  bool tty_ = false;
+};
+
+}  // namespace prime::cli

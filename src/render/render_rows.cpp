@@ -1,0 +1,93 @@
+#include "src/render/render_rows.h"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace prime {
+
+int threadCount(int requested, int rows) {
+  int threads = requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
+  return std::max(1, std::min(threads, rows));
+}
+
+RowsRun renderRows(int rows, int threads,
+                   const std::function<std::uint64_t(int row, int thread)>& renderRow,
+                   const RowCallbacks& callbacks) {
+  const auto start = std::chrono::steady_clock::now();
+  RowsRun run;
+  run.threads = threadCount(threads, rows);
+
+  std::atomic<int> nextRow{0}, rowsDone{0};
+  std::atomic<std::uint64_t> raysSoFar{0};
+  std::mutex mutex;  // guards the finished-row queue and the first error
+  std::condition_variable
+      wake;  // the last row is done, or an error: no need to sleep out the 200 ms
+  std::vector<int> finished;
+  std::exception_ptr error;
+
+  auto worker = [&](int thread) {
+    for (;;) {
+      if (callbacks.abort && callbacks.abort->load()) break;
+      const int row = nextRow.fetch_add(1);
+      if (row >= rows) break;
+      try {
+        raysSoFar += renderRow(row, thread);
+      } catch (...) {
+        {
+          std::lock_guard lock(mutex);
+          if (!error) error = std::current_exception();
+          nextRow = rows;  // stop everyone
+        }
+        wake.notify_all();
+        break;
+      }
+      bool last = false;
+      {
+        std::lock_guard lock(mutex);
+        finished.push_back(row);
+        last = ++rowsDone == rows;
+      }
+      if (last) wake.notify_all();
+    }
+  };
+
+  std::vector<std::thread> pool;
+  for (int t = 0; t < run.threads; ++t) pool.emplace_back(worker, t);
+
+  auto report = [&] {
+    std::vector<int> rowsNow;
+    {
+      std::lock_guard lock(mutex);
+      rowsNow.swap(finished);
+    }
+    if (callbacks.rowDone)
+      for (int row : rowsNow) callbacks.rowDone(row);
+    if (callbacks.progress) callbacks.progress(rowsDone.load(), rows, raysSoFar.load());
+  };
+  auto stop = [&] {
+    return rowsDone.load() >= rows || error || (callbacks.abort && callbacks.abort->load());
+  };
+  for (;;) {
+    {
+      std::unique_lock lock(mutex);
+      if (stop()) break;
+      wake.wait_for(lock, std::chrono::milliseconds(200), stop);
+      if (stop()) break;
+    }
+    report();
+  }
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  report();
+
+  run.aborted = rowsDone.load() < rows;
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace prime

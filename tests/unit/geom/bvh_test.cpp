@@ -1,0 +1,72 @@
+// The shared BVH over any boxes: exactly the boxes a linear search finds
+// (entry <= limit), nearest box first along each subtree, empty boxes never.
+#include "src/geom/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace prime {
+namespace {
+
+Aabb box(const Vec3& lo, const Vec3& hi) {
+  Aabb b;
+  b.add(lo);
+  b.add(hi);
+  return b;
+}
+
+TEST(Bvh, VisitsExactlyTheBoxesALinearSearchMeets) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-100, 100), size(0.1, 10);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 lo{u(rng), u(rng), u(rng)};
+    boxes.push_back(box(lo, lo + Vec3{size(rng), size(rng), size(rng)}));
+  }
+  boxes.push_back(Aabb{});  // empty: never visited
+  const Bvh bvh(boxes);
+  for (int r = 0; r < 300; ++r) {
+    Ray ray{{u(rng), u(rng), -300}, {u(rng) / 200, u(rng) / 200, 1}};
+    const BoxRay prepared(ray);
+    const double limit = r % 2 ? std::numeric_limits<double>::infinity() : 300.0;
+    std::set<int> linear, visited;
+    for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+      if (!boxes[i].empty() && boxes[i].entry(prepared) <= limit) linear.insert(i);
+    bvh.traverse(
+        prepared,
+        [&](int index, double t) {
+          EXPECT_TRUE(visited.insert(index).second);
+          EXPECT_EQ(t, boxes[index].entry(prepared));
+        },
+        [&] { return limit; });
+    EXPECT_EQ(visited, linear) << "ray " << r;
+    EXPECT_FALSE(visited.count(static_cast<int>(boxes.size()) - 1));
+  }
+}
+
+TEST(Bvh, AShrinkingLimitPrunesFartherBoxes) {
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 40; ++i) boxes.push_back(box({-1, -1, 10.0 * i}, {1, 1, 10.0 * i + 1}));
+  const Bvh bvh(boxes);
+  const BoxRay ray(Ray{{0, 0, -5}, {0, 0, 1}});
+  double limit = std::numeric_limits<double>::infinity();
+  std::vector<int> visited;
+  bvh.traverse(
+      ray,
+      [&](int index, double t) {
+        visited.push_back(index);
+        limit = std::min(limit, t + 1);  // a "hit" inside the first box met
+      },
+      [&] { return limit; });
+  ASSERT_FALSE(visited.empty());
+  EXPECT_EQ(visited.front(), 0);
+  EXPECT_LE(visited.size(), 4u);  // a leaf's worth at most, never the far boxes
+}
+
+}  // namespace
+}  // namespace prime

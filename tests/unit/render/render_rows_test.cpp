@@ -1,0 +1,96 @@
+// The shared row scheduler: every row rendered once, the same picture for
+// any thread count, the first error rethrown, abort honoured.
+#include "src/render/render_rows.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace prime {
+namespace {
+
+std::vector<std::uint64_t> renderPicture(int rows, int threads, std::vector<int>* calls = nullptr) {
+  std::vector<std::uint64_t> picture(static_cast<std::size_t>(rows) * 7, 0);
+  std::vector<std::atomic<int>> counts(static_cast<std::size_t>(rows));
+  const RowsRun run = renderRows(rows, threads, [&](int row, int thread) -> std::uint64_t {
+    EXPECT_GE(thread, 0);
+    EXPECT_LT(thread, threadCount(threads, rows));
+    for (int x = 0; x < 7; ++x)
+      picture[static_cast<std::size_t>(row) * 7 + x] = static_cast<std::uint64_t>(row) * 1000 + x;
+    ++counts[static_cast<std::size_t>(row)];
+    return 7;
+  });
+  EXPECT_FALSE(run.aborted);
+  EXPECT_EQ(run.threads, threadCount(threads, rows));
+  if (calls)
+    for (auto& c : counts) calls->push_back(c.load());
+  return picture;
+}
+
+TEST(RenderRows, EveryRowOnceAndTheSamePictureForAnyThreadCount) {
+  std::vector<int> calls;
+  const auto one = renderPicture(97, 1, &calls);
+  for (int c : calls) EXPECT_EQ(c, 1);
+  for (int threads : {2, 3, 8, 200}) EXPECT_EQ(renderPicture(97, threads), one) << threads;
+  EXPECT_EQ(one[96 * 7 + 6], 96006u);
+}
+
+TEST(RenderRows, ThreadCountNeverExceedsTheRows) {
+  EXPECT_EQ(threadCount(8, 3), 3);
+  EXPECT_EQ(threadCount(2, 100), 2);
+  EXPECT_GE(threadCount(0, 100), 1);
+  EXPECT_EQ(threadCount(4, 0), 1);
+}
+
+TEST(RenderRows, ProgressAndRowDoneOnTheCallingThreadWithAllRaysCounted) {
+  RowCallbacks cb;
+  std::set<int> done;
+  std::uint64_t lastRays = 0;
+  int lastDone = 0;
+  cb.rowDone = [&](int row) { EXPECT_TRUE(done.insert(row).second) << "row " << row << " twice"; };
+  cb.progress = [&](int rowsDone, int rows, std::uint64_t rays) {
+    EXPECT_EQ(rows, 50);
+    lastDone = rowsDone;
+    lastRays = rays;
+  };
+  renderRows(
+      50, 4, [](int row, int) -> std::uint64_t { return static_cast<std::uint64_t>(row); }, cb);
+  EXPECT_EQ(done.size(), 50u);
+  EXPECT_EQ(lastDone, 50);
+  EXPECT_EQ(lastRays, 49u * 50u / 2u);
+}
+
+TEST(RenderRows, TheFirstErrorStopsTheRenderAndIsRethrown) {
+  std::atomic<int> started{0};
+  EXPECT_THROW(renderRows(1000, 2,
+                          [&](int row, int) -> std::uint64_t {
+                            ++started;
+                            if (row == 3) throw std::runtime_error("row 3 failed");
+                            return 0;
+                          }),
+               std::runtime_error);
+  EXPECT_LT(started.load(), 1000);
+}
+
+TEST(RenderRows, AbortStopsBeforeTheLastRow) {
+  std::atomic<bool> abort{false};
+  RowCallbacks cb;
+  cb.abort = &abort;
+  std::atomic<int> rendered{0};
+  const RowsRun run = renderRows(
+      10000, 2,
+      [&](int, int) -> std::uint64_t {
+        if (++rendered == 10) abort = true;
+        return 0;
+      },
+      cb);
+  EXPECT_TRUE(run.aborted);
+  EXPECT_LT(rendered.load(), 10000);
+}
+
+}  // namespace
+}  // namespace prime
