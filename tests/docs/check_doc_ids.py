@@ -15,7 +15,7 @@ What it does:
 2. Reads the defining files. An id is defined by a Markdown table row whose first cell is the id,
    "| E57 | ...". A defining row of a family in any other Markdown file is an error (each table
    of ids lives in exactly one file), and so is a second row for the same id.
-3. Scans every file git tracks (but not tests/fuzz/corpus, binary files and images) for cited
+3. Scans every file git tracks (but not tests/fuzz/prime/corpus, binary files and images) for cited
    ids: in Markdown the whole text; in C and C++ the // and /* */ comments and the string
    literals (which is where the messages prime prints live); in Python the # comments and the
    docstrings; in shell, CMake and other #-comment files (scene Model.txt, CMakeLists.txt,
@@ -46,7 +46,7 @@ import tokenize
 
 INDEX = "docs/errata-index.md"
 SELF = "tests/docs/check_doc_ids.py"
-SKIP_PREFIXES = ("tests/fuzz/corpus/",)
+SKIP_PARTS = ("/corpus/",)  # libFuzzer seed corpora of every system (tests/fuzz/<system>/corpus/)
 IMAGE_EXTENSIONS = (".png", ".jpg", ".jpeg", ".gif", ".ppm", ".pgm", ".bmp", ".ico", ".pdf")
 
 # Mentions of the shared folder that lives outside the repository. Built from pieces so that
@@ -305,7 +305,7 @@ def main(argv):
     os.chdir(repo_root())
     prefixes, problems = read_index()
     bare = id_pattern(p for p in prefixes if len(p) == 1)
-    files = [p for p in tracked_files() if not p.startswith(SKIP_PREFIXES)]
+    files = [p for p in tracked_files() if not any(part in p for part in SKIP_PARTS)]
     texts = {}
     for path in files:
         text = read_text(path)

@@ -1,4 +1,4 @@
-// prime stress: the numerical stress suite (src/stress, docs/prime/numerics.md).
+// prime stress: the numerical stress suite (src/prime/stress, docs/prime/numerics.md).
 #include <fstream>
 #include <iostream>
 

@@ -55,6 +55,44 @@ void printSummary(const RenderResult& r, const std::string& out) {
       static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
+// An aborted render never leaves a graph file that looks complete: the
+// target is removed (an older one too), and `partial` gets the header and the
+// rows finished from the top, as the listing's exit(1) would have left it.
+void writeAborted(const RenderResult& result, const std::vector<char>& finished,
+                  const std::string& target, const std::string& partial) {
+  std::size_t prefix = 0;
+  while (prefix < finished.size() && finished[prefix]) ++prefix;
+  std::error_code ec;
+  const bool removed = std::filesystem::remove(target, ec);
+  io::GraphFile head = result.graph;
+  head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
+  io::writeGraphFile(partial, head);
+  const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
+  std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size()
+            << " rows: " << target << " not written"
+            << (removed ? " (the old one was removed)" : "") << "; the " << prefix
+            << " rows finished from the top are in " << partial
+            << " (prime view shows it); no PNG written\n";
+}
+
+// The PNGs of a finished render: the emulated screen's area through the
+// display palette, and the unquantised colours of the same area.
+void writePngs(const RenderResult& result, const RenderSettings& settings, Placement at,
+               const Palette& palette, const DisplayOptions& display, const std::string& png,
+               const std::string& trueColourPng) {
+  const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+  const ImageArea area = areaOf(display);
+  if (!png.empty()) {
+    Screen screen(screenW, screenH);
+    drawGraph(screen, result.graph, at);
+    writePng(png, exportImage(screen, result.graph, result.graph.pixels.size(), at,
+                              present(palette.dac, dacOf(display)), area));
+  }
+  if (!trueColourPng.empty())
+    writePng(trueColourPng,
+             exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area));
+}
+
 }  // namespace
 
 void addTraceCommand(CLI::App& app, Action& action) {
@@ -124,19 +162,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
 
       if (result.aborted) {
         live.closeWindow();  // ExitOnEsc: the screen goes at once
-        std::size_t prefix = 0;
-        while (prefix < finished.size() && finished[prefix]) ++prefix;
-        std::error_code ec;
-        const bool removed = std::filesystem::remove(target, ec);
-        io::GraphFile head = result.graph;
-        head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
-        io::writeGraphFile(partial, head);
-        const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
-        std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size()
-                  << " rows: " << target << " not written"
-                  << (removed ? " (the old one was removed)" : "") << "; the " << prefix
-                  << " rows finished from the top are in " << partial
-                  << " (prime view shows it); no PNG written\n";
+        writeAborted(result, finished, target, partial);
         if (!*quiet) printSummary(result, partial);
         return 1;  // as ExitOnEsc's exit(1)
       }
@@ -144,18 +170,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
       io::writeGraphFile(target, result.graph);
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's
-      if (!png->empty() || !trueColourPng->empty()) {
-        const ImageArea area = areaOf(*display);
-        if (!png->empty()) {
-          Screen screen(screenW, screenH);
-          drawGraph(screen, result.graph, at);
-          writePng(*png, exportImage(screen, result.graph, result.graph.pixels.size(), at,
-                                     present(palette.dac, dacOf(*display)), area));
-        }
-        if (!trueColourPng->empty())
-          writePng(*trueColourPng,
-                   exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area));
-      }
+      writePngs(result, settings, at, palette, *display, *png, *trueColourPng);
       if (!*quiet) printSummary(result, target);
       std::fflush(stdout);
       char status[64];

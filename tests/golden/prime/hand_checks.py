@@ -6,7 +6,7 @@ Nothing here uses the port's code: rays, intersections, the listing's rotation (
 listing and the errata. Each check prints the colour and index worked out here next to what
 `prime probe` says for the same pixel of the golden render (--screen 512 384).
 
-Usage: tests/golden/hand_checks.py PRIME_EXE   (from the repository root; models copies of
+Usage: tests/golden/prime/hand_checks.py PRIME_EXE   (from the repository root; models copies of
 the scenes in a temporary directory).
 """
 import math
@@ -104,7 +104,7 @@ TMP=tempfile.mkdtemp(prefix='prime-hand-')
 def scene(name):
     d=os.path.join(TMP,name)
     if not os.path.exists(d):
-        shutil.copytree(os.path.join('scenes',name),d,ignore=shutil.ignore_patterns('PrimFile','O[0-9]*','List','*.map','graph_scr','*.png'))
+        shutil.copytree(os.path.join('scenes','prime',name),d,ignore=shutil.ignore_patterns('PrimFile','O[0-9]*','List','*.map','graph_scr','*.png'))
         subprocess.run([PRIME,'model',d],check=True,capture_output=True)
     return d
 def probe(scene,j,i,extra=()):
@@ -112,7 +112,7 @@ def probe(scene,j,i,extra=()):
     m=re.search(r'palette index (-?\d+)',out); return int(m.group(1)), out
 import struct
 def golden(scenedir,j,i):
-    g=open(os.path.join('tests','golden',os.path.basename(scenedir),'graph_scr'),'rb').read()
+    g=open(os.path.join('tests','golden','prime',os.path.basename(scenedir),'graph_scr'),'rb').read()
     w=struct.unpack('<h',g[2:4])[0]+1
     return struct.unpack('<h',g[6+2*(i*w+j):8+2*(i*w+j)])[0]
 def report(name,j,i,col,idx,scene,extra=(),t=None):
@@ -256,7 +256,7 @@ def proj(p):
     e=(500,500,-1500); t=(0-e[2])/(p[2]-e[2]); wx=e[0]+(p[0]-e[0])*t; wy=e[1]+(p[1]-e[1])*t
     sx=337+wx*175/1000; sy=(1000-wy)*384/1000
     return (round(sx+1e-12)-337, round(sy+1e-12)), (wx,wy), (sx,sy)  # lround: halves away from zero (all positive here)
-g=open('tests/golden/plate1/graph_scr','rb').read()
+g=open('tests/golden/prime/plate1/graph_scr','rb').read()
 import struct
 ga,gd=struct.unpack('<hh',g[2:6]); W=ga+1
 def pix(x,y): return struct.unpack('<h',g[6+2*(y*W+x):8+2*(y*W+x)])[0]
