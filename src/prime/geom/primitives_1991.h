@@ -26,17 +26,9 @@
 
 #include "src/geom/ray.h"
 #include "src/math/vec.h"
+#include "src/prime/geom/prim_hit.h"
 
 namespace prime {
-
-// What IntersectPrim passes on to AddToTList: the entry and exit parameters and
-// the (unnormalised, local) normals stored with them.
-struct PrimHit {
-  double tIn = 0.0;
-  double tOut = 0.0;
-  Vec3 nIn{};
-  Vec3 nOut{};
-};
 
 // True for the five type letters the listing's switch knows ('S','B','C','N','Y';
 // case sensitive). Lets loaders validate types before rendering.

@@ -12,23 +12,19 @@
 #pragma once
 
 #include "src/geom/ray.h"
+#include "src/prime/geom/prim_hit.h"
 
 namespace prime {
 
-struct Interval {
-  double tIn = 0.0, tOut = 0.0;
-  Vec3 nIn{}, nOut{};  // outward unit normals at tIn and tOut (local frame)
-};
-
 // False when the line misses the solid (or only touches it: tIn == tOut is
 // reported as a miss only if the direction is degenerate).
-bool intersectModern(char type, const Ray& local, Interval& out);
+bool intersectModern(char type, const Ray& local, PrimHit& out);
 
-bool sphereModern(const Ray& local, Interval& out);
-bool cylinderModern(const Ray& local, Interval& out);
-bool coneModern(const Ray& local, Interval& out);
-bool cubeModern(const Ray& local, Interval& out);
-bool pyramidModern(const Ray& local, Interval& out);
+bool sphereModern(const Ray& local, PrimHit& out);
+bool cylinderModern(const Ray& local, PrimHit& out);
+bool coneModern(const Ray& local, PrimHit& out);
+bool cubeModern(const Ray& local, PrimHit& out);
+bool pyramidModern(const Ray& local, PrimHit& out);
 
 // The surfaces of the solid that pass within 16 times the error bound `err`
 // (per axis, local units) of the local point p, for spawning secondary rays off

@@ -59,7 +59,7 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
   const Ray& ray = boxRay.ray;
   ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
-  auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+  auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     // A ray that misses the primitive's (padded) box ahead cannot hit it.
     if (cull && bvh_.primBox(primNum).entry(boxRay) == std::numeric_limits<double>::infinity())
       return std::nullopt;
@@ -83,14 +83,14 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
                      "}");
     }
     if (!ok) return std::nullopt;
-    return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
+    return hit;
   };
   TList list;
   const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
   if (program && program->isSingleLeaf()) {
     // A lone primitive: exactly what csg1991 returns for a one-entry tree
     // (the leaf's pair, or nothing), without the walk.
-    if (const std::optional<PrimInterval> hit = leaf(obj.entries[0].l))
+    if (const std::optional<PrimHit> hit = leaf(obj.entries[0].l))
       list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, obj.entries[0].l);
   } else
     try {

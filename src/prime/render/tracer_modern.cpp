@@ -123,10 +123,10 @@ TracerModern::TracerModern(const Scene& scene, TraceOptions options)
 TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
                                     TraceStats& stats) const {
   ++stats.objectTests;
-  auto leaf = [&](int primNum) -> std::optional<Interval> {
+  auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
-    Interval in;
+    PrimHit in;
     if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
     return in;
   };
@@ -255,7 +255,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
     if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
-      Interval in;
+      PrimHit in;
       if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
           !(in.tOut > 0.0))
         return;
@@ -280,7 +280,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   Vec3 n = hit.normal;
   // Which side of the PRIMITIVE's own surface the ray is on picks the
   // outside or inside map (a difference's cut face shows B's inside).
-  Interval own;
+  PrimHit own;
   if (intersectModern(scene_.prims[bestNode.prim].type, transformRay(ray, inverse_[bestNode.prim]),
                       own))
     hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);

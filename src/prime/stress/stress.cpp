@@ -530,11 +530,11 @@ ProfileHit listingHit(const Scene& scene, const Ray& rayIn) {
   ProfileHit p;
   double nearest = 1e100;
   for (int k = 0; k < static_cast<int>(scene.objects.size()); ++k) {
-    auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+    auto leaf = [&](int primNum) -> std::optional<PrimHit> {
       const ScenePrim& sp = scene.prims[static_cast<std::size_t>(primNum)];
       PrimHit h;
       if (!intersectPrimitive1991(sp.type, transformRay(ray, sp.inverse), h)) return std::nullopt;
-      return PrimInterval{h.tIn, h.tOut, h.nIn, h.nOut};
+      return h;
     };
     TList list;
     try {
@@ -575,14 +575,14 @@ ProfileHit listingOnReference(const Subject& s, const Ray& ray) {
   double nearest = 1e100;
   const RefRay<LD> w{cast3<LD>(ray.o), cast3<LD>(ray.d)};
   for (int k = 0; k < static_cast<int>(s.scene.objects.size()); ++k) {
-    auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+    auto leaf = [&](int primNum) -> std::optional<PrimHit> {
       const RefPrim<LD>& rp = s.refLd[static_cast<std::size_t>(primNum)];
       const RefRay<LD> l{rp.toLocalPoint(w.o), rp.toLocalVector(w.d)};
       RefInterval<LD> in;
       if (!refIntersect(rp.type, l, in) || !(in.tIn > 0)) return std::nullopt;
       const Vec3 nIn{double(in.nIn[0]), double(in.nIn[1]), double(in.nIn[2])};
       const Vec3 nOut{double(in.nOut[0]), double(in.nOut[1]), double(in.nOut[2])};
-      return PrimInterval{double(in.tIn), double(in.tOut), nIn, nOut};
+      return PrimHit{double(in.tIn), double(in.tOut), nIn, nOut};
     };
     TList list;
     try {
@@ -1219,12 +1219,12 @@ void run1991(const Config& c, const Measurer& m, Figures& f) {
         if (c.chainTir) {
           // TransmittedRay 6960-6975 with total internal reflection forced.
           const SceneObject& obj = scene.objects[static_cast<std::size_t>(p.obj)];
-          auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+          auto leaf = [&](int primNum) -> std::optional<PrimHit> {
             const ScenePrim& sp = scene.prims[static_cast<std::size_t>(primNum)];
             PrimHit h;
             if (!intersectPrimitive1991(sp.type, transformRay(ray, sp.inverse), h))
               return std::nullopt;
-            return PrimInterval{h.tIn, h.tOut, h.nIn, h.nOut};
+            return h;
           };
           TList list;
           try {
