@@ -23,13 +23,6 @@ namespace {
 constexpr int U = 0;  // Define.h: #define U 0
 constexpr int V = 1;  // Define.h: #define V 1
 
-// The pyramid's side-face constants exactly as printed (all 16 occurrences in
-// the listing agree). kP is NOT 1/sqrt(5) = 0.4472135954999579: it is about
-// 5.0e-10 smaller (a digit was dropped by the author, not by the OCR), while kQ
-// is 2/sqrt(5) to 15 digits. Kept as printed; see docs/prime/port-notes/primitives.md.
-constexpr double kP = 0.44721359499958;
-constexpr double kQ = 0.894427190999916;
-
 // One side face of the pyramid: its plane, its triangle in the (u, v) plane
 // obtained by dropping one coordinate, which coordinates become u and v, and
 // the (unnormalised, outward) normal handed to Swap.
@@ -45,17 +38,25 @@ struct PyramidFace {
 // (IntersectPyramid 4932-5045, BoundPyramid 2864-2946).
 constexpr std::array<PyramidFace, 4> kPyramidFaces{{
     // front (z = 0 side), drop Z
-    {{0.0, kP, -kQ, 0.0},
+    {{0.0, kPyramidPlaneA, -kPyramidPlaneB, 0.0},
      {{{0.5, 1.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}}},
      X,
      Y,
      {0.0, 0.5, -1.0}},
     // right (x = 1 side), drop X
-    {{kQ, kP, 0.0, -kQ}, {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}}, Y, Z, {1.0, 0.5, 0.0}},
+    {{kPyramidPlaneB, kPyramidPlaneA, 0.0, -kPyramidPlaneB},
+     {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}},
+     Y,
+     Z,
+     {1.0, 0.5, 0.0}},
     // back (z = 1 side), drop Z
-    {{0.0, kP, kQ, -kQ}, {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}}, X, Y, {0.0, 0.5, 1.0}},
+    {{0.0, kPyramidPlaneA, kPyramidPlaneB, -kPyramidPlaneB},
+     {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}},
+     X,
+     Y,
+     {0.0, 0.5, 1.0}},
     // left (x = 0 side), drop X
-    {{kQ, -kP, 0.0, 0.0},
+    {{kPyramidPlaneB, -kPyramidPlaneA, 0.0, 0.0},
      {{{1.0, 0.5}, {0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0}}},
      Y,
      Z,

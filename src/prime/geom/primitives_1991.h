@@ -30,6 +30,15 @@
 
 namespace prime {
 
+// The pyramid's side-face plane coefficients as printed everywhere in the
+// listing (BoundPyramid, IntersectPyramid, GetUVPyramid; all 16 occurrences
+// agree). kPyramidPlaneA is NOT 1/sqrt(5) = 0.4472135954999579: it is about
+// 5.0e-10 smaller (a digit was dropped by the author, not by the OCR), while
+// kPyramidPlaneB is 2/sqrt(5) to 15 digits. Kept as printed (primitives.md P1,
+// shading.md S2).
+inline constexpr double kPyramidPlaneA = 0.44721359499958;
+inline constexpr double kPyramidPlaneB = 0.894427190999916;
+
 // True for the five type letters the listing's switch knows ('S','B','C','N','Y';
 // case sensitive). Lets loaders validate types before rendering.
 bool isPrimitiveType1991(char type);

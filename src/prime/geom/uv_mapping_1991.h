@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "src/math/vec.h"
+#include "src/prime/geom/primitives_1991.h"
 
 namespace prime {
 
@@ -27,12 +28,7 @@ namespace prime {
 inline constexpr double kPiInv = 0.318309886;
 inline constexpr double kTwoPiInv = 0.1591549;
 
-// The pyramid plane coefficients as printed everywhere in the listing
-// (BoundPyramid, IntersectPyramid, GetUVPyramid). Note kPyramidPlaneA is 5.0e-10
-// smaller than 1/sqrt(5); kPyramidPlaneB is 2/sqrt(5) to 15 digits
-// (primitives.md P1, shading.md S2).
-inline constexpr double kPyramidPlaneA = 0.44721359499958;
-inline constexpr double kPyramidPlaneB = 0.894427190999916;
+// GetUVPyramid's plane coefficients are kPyramidPlaneA/B of primitives_1991.h.
 
 // What a GetUV* routine leaves in CastRay's (u, v, surface). E44: CastRay's
 // locals start as u = v = 0.0 and surface = -1, so a routine that matches no
