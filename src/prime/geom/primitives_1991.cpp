@@ -18,6 +18,9 @@
 #include "src/prime/math/listing_vec.h"
 
 namespace prime {
+
+using io::PrimType;
+
 namespace {
 
 constexpr int U = 0;  // Define.h: #define U 0
@@ -312,25 +315,22 @@ bool intersectPyramid1991(const Ray& ray, PrimHit& hit) {
   return false;
 }
 
-bool isPrimitiveType1991(char type) {
-  return type == 'S' || type == 'B' || type == 'Y' || type == 'C' || type == 'N';
-}
-
-bool intersectPrimitive1991(char type, const Ray& local, PrimHit& hit) {
+bool intersectPrimitive1991(PrimType type, const Ray& local, PrimHit& hit) {
+  // The listing's default, Error("switch case fall to default ..."), cannot
+  // happen: types are checked when the scene is loaded.
   switch (type) {
-    case 'S':
+    case PrimType::Sphere:
       return intersectSphere1991(local, hit);
-    case 'B':
+    case PrimType::Cube:
       return intersectCube1991(local, hit);
-    case 'Y':
+    case PrimType::Pyramid:
       return intersectPyramid1991(local, hit);
-    case 'C':
+    case PrimType::Cylinder:
       return intersectCylinder1991(local, hit);
-    case 'N':
+    case PrimType::Cone:
       return intersectCone1991(local, hit);
-    default:  // listing: Error("switch case fall to default ..."); the caller reports
-      return false;
   }
+  return false;  // not reached
 }
 
 // ---------------------------------------------------------------- Bound module
@@ -389,21 +389,22 @@ bool boundPyramid1991(const Ray& ray) {
   return false;
 }
 
-bool boundHit1991(char type, const Ray& local) {
+bool boundHit1991(PrimType type, const Ray& local) {
+  // The listing's default, Error("switch case fell to default ..."), cannot
+  // happen: types are checked when the scene is loaded.
   switch (type) {
-    case 'S':
+    case PrimType::Sphere:
       return boundSphere1991(local);
-    case 'B':
+    case PrimType::Cube:
       return boundCube1991(local);
-    case 'Y':
+    case PrimType::Pyramid:
       return boundPyramid1991(local);
-    case 'C':
+    case PrimType::Cylinder:
       return boundCylinder1991(local);
-    case 'N':
+    case PrimType::Cone:
       return boundCone1991(local);
-    default:  // listing: Error("switch case fell to default ..."); the caller reports
-      return false;
   }
+  return false;  // not reached
 }
 
 }  // namespace prime

@@ -235,14 +235,14 @@ Constraint quadric(const Vec3& s, double k, const Vec3& p, const Vec3& e, const 
 
 }  // namespace
 
-int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int max) {
+int nearSurfacesModern(io::PrimType type, const Vec3& p, const Vec3& e, Vec3* out, int max) {
   Constraint c[6];
   int n = 0;
   switch (type) {
-    case 'S':
+    case io::PrimType::Sphere:
       c[n++] = quadric({1, 1, 1}, -1, p, e, p);
       break;
-    case 'B':
+    case io::PrimType::Cube:
       for (int k = 0; k < 3; ++k) {
         Vec3 a{0, 0, 0};
         a[k] = -1;
@@ -251,27 +251,26 @@ int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int m
         c[n++] = plane(a, 1, p, e);
       }
       break;
-    case 'C':
+    case io::PrimType::Cylinder:
       c[n++] = quadric({1, 1, 0}, -1, p, e, {p[X], p[Y], 0});
       c[n++] = plane({0, 0, -1}, 0, p, e);
       c[n++] = plane({0, 0, 1}, 1, p, e);
       break;
-    case 'N':
+    case io::PrimType::Cone:
       c[n++] = quadric({1, 1, -1}, 0, p, e, {p[X], p[Y], -p[Z]});
       c[n++] = plane({0, 0, -1}, 0, p, e);  // only the apex: z >= 0 touches the solid there
       c[n++] = plane({0, 0, 1}, 1, p, e);
       break;
-    case 'Y': {
+    case io::PrimType::Pyramid: {
       static const Vec3 nn[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
       static const double cc[5] = {0, 0, 1, 0, 1};
       for (int k = 0; k < 5; ++k) c[n++] = plane(nn[k], cc[k], p, e);
       break;
     }
-    default:
-      return -1;
   }
   int count = 0;
-  if (type == 'N' && std::abs(p[X]) + std::abs(p[Y]) + std::abs(p[Z]) <= 4 * (e[X] + e[Y] + e[Z])) {
+  if (type == io::PrimType::Cone &&
+      std::abs(p[X]) + std::abs(p[Y]) + std::abs(p[Z]) <= 4 * (e[X] + e[Y] + e[Z])) {
     // The apex: the body has no normal there. Its tangent planes at eight
     // azimuths (and the plane z = 0) stand in, so that a ray leaving the
     // apex steps to the right side of the cone whichever way it goes.
@@ -297,15 +296,20 @@ int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int m
   return count;
 }
 
-bool intersectModern(char type, const Ray& local, PrimHit& out) {
+bool intersectModern(io::PrimType type, const Ray& local, PrimHit& out) {
   switch (type) {
-    case 'S': return sphereModern(local, out);
-    case 'B': return cubeModern(local, out);
-    case 'C': return cylinderModern(local, out);
-    case 'N': return coneModern(local, out);
-    case 'Y': return pyramidModern(local, out);
-    default: return false;
+    case io::PrimType::Sphere:
+      return sphereModern(local, out);
+    case io::PrimType::Cube:
+      return cubeModern(local, out);
+    case io::PrimType::Cylinder:
+      return cylinderModern(local, out);
+    case io::PrimType::Cone:
+      return coneModern(local, out);
+    case io::PrimType::Pyramid:
+      return pyramidModern(local, out);
   }
+  return false;  // not reached
 }
 
 }  // namespace prime

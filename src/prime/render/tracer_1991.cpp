@@ -75,8 +75,8 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
                  : "miss";
       probe->add(depth, "primitive", text,
                  "{\"object\":" + std::to_string(obj.number) +
-                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" + p.type +
-                     "\",\"hit\":" + (ok ? "true" : "false") +
+                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" +
+                     static_cast<char>(p.type) + "\",\"hit\":" + (ok ? "true" : "false") +
                      (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) +
                                ",\"nIn\":" + json(hit.nIn) + ",\"nOut\":" + json(hit.nOut)
                          : std::string()) +
@@ -246,7 +246,8 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     surfPt[i] = ray.o[i] + nearest * ray.d[i];
     tmpV[i] = local.o[i] + nearest * local.d[i];
   }
-  const auto uv = inverseMap1991(prim.type, tmpV);  // types were checked at load
+  const InverseMapResult mapped = inverseMap1991(prim.type, tmpV);
+  const InverseMapResult* const uv = &mapped;
   if (uv->noFaceMatched) ++stats.noFaceMatched;
   Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
   unitVector(n, n);

@@ -355,13 +355,11 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
   ++stats.hits;
   const SceneObject& obj = scene_.objects[hit.obj];
   const ScenePrim& prim = scene_.prims[hit.prim];
-  const auto uv = inverseMap1991(prim.type, hit.local);
-  const int surface =
-      uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
+  const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
+  const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;
   const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
   Rgb surfColor{};
-  for (int c = 0; c < 3; ++c)
-    surfColor[c] = texel(map, c, uv ? finiteOr0(uv->u) : 0.0, uv ? finiteOr0(uv->v) : 0.0);
+  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, finiteOr0(uv.u), finiteOr0(uv.v));
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;

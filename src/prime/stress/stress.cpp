@@ -426,7 +426,7 @@ Subject makeSubject(const std::vector<PrimSpec>& prims,
   s.size = 0;
   for (const PrimSpec& p : prims) {
     ScenePrim sp;
-    sp.type = p.type;
+    sp.type = io::primType(p.type).value();  // the generator's letters are all valid
     sp.transform = p.m;
     if (!inverse(p.m, sp.inverse)) throw std::logic_error("stress: singular transform");
     for (auto& m : sp.map) m = {1, 1};
@@ -821,19 +821,17 @@ class Measurer {
     // (u, v) by the listing's inverse mapping at both local points.
     if (p.prim == r.prim) {
       const Vec3 refLocal{double(pl[0]), double(pl[1]), double(pl[2])};
-      const auto a = inverseMap1991(rp.type, p.local), b = inverseMap1991(rp.type, refLocal);
-      if (a && b) {
-        if (!std::isfinite(a->u) || !std::isfinite(a->v)) {
-          ++f.uvNan;
-        } else if (a->surface != b->surface) {
-          ++f.uvFaceChanges;
-        } else if (std::isfinite(b->u) && std::isfinite(b->v)) {
-          double du = std::abs(a->u - b->u);
-          if ((rp.type == 'S' || ((rp.type == 'C' || rp.type == 'N') && a->surface == 0)) &&
-              du > 0.5)
-            du = std::abs(du - 1);
-          f.uv.add(std::max(du, std::abs(a->v - b->v)));
-        }
+      const io::PrimType type = s_.scene.prims[static_cast<std::size_t>(r.prim)].type;
+      const InverseMapResult a = inverseMap1991(type, p.local), b = inverseMap1991(type, refLocal);
+      if (!std::isfinite(a.u) || !std::isfinite(a.v)) {
+        ++f.uvNan;
+      } else if (a.surface != b.surface) {
+        ++f.uvFaceChanges;
+      } else if (std::isfinite(b.u) && std::isfinite(b.v)) {
+        double du = std::abs(a.u - b.u);
+        if ((rp.type == 'S' || ((rp.type == 'C' || rp.type == 'N') && a.surface == 0)) && du > 0.5)
+          du = std::abs(du - 1);
+        f.uv.add(std::max(du, std::abs(a.v - b.v)));
       }
     }
     return true;
@@ -857,7 +855,7 @@ class Measurer {
   }
   std::string describe() const {
     std::string d;
-    for (const auto& p : s_.scene.prims) d += p.type;
+    for (const auto& p : s_.scene.prims) d += static_cast<char>(p.type);
     for (const auto& o : s_.scene.objects) d += std::string(" ") + o.entries[0].op;
     return d;
   }

@@ -10,10 +10,12 @@
 namespace prime {
 namespace {
 
+using io::PrimType;
+
 void expectInterval(char type, const Ray& r, double tIn, double tOut, const Vec3& nIn, const Vec3& nOut,
                     double tol = 1e-12) {
   PrimHit in;
-  ASSERT_TRUE(intersectModern(type, r, in)) << type;
+  ASSERT_TRUE(intersectModern(io::primType(type).value(), r, in)) << type;
   EXPECT_NEAR(in.tIn, tIn, tol) << type;
   EXPECT_NEAR(in.tOut, tOut, tol) << type;
   for (int i = 0; i < 3; ++i) {
@@ -37,7 +39,7 @@ TEST(PrimitivesModern, SphereFromOutsideAndFromInside) {
   expectInterval('S', {{0, 0, -5}, {0, 0, 1}}, 4, 6, {0, 0, -1}, {0, 0, 1});
   expectInterval('S', {{0, 0, 0}, {0, 0, 2}}, -0.5, 0.5, {0, 0, -1}, {0, 0, 1});  // inside: tIn < 0
   PrimHit in;
-  EXPECT_FALSE(intersectModern('S', {{0, 1.5, -5}, {0, 0, 1}}, in));
+  EXPECT_FALSE(intersectModern(PrimType::Sphere, {{0, 1.5, -5}, {0, 0, 1}}, in));
 }
 
 TEST(PrimitivesModern, CubeAndGrazingFace) {
@@ -45,11 +47,11 @@ TEST(PrimitivesModern, CubeAndGrazingFace) {
   // Diagonal through the corners (0,0,0) and (1,1,1): entry normal is the
   // last slab to be entered; all tie at t = 1, the first plane tested wins.
   PrimHit in;
-  ASSERT_TRUE(intersectModern('B', {{-1, -1, -1}, {1, 1, 1}}, in));
+  ASSERT_TRUE(intersectModern(PrimType::Cube, {{-1, -1, -1}, {1, 1, 1}}, in));
   EXPECT_EQ(in.tIn, 1.0);
   EXPECT_EQ(in.tOut, 2.0);
   // Sliding inside the face plane x = 0 (closed solid): inside.
-  ASSERT_TRUE(intersectModern('B', {{0, 0.5, -1}, {0, 0, 1}}, in));
+  ASSERT_TRUE(intersectModern(PrimType::Cube, {{0, 0.5, -1}, {0, 0, 1}}, in));
   EXPECT_EQ(in.tIn, 1.0);
 }
 
@@ -72,7 +74,7 @@ TEST(PrimitivesModern, ConeBodyApexAndCap) {
   expectInterval('N', {{0, 0, 2}, {0, 0, -1}}, 1, 2, {0, 0, 1}, {0, 0, -1});
   // The lower nappe (z < 0) is not part of the solid.
   PrimHit in;
-  EXPECT_FALSE(intersectModern('N', {{-2, 0, -0.5}, {1, 0, 0}}, in));
+  EXPECT_FALSE(intersectModern(PrimType::Cone, {{-2, 0, -0.5}, {1, 0, 0}}, in));
 }
 
 TEST(PrimitivesModern, PyramidFrontAndBackFaces) {
@@ -83,7 +85,7 @@ TEST(PrimitivesModern, PyramidFrontAndBackFaces) {
   // Up through the base (normal -y) to the apex region: x = z = 0.5 leaves
   // where 0.5y <= 0.5 stops holding, y = 1 (the apex; any side plane).
   PrimHit in;
-  ASSERT_TRUE(intersectModern('Y', {{0.5, -1, 0.5}, {0, 1, 0}}, in));
+  ASSERT_TRUE(intersectModern(PrimType::Pyramid, {{0.5, -1, 0.5}, {0, 1, 0}}, in));
   EXPECT_EQ(in.tIn, 1.0);
   EXPECT_EQ(in.nIn, (Vec3{0, -1, 0}));
   EXPECT_DOUBLE_EQ(in.tOut, 2.0);
@@ -99,7 +101,7 @@ TEST(CsgModern, DifferenceCutFaceHasTheFlippedNormal) {
     Ray local = ray;
     if (prim == 1) local.o[Z] -= 0.5;
     PrimHit in;
-    if (!intersectModern('B', local, in)) return std::nullopt;
+    if (!intersectModern(PrimType::Cube, local, in)) return std::nullopt;
     return in;
   };
   const TList l = csgModern(entries, leaf);
