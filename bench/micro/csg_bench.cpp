@@ -73,9 +73,9 @@ TList setDifferenceOutward(const TList& a, const TList& b) {
 void walk(benchmark::State& state) {
   const std::vector<prime::CsgEntry> tree = {
       {'+', 1, 4}, {'-', 2, 3}, {'P', 0, 0}, {'P', 1, 0}, {'P', 2, 0}};
-  auto leaf = [](int prim) -> std::optional<prime::PrimInterval> {
+  auto leaf = [](int prim) -> std::optional<prime::PrimHit> {
     const double t0 = 1.0 + prim;
-    return prime::PrimInterval{t0, t0 + 1.5, {0, 0, -1}, {0, 0, 1}};
+    return prime::PrimHit{t0, t0 + 1.5, {0, 0, -1}, {0, 0, 1}};
   };
   for (auto _ : state) {
     TList l = prime::csg1991(tree, leaf);

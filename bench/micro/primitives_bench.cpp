@@ -10,24 +10,40 @@ namespace {
 
 using prime::PrimHit;
 using prime::Ray;
+using prime::io::PrimType;
 
 struct Case {
   const char* name;
-  char type;
+  PrimType type;
   Ray hit, miss;
 };
 
 // Every hit ray crosses the primitive's body away from edges; every miss
 // ray passes 5 units beside it.
 const Case kCases[] = {
-    {"sphere", 'S', {{0.1, 0.2, -5.0}, {0.01, 0.02, 1.0}}, {{5.0, 0.2, -5.0}, {0.01, 0.02, 1.0}}},
-    {"cube", 'B', {{0.5, 0.4, -5.0}, {0.01, 0.02, 1.0}}, {{5.5, 0.4, -5.0}, {0.01, 0.02, 1.0}}},
-    {"cylinder", 'C', {{-5.0, 0.1, 0.5}, {1.0, 0.01, 0.02}}, {{-5.0, 5.1, 0.5}, {1.0, 0.01, 0.02}}},
-    {"cone", 'N', {{-5.0, 0.1, 0.7}, {1.0, 0.01, 0.01}}, {{-5.0, 5.1, 0.7}, {1.0, 0.01, 0.01}}},
-    {"pyramid", 'Y', {{0.5, 0.3, -5.0}, {0.0, 0.01, 1.0}}, {{5.5, 0.3, -5.0}, {0.0, 0.01, 1.0}}},
+    {"sphere",
+     PrimType::Sphere,
+     {{0.1, 0.2, -5.0}, {0.01, 0.02, 1.0}},
+     {{5.0, 0.2, -5.0}, {0.01, 0.02, 1.0}}},
+    {"cube",
+     PrimType::Cube,
+     {{0.5, 0.4, -5.0}, {0.01, 0.02, 1.0}},
+     {{5.5, 0.4, -5.0}, {0.01, 0.02, 1.0}}},
+    {"cylinder",
+     PrimType::Cylinder,
+     {{-5.0, 0.1, 0.5}, {1.0, 0.01, 0.02}},
+     {{-5.0, 5.1, 0.5}, {1.0, 0.01, 0.02}}},
+    {"cone",
+     PrimType::Cone,
+     {{-5.0, 0.1, 0.7}, {1.0, 0.01, 0.01}},
+     {{-5.0, 5.1, 0.7}, {1.0, 0.01, 0.01}}},
+    {"pyramid",
+     PrimType::Pyramid,
+     {{0.5, 0.3, -5.0}, {0.0, 0.01, 1.0}},
+     {{5.5, 0.3, -5.0}, {0.0, 0.01, 1.0}}},
 };
 
-void intersect(benchmark::State& state, char type, Ray ray, bool expectHit) {
+void intersect(benchmark::State& state, PrimType type, Ray ray, bool expectHit) {
   PrimHit hit;
   if (prime::intersectPrimitive1991(type, ray, hit) != expectHit) {
     state.SkipWithError("the ray does not do what the benchmark expects");
@@ -41,7 +57,7 @@ void intersect(benchmark::State& state, char type, Ray ray, bool expectHit) {
   }
 }
 
-void bound(benchmark::State& state, char type, Ray ray, bool expectHit) {
+void bound(benchmark::State& state, PrimType type, Ray ray, bool expectHit) {
   if (prime::boundHit1991(type, ray) != expectHit) {
     state.SkipWithError("the ray does not do what the benchmark expects");
     return;

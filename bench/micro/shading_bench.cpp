@@ -15,22 +15,20 @@ namespace {
 
 struct UvCase {
   const char* name;
-  char type;
+  prime::io::PrimType type;
   prime::Vec3 point;  // a hit point on the primitive's body, in primitive space
 };
 const UvCase kUvCases[] = {
-    {"sphere", 'S', {0.48, 0.6, -0.64}},  // unit length, as CastRay passes it
-    {"cube", 'B', {0.3, 0.7, 0.0}},       // the z = 0 face
-    {"cylinder", 'C', {0.6, 0.8, 0.4}},   // the body
-    {"cone", 'N', {0.3, 0.4, 0.5}},       // the body: x^2 + y^2 = z^2
-    {"pyramid", 'Y', {0.5, 0.4, 0.2}},    // the front face z = y/2
+    {"sphere",
+     prime::io::PrimType::Sphere,
+     {0.48, 0.6, -0.64}},                                  // unit length, as CastRay passes it
+    {"cube", prime::io::PrimType::Cube, {0.3, 0.7, 0.0}},  // the z = 0 face
+    {"cylinder", prime::io::PrimType::Cylinder, {0.6, 0.8, 0.4}},  // the body
+    {"cone", prime::io::PrimType::Cone, {0.3, 0.4, 0.5}},          // the body: x^2 + y^2 = z^2
+    {"pyramid", prime::io::PrimType::Pyramid, {0.5, 0.4, 0.2}},    // the front face z = y/2
 };
 
-void inverseMap(benchmark::State& state, char type, prime::Vec3 p) {
-  if (!prime::inverseMap1991(type, p)) {
-    state.SkipWithError("unknown primitive type");
-    return;
-  }
+void inverseMap(benchmark::State& state, prime::io::PrimType type, prime::Vec3 p) {
   for (auto _ : state) {
     benchmark::DoNotOptimize(p);
     auto r = prime::inverseMap1991(type, p);

@@ -4,26 +4,46 @@
 
 namespace prime::io {
 
-int surfaceCount(char type) {
+int surfaceCount(PrimType type) {
   switch (type) {
-    case 'S': return 1;
-    case 'B': return 6;
-    case 'C': return 3;
-    case 'N': return 2;
-    case 'Y': return 5;
-    default: return 0;
+    case PrimType::Sphere:
+      return 1;
+    case PrimType::Cube:
+      return 6;
+    case PrimType::Cylinder:
+      return 3;
+    case PrimType::Cone:
+      return 2;
+    case PrimType::Pyramid:
+      return 5;
   }
+  return 0;  // not reached: every PrimType is named above
+}
+
+const char* primTypeName(PrimType type) {
+  switch (type) {
+    case PrimType::Sphere:
+      return "sphere";
+    case PrimType::Cube:
+      return "cube";
+    case PrimType::Cylinder:
+      return "cylinder";
+    case PrimType::Cone:
+      return "cone";
+    case PrimType::Pyramid:
+      return "pyramid";
+  }
+  return "unknown";  // not reached
+}
+
+int surfaceCount(char type) {
+  const std::optional<PrimType> t = primType(type);
+  return t ? surfaceCount(*t) : 0;
 }
 
 const char* primTypeName(char type) {
-  switch (type) {
-    case 'S': return "sphere";
-    case 'B': return "cube";
-    case 'C': return "cylinder";
-    case 'N': return "cone";
-    case 'Y': return "pyramid";
-    default: return "unknown";
-  }
+  const std::optional<PrimType> t = primType(type);
+  return t ? primTypeName(*t) : "unknown";
 }
 
 void encode(ByteWriter& w, const Hue& h) {

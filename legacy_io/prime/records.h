@@ -10,6 +10,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "legacy_io/prime/turbo_c.h"
 #include "src/math/matrix.h"
@@ -18,6 +19,31 @@ namespace prime::io {
 
 inline constexpr int kMaxSurface = 6;  // Define.h MaxSurface
 inline constexpr int kOut = 0, kIn = 1;
+
+// The five primitive types (thesis Sec. 5.3.1). Each value is the type letter
+// stored in Prim.type, which stays a char on disk and in PrimRecord: a loader
+// turns it into a PrimType once, with primType(), and the code that traces a
+// primitive switches on PrimType (every switch names all five).
+enum class PrimType : char { Sphere = 'S', Cube = 'B', Cylinder = 'C', Cone = 'N', Pyramid = 'Y' };
+
+// The type whose letter is `c` (case sensitive, as the listing's switches),
+// or nothing for any other byte.
+constexpr std::optional<PrimType> primType(char c) {
+  switch (c) {
+    case 'S':
+      return PrimType::Sphere;
+    case 'B':
+      return PrimType::Cube;
+    case 'C':
+      return PrimType::Cylinder;
+    case 'N':
+      return PrimType::Cone;
+    case 'Y':
+      return PrimType::Pyramid;
+    default:
+      return std::nullopt;
+  }
+}
 
 struct Hue {
   double kDR = 0, kDT = 0;
@@ -41,7 +67,7 @@ struct ObjHeader {
 };
 
 struct PrimRecord {
-  char type = 0;  // 'S' sphere, 'B' cube, 'C' cylinder, 'N' cone, 'Y' pyramid
+  char type = 0;  // the byte on disk: a PrimType letter when valid (see primType)
   Matrix4 transform = identity4();
   Matrix4 inverse = identity4();
   std::array<std::array<std::int16_t, 2>, kMaxSurface> map{};  // [surface][Out/In]
@@ -60,8 +86,11 @@ enum class PrimLayout { Packed, WordAligned };
 inline constexpr std::size_t kHueSize = 72, kObjSize = 8, kObjHeaderSize = 76,
                              kPrimSizePacked = 291, kPrimSizeAligned = 292, kMapHeaderSize = 4;
 
-// Surfaces per primitive type (AddPrim's switch): S 1, B 6, C 3, N 2, Y 5;
-// 0 for an unknown letter.
+// Surfaces per primitive type (AddPrim's switch): S 1, B 6, C 3, N 2, Y 5.
+int surfaceCount(PrimType type);
+const char* primTypeName(PrimType type);  // "sphere", "cube", ...
+// The same for a type byte as read: 0 and "unknown" for a byte primType()
+// does not know.
 int surfaceCount(char type);
 const char* primTypeName(char type);
 

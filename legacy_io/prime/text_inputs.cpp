@@ -7,7 +7,9 @@
 
 namespace prime::io {
 
-bool isPrimTypeLetter(char c) { return c && std::strchr("SBCNY", c) != nullptr; }
+bool isPrimTypeLetter(char c) {
+  return primType(c).has_value();
+}
 bool isLeafOpcode(char c) { return c && std::strchr("CBSNTY", c) != nullptr; }
 
 static std::string quoted(char c) { return std::string("'") + c + "'"; }

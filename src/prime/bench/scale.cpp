@@ -48,7 +48,9 @@ Scene makeScaleScene(int objects) {
 
   const int k = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(objects))));
   const double cell = 1000.0 / k, r = 0.4 * cell;
-  static constexpr char kTypes[] = {'S', 'B', 'C', 'N', 'Y'};
+  static constexpr io::PrimType kTypes[] = {io::PrimType::Sphere, io::PrimType::Cube,
+                                            io::PrimType::Cylinder, io::PrimType::Cone,
+                                            io::PrimType::Pyramid};
   for (int i = 0; i < objects; ++i) {
     const int gx = i % k, gy = i / k;
     const Vec3 c{(gx + 0.5) * cell, 1000.0 - (gy + 0.5) * cell,
@@ -57,18 +59,18 @@ Scene makeScaleScene(int objects) {
     p.type = kTypes[i % 5];
     Vec3 s{r, r, r}, t{c[0], c[1], c[2]};
     switch (p.type) {
-      case 'S':
+      case io::PrimType::Sphere:
         break;  // unit sphere at the origin
-      case 'B':
+      case io::PrimType::Cube:
         s = {2 * r, 2 * r, 2 * r};  // [0,1]^3
         t = {c[0] - r, c[1] - r, c[2] - r};
         break;
-      case 'C':  // radius 1 about z, z in [0,1]
-      case 'N':
+      case io::PrimType::Cylinder:  // radius 1 about z, z in [0,1]
+      case io::PrimType::Cone:
         s = {r, r, 2 * r};
         t = {c[0], c[1], c[2] - r};
         break;
-      case 'Y':
+      case io::PrimType::Pyramid:
         s = {2 * r, 2 * r, 2 * r};  // base y = 0, x, z in [0,1]
         t = {c[0] - r, c[1] - r, c[2] - r};
         break;

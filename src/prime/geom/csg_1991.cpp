@@ -382,7 +382,7 @@ TList csg1991(std::span<const CsgEntry> entries, LeafFn leaf, const Csg1991Optio
       // and right subtrees from the fresh newTList), so the leaf's list is
       // exactly its pair or empty.
       ret.clear();
-      if (const std::optional<PrimInterval> hit = leaf(e.l))
+      if (const std::optional<PrimHit> hit = leaf(e.l))
         ret.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, e.l);
       stack.pop_back();
       continue;

@@ -19,8 +19,9 @@
 #include <span>
 #include <type_traits>
 
-#include "src/prime/geom/interval_list.h"
 #include "src/math/vec.h"
+#include "src/prime/geom/interval_list.h"
+#include "src/prime/geom/prim_hit.h"
 
 namespace prime {
 
@@ -47,36 +48,28 @@ struct CsgEntry {
   int r = 0;
 };
 
-// The ray/primitive result IntersectPrim hands to AddToTList (4565-4568).
-struct PrimInterval {
-  double tIn = 0.0;
-  double tOut = 0.0;
-  Vec3 nIn{};
-  Vec3 nOut{};
-};
-
 // Leaf callback: the primitive's interval for a primitive number, or nothing
 // when the ray misses it (IntersectPrim with intersect == 0). A non-owning
-// reference to any callable `std::optional<PrimInterval>(int)`; the callable
+// reference to any callable `std::optional<PrimHit>(int)`; the callable
 // must outlive the call it is passed to (a lambda written in the call is fine).
 class LeafFn {
  public:
   template <class F>
   requires(!std::is_same_v<std::remove_cvref_t<F>, LeafFn> &&
            !std::is_function_v<std::remove_reference_t<F>> &&
-           std::is_invocable_r_v<std::optional<PrimInterval>, std::remove_reference_t<F>&, int>)
+           std::is_invocable_r_v<std::optional<PrimHit>, std::remove_reference_t<F>&, int>)
       LeafFn(F&& f)
   noexcept  // NOLINT(google-explicit-constructor): used like std::function_ref
       : obj_(const_cast<void*>(static_cast<const void*>(std::addressof(f)))),
-        call_([](void* obj, int prim) -> std::optional<PrimInterval> {
+        call_([](void* obj, int prim) -> std::optional<PrimHit> {
           return std::invoke(*static_cast<std::remove_reference_t<F>*>(obj), prim);
         }) {}
 
-  std::optional<PrimInterval> operator()(int prim) const { return call_(obj_, prim); }
+  std::optional<PrimHit> operator()(int prim) const { return call_(obj_, prim); }
 
  private:
   void* obj_;
-  std::optional<PrimInterval> (*call_)(void*, int);
+  std::optional<PrimHit> (*call_)(void*, int);
 };
 
 struct Csg1991Options {

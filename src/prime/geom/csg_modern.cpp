@@ -6,8 +6,8 @@ namespace prime {
 
 namespace {
 
-TList walk(std::span<const CsgEntry> entries, const std::function<std::optional<Interval>(int)>& leaf, int node,
-           int depth) {
+TList walk(std::span<const CsgEntry> entries,
+           const std::function<std::optional<PrimHit>(int)>& leaf, int node, int depth) {
   if (node < 0 || node >= static_cast<int>(entries.size()) || depth > static_cast<int>(entries.size()))
     throw CsgError(CsgError::Kind::kBadEntryIndex, "CSG entry " + std::to_string(node) + " out of range or in a cycle");
   const CsgEntry& e = entries[node];
@@ -30,8 +30,8 @@ TList walk(std::span<const CsgEntry> entries, const std::function<std::optional<
 
 }  // namespace
 
-TList csgModern(std::span<const CsgEntry> entries, const std::function<std::optional<Interval>(int)>& leaf,
-                int root) {
+TList csgModern(std::span<const CsgEntry> entries,
+                const std::function<std::optional<PrimHit>(int)>& leaf, int root) {
   return walk(entries, leaf, root, 0);
 }
 

@@ -16,7 +16,7 @@ namespace prime {
 // with surfType Out and exit nodes In. Entries with '-' or '&' skip their
 // right subtree when the left is empty (the result is empty either way).
 // `leaf(prim)` gives the primitive's whole-line interval, or nothing.
-TList csgModern(std::span<const CsgEntry> entries, const std::function<std::optional<Interval>(int)>& leaf,
-                int root = 0);
+TList csgModern(std::span<const CsgEntry> entries,
+                const std::function<std::optional<PrimHit>(int)>& leaf, int root = 0);
 
 }  // namespace prime

@@ -70,7 +70,7 @@ TList CsgProgram1991::run(LeafFn leaf) const {
     switch (s.kind) {
       case StepKind::Leaf: {  // IntersectPrim: the pair, or an empty list on a miss
         TList& l = stack.emplace_back();
-        if (const std::optional<PrimInterval> hit = leaf(s.arg))
+        if (const std::optional<PrimHit> hit = leaf(s.arg))
           l.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, s.arg);
         break;
       }

@@ -18,17 +18,13 @@
 #include "src/prime/math/listing_vec.h"
 
 namespace prime {
+
+using io::PrimType;
+
 namespace {
 
 constexpr int U = 0;  // Define.h: #define U 0
 constexpr int V = 1;  // Define.h: #define V 1
-
-// The pyramid's side-face constants exactly as printed (all 16 occurrences in
-// the listing agree). kP is NOT 1/sqrt(5) = 0.4472135954999579: it is about
-// 5.0e-10 smaller (a digit was dropped by the author, not by the OCR), while kQ
-// is 2/sqrt(5) to 15 digits. Kept as printed; see docs/prime/port-notes/primitives.md.
-constexpr double kP = 0.44721359499958;
-constexpr double kQ = 0.894427190999916;
 
 // One side face of the pyramid: its plane, its triangle in the (u, v) plane
 // obtained by dropping one coordinate, which coordinates become u and v, and
@@ -45,17 +41,25 @@ struct PyramidFace {
 // (IntersectPyramid 4932-5045, BoundPyramid 2864-2946).
 constexpr std::array<PyramidFace, 4> kPyramidFaces{{
     // front (z = 0 side), drop Z
-    {{0.0, kP, -kQ, 0.0},
+    {{0.0, kPyramidPlaneA, -kPyramidPlaneB, 0.0},
      {{{0.5, 1.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}}},
      X,
      Y,
      {0.0, 0.5, -1.0}},
     // right (x = 1 side), drop X
-    {{kQ, kP, 0.0, -kQ}, {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}}, Y, Z, {1.0, 0.5, 0.0}},
+    {{kPyramidPlaneB, kPyramidPlaneA, 0.0, -kPyramidPlaneB},
+     {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}},
+     Y,
+     Z,
+     {1.0, 0.5, 0.0}},
     // back (z = 1 side), drop Z
-    {{0.0, kP, kQ, -kQ}, {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}}, X, Y, {0.0, 0.5, 1.0}},
+    {{0.0, kPyramidPlaneA, kPyramidPlaneB, -kPyramidPlaneB},
+     {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}},
+     X,
+     Y,
+     {0.0, 0.5, 1.0}},
     // left (x = 0 side), drop X
-    {{kQ, -kP, 0.0, 0.0},
+    {{kPyramidPlaneB, -kPyramidPlaneA, 0.0, 0.0},
      {{{1.0, 0.5}, {0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0}}},
      Y,
      Z,
@@ -311,25 +315,22 @@ bool intersectPyramid1991(const Ray& ray, PrimHit& hit) {
   return false;
 }
 
-bool isPrimitiveType1991(char type) {
-  return type == 'S' || type == 'B' || type == 'Y' || type == 'C' || type == 'N';
-}
-
-bool intersectPrimitive1991(char type, const Ray& local, PrimHit& hit) {
+bool intersectPrimitive1991(PrimType type, const Ray& local, PrimHit& hit) {
+  // The listing's default, Error("switch case fall to default ..."), cannot
+  // happen: types are checked when the scene is loaded.
   switch (type) {
-    case 'S':
+    case PrimType::Sphere:
       return intersectSphere1991(local, hit);
-    case 'B':
+    case PrimType::Cube:
       return intersectCube1991(local, hit);
-    case 'Y':
+    case PrimType::Pyramid:
       return intersectPyramid1991(local, hit);
-    case 'C':
+    case PrimType::Cylinder:
       return intersectCylinder1991(local, hit);
-    case 'N':
+    case PrimType::Cone:
       return intersectCone1991(local, hit);
-    default:  // listing: Error("switch case fall to default ..."); the caller reports
-      return false;
   }
+  return false;  // not reached
 }
 
 // ---------------------------------------------------------------- Bound module
@@ -388,21 +389,22 @@ bool boundPyramid1991(const Ray& ray) {
   return false;
 }
 
-bool boundHit1991(char type, const Ray& local) {
+bool boundHit1991(PrimType type, const Ray& local) {
+  // The listing's default, Error("switch case fell to default ..."), cannot
+  // happen: types are checked when the scene is loaded.
   switch (type) {
-    case 'S':
+    case PrimType::Sphere:
       return boundSphere1991(local);
-    case 'B':
+    case PrimType::Cube:
       return boundCube1991(local);
-    case 'Y':
+    case PrimType::Pyramid:
       return boundPyramid1991(local);
-    case 'C':
+    case PrimType::Cylinder:
       return boundCylinder1991(local);
-    case 'N':
+    case PrimType::Cone:
       return boundCone1991(local);
-    default:  // listing: Error("switch case fell to default ..."); the caller reports
-      return false;
   }
+  return false;  // not reached
 }
 
 }  // namespace prime

@@ -24,29 +24,28 @@
 #pragma once
 #include <array>
 
+#include "legacy_io/prime/records.h"
 #include "src/geom/ray.h"
 #include "src/math/vec.h"
+#include "src/prime/geom/prim_hit.h"
 
 namespace prime {
 
-// What IntersectPrim passes on to AddToTList: the entry and exit parameters and
-// the (unnormalised, local) normals stored with them.
-struct PrimHit {
-  double tIn = 0.0;
-  double tOut = 0.0;
-  Vec3 nIn{};
-  Vec3 nOut{};
-};
-
-// True for the five type letters the listing's switch knows ('S','B','C','N','Y';
-// case sensitive). Lets loaders validate types before rendering.
-bool isPrimitiveType1991(char type);
+// The pyramid's side-face plane coefficients as printed everywhere in the
+// listing (BoundPyramid, IntersectPyramid, GetUVPyramid; all 16 occurrences
+// agree). kPyramidPlaneA is NOT 1/sqrt(5) = 0.4472135954999579: it is about
+// 5.0e-10 smaller (a digit was dropped by the author, not by the OCR), while
+// kPyramidPlaneB is 2/sqrt(5) to 15 digits. Kept as printed (primitives.md P1,
+// shading.md S2).
+inline constexpr double kPyramidPlaneA = 0.44721359499958;
+inline constexpr double kPyramidPlaneB = 0.894427190999916;
 
 // IntersectPrim's switch. Returns true on a hit and fills `hit` completely.
 // On false, `hit` holds whatever partial state the listing's function left in
-// it (callers must not use it); for an unknown type letter it is untouched and
-// the caller reports the error (the listing called Error() here).
-bool intersectPrimitive1991(char type, const Ray& local, PrimHit& hit);
+// it (callers must not use it). The listing's Error() for an unknown letter
+// has no counterpart: a type byte is checked once, when the scene is loaded
+// (io::primType).
+bool intersectPrimitive1991(io::PrimType type, const Ray& local, PrimHit& hit);
 
 bool intersectSphere1991(const Ray& local, PrimHit& hit);    // IntersectSphere
 bool intersectCube1991(const Ray& local, PrimHit& hit);      // IntersectCube
@@ -54,8 +53,8 @@ bool intersectCylinder1991(const Ray& local, PrimHit& hit);  // IntersectCylinde
 bool intersectCone1991(const Ray& local, PrimHit& hit);      // IntersectCone
 bool intersectPyramid1991(const Ray& local, PrimHit& hit);   // IntersectPyramid
 
-// IntersectObjBound's switch (without the file reading). Unknown type: false.
-bool boundHit1991(char type, const Ray& local);
+// IntersectObjBound's switch (without the file reading).
+bool boundHit1991(io::PrimType type, const Ray& local);
 
 bool boundSphere1991(const Ray& local);    // BoundSphere (K8: both roots > 0)
 bool boundCube1991(const Ray& local);      // BoundCube (any face ahead)

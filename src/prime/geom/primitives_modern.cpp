@@ -33,7 +33,7 @@ bool clipHalfSpace(const Ray& r, const Vec3& n, double c, double& lo, double& hi
   return lo <= hi;
 }
 
-bool convex(const Ray& r, const Vec3* normals, const double* offsets, int planes, Interval& out) {
+bool convex(const Ray& r, const Vec3* normals, const double* offsets, int planes, PrimHit& out) {
   double lo = -kInf, hi = kInf;
   Vec3 nLo{}, nHi{};
   for (int i = 0; i < planes; ++i)
@@ -67,7 +67,7 @@ bool solveQuadratic(double a, double b, double c, double& t0, double& t1) {
   return true;
 }
 
-static bool sphereAt(const Ray& r, Interval& out) {
+static bool sphereAt(const Ray& r, PrimHit& out) {
   double t0, t1;
   const double a = dot(r.d, r.d), b = dot(r.o, r.d), c = dot(r.o, r.o) - 1.0;
   if (!solveQuadratic(a, b, c, t0, t1) || t0 == t1) return false;
@@ -75,7 +75,7 @@ static bool sphereAt(const Ray& r, Interval& out) {
   return true;
 }
 
-static bool cylinderAt(const Ray& r, Interval& out) {
+static bool cylinderAt(const Ray& r, PrimHit& out) {
   double t0 = -kInf, t1 = kInf;
   Vec3 n0{}, n1{};
   const double a = r.d[X] * r.d[X] + r.d[Y] * r.d[Y];
@@ -97,7 +97,7 @@ static bool cylinderAt(const Ray& r, Interval& out) {
   return true;
 }
 
-static bool coneAt(const Ray& r, Interval& out) {
+static bool coneAt(const Ray& r, PrimHit& out) {
   // Solid: x^2 + y^2 <= z^2 with 0 <= z <= 1 (apex at the origin, cap z = 1).
   // f(t) = a t^2 + 2 b t + c; the upper nappe is convex, so the line meets
   // the solid in one interval.
@@ -158,7 +158,7 @@ namespace {
 // near-double root is found to O(u) instead of O(sqrt(u)) (Ray Tracing Gems
 // ch. 7; the remaining error is the line's own position, u |o|).
 template <class Solve>
-bool shifted(const Ray& r, double num, double den, Solve solve, Interval& out) {
+bool shifted(const Ray& r, double num, double den, Solve solve, PrimHit& out) {
   // A line (nearly) parallel to the cylinder's axis has no useful nearest
   // point (den ~ 0): solved as it is.
   const double s = den > 1e-6 * dot(r.d, r.d) ? -num / den : 0.0;
@@ -172,26 +172,26 @@ bool shifted(const Ray& r, double num, double den, Solve solve, Interval& out) {
 
 }  // namespace
 
-bool sphereModern(const Ray& r, Interval& out) {
+bool sphereModern(const Ray& r, PrimHit& out) {
   return shifted(r, dot(r.o, r.d), dot(r.d, r.d), sphereAt, out);
 }
 
-bool cylinderModern(const Ray& r, Interval& out) {
+bool cylinderModern(const Ray& r, PrimHit& out) {
   return shifted(r, r.o[X] * r.d[X] + r.o[Y] * r.d[Y], r.d[X] * r.d[X] + r.d[Y] * r.d[Y],
                  cylinderAt, out);
 }
 
-bool coneModern(const Ray& r, Interval& out) {
+bool coneModern(const Ray& r, PrimHit& out) {
   return shifted(r, dot(r.o, r.d), dot(r.d, r.d), coneAt, out);
 }
 
-bool cubeModern(const Ray& r, Interval& out) {
+bool cubeModern(const Ray& r, PrimHit& out) {
   static const Vec3 n[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
   static const double c[6] = {0, 1, 0, 1, 0, 1};
   return convex(r, n, c, 6, out);
 }
 
-bool pyramidModern(const Ray& r, Interval& out) {
+bool pyramidModern(const Ray& r, PrimHit& out) {
   // Base y >= 0; four faces through the apex (0.5, 1, 0.5) and a base edge.
   static const Vec3 n[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
   static const double c[5] = {0, 0, 1, 0, 1};
@@ -235,14 +235,14 @@ Constraint quadric(const Vec3& s, double k, const Vec3& p, const Vec3& e, const 
 
 }  // namespace
 
-int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int max) {
+int nearSurfacesModern(io::PrimType type, const Vec3& p, const Vec3& e, Vec3* out, int max) {
   Constraint c[6];
   int n = 0;
   switch (type) {
-    case 'S':
+    case io::PrimType::Sphere:
       c[n++] = quadric({1, 1, 1}, -1, p, e, p);
       break;
-    case 'B':
+    case io::PrimType::Cube:
       for (int k = 0; k < 3; ++k) {
         Vec3 a{0, 0, 0};
         a[k] = -1;
@@ -251,27 +251,26 @@ int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int m
         c[n++] = plane(a, 1, p, e);
       }
       break;
-    case 'C':
+    case io::PrimType::Cylinder:
       c[n++] = quadric({1, 1, 0}, -1, p, e, {p[X], p[Y], 0});
       c[n++] = plane({0, 0, -1}, 0, p, e);
       c[n++] = plane({0, 0, 1}, 1, p, e);
       break;
-    case 'N':
+    case io::PrimType::Cone:
       c[n++] = quadric({1, 1, -1}, 0, p, e, {p[X], p[Y], -p[Z]});
       c[n++] = plane({0, 0, -1}, 0, p, e);  // only the apex: z >= 0 touches the solid there
       c[n++] = plane({0, 0, 1}, 1, p, e);
       break;
-    case 'Y': {
+    case io::PrimType::Pyramid: {
       static const Vec3 nn[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
       static const double cc[5] = {0, 0, 1, 0, 1};
       for (int k = 0; k < 5; ++k) c[n++] = plane(nn[k], cc[k], p, e);
       break;
     }
-    default:
-      return -1;
   }
   int count = 0;
-  if (type == 'N' && std::abs(p[X]) + std::abs(p[Y]) + std::abs(p[Z]) <= 4 * (e[X] + e[Y] + e[Z])) {
+  if (type == io::PrimType::Cone &&
+      std::abs(p[X]) + std::abs(p[Y]) + std::abs(p[Z]) <= 4 * (e[X] + e[Y] + e[Z])) {
     // The apex: the body has no normal there. Its tangent planes at eight
     // azimuths (and the plane z = 0) stand in, so that a ray leaving the
     // apex steps to the right side of the cone whichever way it goes.
@@ -297,15 +296,20 @@ int nearSurfacesModern(char type, const Vec3& p, const Vec3& e, Vec3* out, int m
   return count;
 }
 
-bool intersectModern(char type, const Ray& local, Interval& out) {
+bool intersectModern(io::PrimType type, const Ray& local, PrimHit& out) {
   switch (type) {
-    case 'S': return sphereModern(local, out);
-    case 'B': return cubeModern(local, out);
-    case 'C': return cylinderModern(local, out);
-    case 'N': return coneModern(local, out);
-    case 'Y': return pyramidModern(local, out);
-    default: return false;
+    case io::PrimType::Sphere:
+      return sphereModern(local, out);
+    case io::PrimType::Cube:
+      return cubeModern(local, out);
+    case io::PrimType::Cylinder:
+      return cylinderModern(local, out);
+    case io::PrimType::Cone:
+      return coneModern(local, out);
+    case io::PrimType::Pyramid:
+      return pyramidModern(local, out);
   }
+  return false;  // not reached
 }
 
 }  // namespace prime

@@ -11,24 +11,21 @@
 // Pure functions: no I/O, no globals, no heap.
 #pragma once
 
+#include "legacy_io/prime/records.h"
 #include "src/geom/ray.h"
+#include "src/prime/geom/prim_hit.h"
 
 namespace prime {
 
-struct Interval {
-  double tIn = 0.0, tOut = 0.0;
-  Vec3 nIn{}, nOut{};  // outward unit normals at tIn and tOut (local frame)
-};
-
 // False when the line misses the solid (or only touches it: tIn == tOut is
 // reported as a miss only if the direction is degenerate).
-bool intersectModern(char type, const Ray& local, Interval& out);
+bool intersectModern(io::PrimType type, const Ray& local, PrimHit& out);
 
-bool sphereModern(const Ray& local, Interval& out);
-bool cylinderModern(const Ray& local, Interval& out);
-bool coneModern(const Ray& local, Interval& out);
-bool cubeModern(const Ray& local, Interval& out);
-bool pyramidModern(const Ray& local, Interval& out);
+bool sphereModern(const Ray& local, PrimHit& out);
+bool cylinderModern(const Ray& local, PrimHit& out);
+bool coneModern(const Ray& local, PrimHit& out);
+bool cubeModern(const Ray& local, PrimHit& out);
+bool pyramidModern(const Ray& local, PrimHit& out);
 
 // The surfaces of the solid that pass within 16 times the error bound `err`
 // (per axis, local units) of the local point p, for spawning secondary rays off
@@ -36,7 +33,7 @@ bool pyramidModern(const Ray& local, Interval& out);
 // such surface (at most `max`) and returns their number; returns -1 when p
 // is farther than that outside the solid (no surface of it is near). Every constraint of the solid
 // is evaluated with a bound on its own rounding error, so "within err" is conservative.
-int nearSurfacesModern(char type, const Vec3& p, const Vec3& err, Vec3* out, int max);
+int nearSurfacesModern(io::PrimType type, const Vec3& p, const Vec3& err, Vec3* out, int max);
 
 // Both roots of a t^2 + 2 b t + c = 0 (the listing's half-b form), ordered,
 // computed without cancellation. False when there are none (D < 0) or a = 0.

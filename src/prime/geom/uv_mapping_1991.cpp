@@ -265,10 +265,10 @@ UvPair getUVPoly1991(const Vec3& n, int numPoints, const Vec3& rI, Polygon poly)
 }
 
 // CastRay, lines 6815-6852, with E44.
-std::optional<InverseMapResult> inverseMap1991(char primType, const Vec3& localHit) {
+InverseMapResult inverseMap1991(io::PrimType type, const Vec3& localHit) {
   UvSurface uvs;  // E44: u = v = 0.0, surface = -1 before the switch
-  switch (primType) {
-    case 'S': {
+  switch (type) {
+    case io::PrimType::Sphere: {
       // `UnitVector(tmpV, n)`: a zero tmpV leaves CastRay's n as it was (a
       // stale normal); we start from tmpV itself, i.e. zero (shading.md S5).
       Vec3 n = localHit;
@@ -276,20 +276,18 @@ std::optional<InverseMapResult> inverseMap1991(char primType, const Vec3& localH
       uvs = getUVSphere1991(n);
       break;
     }
-    case 'B':
+    case io::PrimType::Cube:
       uvs = getUVCube1991(localHit);
       break;
-    case 'Y':
+    case io::PrimType::Pyramid:
       uvs = getUVPyramid1991(localHit);
       break;
-    case 'C':
+    case io::PrimType::Cylinder:
       uvs = getUVCylinder1991(localHit);
       break;
-    case 'N':
+    case io::PrimType::Cone:
       uvs = getUVCone1991(localHit);
       break;
-    default:
-      return std::nullopt;  // "switch case fell to default. Module CastRay."
   }
   InverseMapResult r;
   r.u = uvs.u;

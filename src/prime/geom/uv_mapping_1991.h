@@ -15,9 +15,9 @@
 // docs/prime/port-notes/shading.md lists every reading the errata do not cover.
 #pragma once
 #include <array>
-#include <optional>
 
 #include "src/math/vec.h"
+#include "src/prime/geom/primitives_1991.h"
 
 namespace prime {
 
@@ -27,12 +27,7 @@ namespace prime {
 inline constexpr double kPiInv = 0.318309886;
 inline constexpr double kTwoPiInv = 0.1591549;
 
-// The pyramid plane coefficients as printed everywhere in the listing
-// (BoundPyramid, IntersectPyramid, GetUVPyramid). Note kPyramidPlaneA is 5.0e-10
-// smaller than 1/sqrt(5); kPyramidPlaneB is 2/sqrt(5) to 15 digits
-// (primitives.md P1, shading.md S2).
-inline constexpr double kPyramidPlaneA = 0.44721359499958;
-inline constexpr double kPyramidPlaneB = 0.894427190999916;
+// GetUVPyramid's plane coefficients are kPyramidPlaneA/B of primitives_1991.h.
 
 // What a GetUV* routine leaves in CastRay's (u, v, surface). E44: CastRay's
 // locals start as u = v = 0.0 and surface = -1, so a routine that matches no
@@ -70,15 +65,16 @@ UvSurface getUVPyramid1991(const Vec3& p);
 // the v part from its u sibling) and E54 (`*v`) applied.
 UvPair getUVPoly1991(const Vec3& n, int numPoints, const Vec3& rI, Polygon poly);
 
-// CastRay's switch (lines 6815-6852) plus E44, for primitive type letter
-// 'S', 'B', 'C', 'N' or 'Y' and the hit point in primitive space (tmpV).
+// CastRay's switch (lines 6815-6852) plus E44, for a primitive type and the
+// hit point in primitive space (tmpV).
 struct InverseMapResult {
   double u = 0.0;
   double v = 0.0;
   int surface = 0;             // index into prim->map[surface][surfType]
   bool noFaceMatched = false;  // E44 event (X3 diagnostic): surface forced to 0
 };
-// std::nullopt for an unknown letter (the listing's fatal Error(), line 6843).
-std::optional<InverseMapResult> inverseMap1991(char primType, const Vec3& localHit);
+// The listing's fatal Error() for an unknown letter (line 6843) has no
+// counterpart: types are checked when the scene is loaded (io::primType).
+InverseMapResult inverseMap1991(io::PrimType type, const Vec3& localHit);
 
 }  // namespace prime

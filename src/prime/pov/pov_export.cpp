@@ -79,17 +79,17 @@ std::uint8_t toByte(double v) {
 }
 
 // The unit primitive of type `t` in POV-Ray terms, without its closing brace.
-std::string shapeOpen(char t) {
+std::string shapeOpen(io::PrimType t) {
   switch (t) {
-    case 'S':
+    case io::PrimType::Sphere:
       return "sphere { <0, 0, 0>, 1";
-    case 'B':
+    case io::PrimType::Cube:
       return "box { <0, 0, 0>, <1, 1, 1>";
-    case 'C':
+    case io::PrimType::Cylinder:
       return "cylinder { <0, 0, 0>, <0, 0, 1>, 1";
-    case 'N':
+    case io::PrimType::Cone:
       return "cone { <0, 0, 0>, 0, <0, 0, 1>, 1";
-    case 'Y': {
+    case io::PrimType::Pyramid: {
       // Base y = 0 (x, z in 0..1), apex (0.5, 1, 0.5): five half-spaces, unit
       // normals pointing out. POV-Ray has no pyramid; this solid works in CSG.
       const double a = 1.0 / std::sqrt(5.0), b = 2.0 / std::sqrt(5.0);
@@ -110,9 +110,8 @@ std::string shapeOpen(char t) {
              ", 0>, 0 }  // left, x = y/2\n"
              "  bounded_by { box { <0, 0, 0>, <1, 1, 1> } }";
     }
-    default:
-      throw std::invalid_argument(std::string("primitive type '") + t + "' has no POV-Ray shape");
   }
+  return {};  // not reached: every PrimType is named above
 }
 
 std::string indentLines(const std::string& text, int indent) {
@@ -322,7 +321,7 @@ class Exporter {
     const int outMap = prim.map[0][io::kOut], inMap = prim.map[0][io::kIn];
     std::string s = shapeOpen(prim.type) + tag + ": prim " + std::to_string(p) + ", maps " +
                     std::to_string(outMap) + " out / " + std::to_string(inMap) + " in\n";
-    if (prim.type == 'B') {
+    if (prim.type == io::PrimType::Cube) {
       // Boxes carry every face's map in one uv_mapping atlas, so each face
       // gets its own map and PRIME's (u, v) (GetUVCube).
       std::array<int, 6> front{}, back{};
@@ -360,7 +359,7 @@ class Exporter {
 
   // The pigment of map `mapNum` on a primitive of type `type`: the object's
   // diffuse colour D plus the map, with transmit kST.
-  std::string pigment(int mapNum, char type, const ObjectLook& L) {
+  std::string pigment(int mapNum, io::PrimType type, const ObjectLook& L) {
     const std::string t = povNumber(L.transmit);
     const SceneTexture* tex = scene_.map(mapNum);
     if (tex == nullptr || tex->constant) {
@@ -383,8 +382,8 @@ class Exporter {
     //            faces' bilinear GetUVPoly has no POV-Ray equivalent);
     //   box:     see boxPigment.
     std::string mapType, transform;
-    const bool sphere = type == 'S';
-    if (sphere || type == 'C' || type == 'N') {
+    const bool sphere = type == io::PrimType::Sphere;
+    if (sphere || type == io::PrimType::Cylinder || type == io::PrimType::Cone) {
       mapType = sphere ? "1" : "2";
       transform = "matrix <1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0>";
     } else {
@@ -409,7 +408,7 @@ class Exporter {
     const SceneTexture* first = scene_.map(faceMaps[0]);
     if (std::all_of(faceMaps.begin(), faceMaps.end(), [&](int m) { return m == faceMaps[0]; }) &&
         (first == nullptr || first->constant))
-      return pigment(faceMaps[0], 'B', L);
+      return pigment(faceMaps[0], io::PrimType::Cube, L);
     const std::string t = povNumber(L.transmit);
     const std::string image =
         "image_map { png \"" + boxAtlas(faceMaps) + "\" gamma 1 transmit all " + t + " }";

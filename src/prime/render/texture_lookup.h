@@ -15,28 +15,17 @@
 // and the file position stays just after the header: the read returns
 // texel 0 (K25). Flagged separately (see docs/prime/port-notes/shading.md S7).
 #pragma once
-#include <array>
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace prime {
 
-// One colour channel of a map: what one Map<n>_<c>.map file holds.
+// One colour channel of a map: what one Map<n>_<c>.map file holds (a whole
+// map, the three files _R, _G, _B of one map number, is a SceneTexture).
 struct TextureChannelView {
   int uScale = 0;                  // MapHeader.uScale: texels per row
   int vScale = 0;                  // MapHeader.vScale: rows
   std::span<const double> texels;  // the file's doubles, index u + uScale*v
-};
-
-// A whole map (the three files _R, _G, _B of one map number).
-struct TextureMap {
-  int uScale = 0;
-  int vScale = 0;
-  std::array<std::vector<double>, 3> texels;  // [R], [G], [B]
-  TextureChannelView channel(int lambda) const {
-    return {uScale, vScale, texels[static_cast<std::size_t>(lambda)]};
-  }
 };
 
 enum class TexelStatus {

@@ -59,7 +59,7 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
   const Ray& ray = boxRay.ray;
   ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
-  auto leaf = [&](int primNum) -> std::optional<PrimInterval> {
+  auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     // A ray that misses the primitive's (padded) box ahead cannot hit it.
     if (cull && bvh_.primBox(primNum).entry(boxRay) == std::numeric_limits<double>::infinity())
       return std::nullopt;
@@ -75,22 +75,22 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
                  : "miss";
       probe->add(depth, "primitive", text,
                  "{\"object\":" + std::to_string(obj.number) +
-                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" + p.type +
-                     "\",\"hit\":" + (ok ? "true" : "false") +
+                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" +
+                     static_cast<char>(p.type) + "\",\"hit\":" + (ok ? "true" : "false") +
                      (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) +
                                ",\"nIn\":" + json(hit.nIn) + ",\"nOut\":" + json(hit.nOut)
                          : std::string()) +
                      "}");
     }
     if (!ok) return std::nullopt;
-    return PrimInterval{hit.tIn, hit.tOut, hit.nIn, hit.nOut};
+    return hit;
   };
   TList list;
   const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
   if (program && program->isSingleLeaf()) {
     // A lone primitive: exactly what csg1991 returns for a one-entry tree
     // (the leaf's pair, or nothing), without the walk.
-    if (const std::optional<PrimInterval> hit = leaf(obj.entries[0].l))
+    if (const std::optional<PrimHit> hit = leaf(obj.entries[0].l))
       list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, obj.entries[0].l);
   } else
     try {
@@ -246,7 +246,8 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     surfPt[i] = ray.o[i] + nearest * ray.d[i];
     tmpV[i] = local.o[i] + nearest * local.d[i];
   }
-  const auto uv = inverseMap1991(prim.type, tmpV);  // types were checked at load
+  const InverseMapResult mapped = inverseMap1991(prim.type, tmpV);
+  const InverseMapResult* const uv = &mapped;
   if (uv->noFaceMatched) ++stats.noFaceMatched;
   Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
   unitVector(n, n);

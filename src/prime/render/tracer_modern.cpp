@@ -123,10 +123,10 @@ TracerModern::TracerModern(const Scene& scene, TraceOptions options)
 TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
                                     TraceStats& stats) const {
   ++stats.objectTests;
-  auto leaf = [&](int primNum) -> std::optional<Interval> {
+  auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
-    Interval in;
+    PrimHit in;
     if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
     return in;
   };
@@ -255,7 +255,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
     if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
-      Interval in;
+      PrimHit in;
       if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
           !(in.tOut > 0.0))
         return;
@@ -280,7 +280,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   Vec3 n = hit.normal;
   // Which side of the PRIMITIVE's own surface the ray is on picks the
   // outside or inside map (a difference's cut face shows B's inside).
-  Interval own;
+  PrimHit own;
   if (intersectModern(scene_.prims[bestNode.prim].type, transformRay(ray, inverse_[bestNode.prim]),
                       own))
     hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
@@ -355,13 +355,11 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
   ++stats.hits;
   const SceneObject& obj = scene_.objects[hit.obj];
   const ScenePrim& prim = scene_.prims[hit.prim];
-  const auto uv = inverseMap1991(prim.type, hit.local);
-  const int surface =
-      uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
+  const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
+  const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;
   const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
   Rgb surfColor{};
-  for (int c = 0; c < 3; ++c)
-    surfColor[c] = texel(map, c, uv ? finiteOr0(uv->u) : 0.0, uv ? finiteOr0(uv->v) : 0.0);
+  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, finiteOr0(uv.u), finiteOr0(uv.v));
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;

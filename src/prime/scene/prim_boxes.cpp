@@ -5,14 +5,22 @@
 namespace prime {
 
 Aabb primitiveBox(const ScenePrim& p) {
-  Vec3 lo, hi;
+  Vec3 lo{}, hi{};
   switch (p.type) {
-    case 'S': lo = {-1, -1, -1}; hi = {1, 1, 1}; break;
-    case 'C':
-    case 'N': lo = {-1, -1, 0}; hi = {1, 1, 1}; break;
-    case 'B':
-    case 'Y': lo = {0, 0, 0}; hi = {1, 1, 1}; break;
-    default: return {};
+    case io::PrimType::Sphere:
+      lo = {-1, -1, -1};
+      hi = {1, 1, 1};
+      break;
+    case io::PrimType::Cylinder:
+    case io::PrimType::Cone:
+      lo = {-1, -1, 0};
+      hi = {1, 1, 1};
+      break;
+    case io::PrimType::Cube:
+    case io::PrimType::Pyramid:
+      lo = {0, 0, 0};
+      hi = {1, 1, 1};
+      break;
   }
   Aabb box;
   for (int c = 0; c < 8; ++c)

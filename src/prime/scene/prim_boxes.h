@@ -10,7 +10,7 @@
 namespace prime {
 
 // The unit primitive's box (S, C, N about the z axis; B and Y in the unit
-// cube) mapped by the primitive's transform, padded. Empty for an unknown type.
+// cube) mapped by the primitive's transform, padded.
 Aabb primitiveBox(const ScenePrim& p);
 
 }  // namespace prime

@@ -13,7 +13,11 @@
 namespace prime {
 
 struct ScenePrim {
-  char type = 0;
+  // Checked by loadScene for every primitive an object uses (a leaf or a
+  // bound). A record no object uses keeps its place (primitive numbers are
+  // positions in PrimFile) but is never traced; if its type byte is not a
+  // type letter it is loaded as a Sphere.
+  io::PrimType type = io::PrimType::Sphere;
   Matrix4 transform{}, inverse{};
   std::array<std::array<int, 2>, io::kMaxSurface> map{};  // [surface][Out/In] map numbers
   int priority = 0;

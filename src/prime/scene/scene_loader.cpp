@@ -16,14 +16,14 @@ using io::InputError;
 
 namespace {
 
-bool isPrimType(char c) { return io::surfaceCount(c) > 0; }
-
 std::string primLabel(int n, const ScenePrim& p) {
   return "primitive " + std::to_string(n) + " (" + io::primTypeName(p.type) + ")";
 }
 
-// Reads obj/O<n> and checks its CSG tree against the primitive table.
-SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<ScenePrim>& prims) {
+// Reads obj/O<n> and checks its CSG tree against the primitive table: every
+// primitive it uses must have a type byte that names a type (io::primType).
+SceneObject loadObject(const io::SceneDir& dir, int number,
+                       const std::vector<io::PrimRecord>& prims) {
   const fs::path path =
       dir.existingInput("obj", "O" + std::to_string(number),
                         dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
@@ -54,7 +54,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<Sc
                            "a primitive number 0.." + std::to_string(prims.size() - 1) +
                                " (PrimFile has " + std::to_string(prims.size()) + ")",
                            std::to_string(e.l));
-        if (!isPrimType(prims[e.l].type))
+        if (!io::primType(prims[e.l].type))
           throw InputError({shown, std::nullopt, at}, field + " primitive " + std::to_string(e.l),
                            "a primitive of type S, B, C, N or Y",
                            std::string("type byte ") + std::to_string(static_cast<unsigned char>(prims[e.l].type)) +
@@ -92,7 +92,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number, const std::vector<Sc
       throw InputError({shown, std::nullopt, 2}, "ObjHeader.boundVol",
                        "-1 or a primitive number 0.." + std::to_string(prims.size() - 1),
                        std::to_string(obj.boundPrim));
-    if (!isPrimType(prims[obj.boundPrim].type))
+    if (!io::primType(prims[obj.boundPrim].type))
       throw InputError({shown, std::nullopt, 2}, "bounding volume (primitive " + std::to_string(obj.boundPrim) + ")",
                        "a primitive type S, B, C, N or Y",
                        "type byte " + std::to_string(static_cast<unsigned char>(prims[obj.boundPrim].type)));
@@ -132,7 +132,7 @@ Scene loadScene(const io::SceneDir& dir) {
   const io::PrimFile primFile = io::primFileFromBytes(io::readFileBytes(primPath.string()), dir.display(primPath));
   for (const auto& p : primFile.prims) {
     ScenePrim sp;
-    sp.type = p.type;
+    sp.type = io::primType(p.type).value_or(io::PrimType::Sphere);  // see ScenePrim::type
     sp.transform = p.transform;
     sp.inverse = p.inverse;
     for (int s = 0; s < io::kMaxSurface; ++s) sp.map[s] = {p.map[s][0], p.map[s][1]};
@@ -142,7 +142,7 @@ Scene loadScene(const io::SceneDir& dir) {
 
   const fs::path listPath = dir.existingInput("obj", "List", "prime trace");
   const io::ObjList list = io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
-  for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, scene.prims));
+  for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, primFile.prims));
 
   // Every map that a primitive of a listed object can read must exist.
   std::set<int> mapsNeeded;

@@ -500,11 +500,11 @@ TEST(Operators1991, OddNodeCountIsRejected) {
 struct Leaves {
   std::map<int, std::pair<double, double>> hits;
   std::vector<int> calls;
-  std::optional<PrimInterval> operator()(int prim) {
+  std::optional<PrimHit> operator()(int prim) {
     calls.push_back(prim);
     const auto it = hits.find(prim);
     if (it == hits.end()) return std::nullopt;
-    return PrimInterval{it->second.first, it->second.second, nIn(prim), nOut(prim)};
+    return PrimHit{it->second.first, it->second.second, nIn(prim), nOut(prim)};
   }
 };
 

@@ -58,9 +58,9 @@ struct Outcome {
 };
 
 template <class Run>
-Outcome outcome(Run&& run, const std::vector<std::optional<PrimInterval>>& leafHits) {
+Outcome outcome(Run&& run, const std::vector<std::optional<PrimHit>>& leafHits) {
   Outcome o;
-  auto leaf = [&](int prim) -> std::optional<PrimInterval> {
+  auto leaf = [&](int prim) -> std::optional<PrimHit> {
     o.asked.push_back(prim);
     return leafHits[static_cast<std::size_t>(prim)];
   };
@@ -83,11 +83,11 @@ TEST(CsgProgram1991, RandomTreesGiveTheTreeWalksLists) {
     const auto program = CsgProgram1991::compile(entries, options);
     ASSERT_TRUE(program.has_value()) << "trial " << trial;
     // Intervals on a coarse grid so that ends often coincide.
-    std::vector<std::optional<PrimInterval>> hits(static_cast<std::size_t>(leaves));
+    std::vector<std::optional<PrimHit>> hits(static_cast<std::size_t>(leaves));
     for (auto& h : hits) {
       if (rng() % 4 == 0) continue;  // a miss
       const double a = static_cast<double>(rng() % 6), b = a + static_cast<double>(rng() % 4);
-      h = PrimInterval{a, b, {a, 0, 1}, {b, 1, 0}};
+      h = PrimHit{a, b, {a, 0, 1}, {b, 1, 0}};
     }
     const Outcome walk = outcome([&](LeafFn f) { return csg1991(entries, f, options); }, hits);
     const Outcome flat = outcome([&](LeafFn f) { return program->run(f); }, hits);
@@ -139,9 +139,9 @@ TEST(CsgProgram1991, SharedSubtreesAreFlattenedOncePerReference) {
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(p->size(), 3u);
   std::vector<int> asked;
-  auto leaf = [&](int prim) -> std::optional<PrimInterval> {
+  auto leaf = [&](int prim) -> std::optional<PrimHit> {
     asked.push_back(prim);
-    return PrimInterval{1, 2, {}, {}};
+    return PrimHit{1, 2, {}, {}};
   };
   // Equal pairs in Difference: the printed code Kills both and then Kills
   // the exhausted list again (E57), in the program as in the tree walk.

@@ -12,6 +12,8 @@
 namespace prime {
 namespace {
 
+using io::PrimType;
+
 Ray ray(const Vec3& o, const Vec3& d) {
   return Ray{o, d};
 }
@@ -703,42 +705,26 @@ TEST(Pyramid1991, Misses) {
 
 // ============================================================== dispatch
 
-TEST(IntersectPrimitive1991, DispatchesOnTheTypeLetter) {
+TEST(IntersectPrimitive1991, DispatchesOnTheType) {
   // One ray for all five: o = (-3,0.5,0.5), d = +x.
   const Ray r = ray({-3.0, 0.5, 0.5}, {1.0, 0.0, 0.0});
   PrimHit h;
   // 'S': b = -3, c = 9 + .25 + .25 - 1 = 8.5, disc = 0.5: tIn = 3 - sqrt(0.5).
-  ASSERT_TRUE(intersectPrimitive1991('S', r, h));
+  ASSERT_TRUE(intersectPrimitive1991(PrimType::Sphere, r, h));
   EXPECT_NEAR(h.tIn, 3.0 - 0.7071067811865476, 1e-15);
   // 'B': x=0 at t = 3, x=1 at t = 4.
-  ASSERT_TRUE(intersectPrimitive1991('B', r, h));
+  ASSERT_TRUE(intersectPrimitive1991(PrimType::Cube, r, h));
   EXPECT_EQ(h.tIn, 3.0);
   EXPECT_EQ(h.tOut, 4.0);
   // 'C': c = 9 + .25 - 1 = 8.25, disc = 0.75: tIn = 3 - sqrt(0.75), z = .5.
-  ASSERT_TRUE(intersectPrimitive1991('C', r, h));
+  ASSERT_TRUE(intersectPrimitive1991(PrimType::Cylinder, r, h));
   EXPECT_NEAR(h.tIn, 3.0 - 0.8660254037844386, 1e-15);
   // 'N': tangent to the cone (radius 0.5 at z = 0.5): disc = 9 - 9 = 0.
-  EXPECT_FALSE(intersectPrimitive1991('N', r, h));
+  EXPECT_FALSE(intersectPrimitive1991(PrimType::Cone, r, h));
   // 'Y': right at t = 4 - 0.5p/q ~ 3.75 first, left at 3 + 0.5p/q ~ 3.25.
-  ASSERT_TRUE(intersectPrimitive1991('Y', r, h));
+  ASSERT_TRUE(intersectPrimitive1991(PrimType::Pyramid, r, h));
   EXPECT_NEAR(h.tIn, 3.25, kPyrTol);
   EXPECT_NEAR(h.tOut, 3.75, kPyrTol);
-}
-
-TEST(IntersectPrimitive1991, UnknownTypeIsFalseAndLeavesHitAlone) {
-  const Ray r = ray({-3.0, 0.5, 0.5}, {1.0, 0.0, 0.0});  // hits every real type but 'N'
-  for (const char type : {'X', 's', 'b', 'P', '\0'}) {
-    SCOPED_TRACE(static_cast<int>(type));
-    PrimHit h{7.0, 8.0, {1.0, 2.0, 3.0}, {4.0, 5.0, 6.0}};
-    EXPECT_FALSE(intersectPrimitive1991(type, r, h));
-    EXPECT_EQ(h.tIn, 7.0);
-    EXPECT_EQ(h.tOut, 8.0);
-    EXPECT_EQ(h.nIn, (Vec3{1.0, 2.0, 3.0}));
-    EXPECT_EQ(h.nOut, (Vec3{4.0, 5.0, 6.0}));
-    EXPECT_FALSE(boundHit1991(type, r));
-    EXPECT_FALSE(isPrimitiveType1991(type));
-  }
-  for (const char type : {'S', 'B', 'C', 'N', 'Y'}) EXPECT_TRUE(isPrimitiveType1991(type));
 }
 
 // ============================================================ Bound (K8)
@@ -760,10 +746,11 @@ TEST(Bound1991, InsideOriginSeesEveryBoundButTheSphere_K8) {
   EXPECT_TRUE(boundPyramid1991(r));
   // ...while none of the primitives report this ray (K7: one face ahead).
   PrimHit h;
-  for (const char type : {'S', 'B', 'C', 'N', 'Y'}) {
-    SCOPED_TRACE(type);
+  for (const PrimType type :
+       {PrimType::Sphere, PrimType::Cube, PrimType::Cylinder, PrimType::Cone, PrimType::Pyramid}) {
+    SCOPED_TRACE(static_cast<char>(type));
     EXPECT_FALSE(intersectPrimitive1991(type, r, h));
-    EXPECT_EQ(boundHit1991(type, r), type != 'S');
+    EXPECT_EQ(boundHit1991(type, r), type != PrimType::Sphere);
   }
 }
 
@@ -843,11 +830,11 @@ TEST(Bound1991, DispatchMatchesTheTypeFunctions) {
   // o = (-3,0.5,0.5), d = +x: sphere (disc 0.5), cube, cylinder, pyramid are
   // hit; the cone is tangent (disc 0).
   const Ray r = ray({-3.0, 0.5, 0.5}, {1.0, 0.0, 0.0});
-  EXPECT_TRUE(boundHit1991('S', r));
-  EXPECT_TRUE(boundHit1991('B', r));
-  EXPECT_TRUE(boundHit1991('C', r));
-  EXPECT_FALSE(boundHit1991('N', r));
-  EXPECT_TRUE(boundHit1991('Y', r));
+  EXPECT_TRUE(boundHit1991(PrimType::Sphere, r));
+  EXPECT_TRUE(boundHit1991(PrimType::Cube, r));
+  EXPECT_TRUE(boundHit1991(PrimType::Cylinder, r));
+  EXPECT_FALSE(boundHit1991(PrimType::Cone, r));
+  EXPECT_TRUE(boundHit1991(PrimType::Pyramid, r));
 }
 
 }  // namespace

@@ -10,10 +10,12 @@
 namespace prime {
 namespace {
 
+using io::PrimType;
+
 void expectInterval(char type, const Ray& r, double tIn, double tOut, const Vec3& nIn, const Vec3& nOut,
                     double tol = 1e-12) {
-  Interval in;
-  ASSERT_TRUE(intersectModern(type, r, in)) << type;
+  PrimHit in;
+  ASSERT_TRUE(intersectModern(io::primType(type).value(), r, in)) << type;
   EXPECT_NEAR(in.tIn, tIn, tol) << type;
   EXPECT_NEAR(in.tOut, tOut, tol) << type;
   for (int i = 0; i < 3; ++i) {
@@ -36,20 +38,20 @@ TEST(SolveQuadratic, NoCancellationForTheSmallRoot) {
 TEST(PrimitivesModern, SphereFromOutsideAndFromInside) {
   expectInterval('S', {{0, 0, -5}, {0, 0, 1}}, 4, 6, {0, 0, -1}, {0, 0, 1});
   expectInterval('S', {{0, 0, 0}, {0, 0, 2}}, -0.5, 0.5, {0, 0, -1}, {0, 0, 1});  // inside: tIn < 0
-  Interval in;
-  EXPECT_FALSE(intersectModern('S', {{0, 1.5, -5}, {0, 0, 1}}, in));
+  PrimHit in;
+  EXPECT_FALSE(intersectModern(PrimType::Sphere, {{0, 1.5, -5}, {0, 0, 1}}, in));
 }
 
 TEST(PrimitivesModern, CubeAndGrazingFace) {
   expectInterval('B', {{0.5, 0.5, -1}, {0, 0, 1}}, 1, 2, {0, 0, -1}, {0, 0, 1});
   // Diagonal through the corners (0,0,0) and (1,1,1): entry normal is the
   // last slab to be entered; all tie at t = 1, the first plane tested wins.
-  Interval in;
-  ASSERT_TRUE(intersectModern('B', {{-1, -1, -1}, {1, 1, 1}}, in));
+  PrimHit in;
+  ASSERT_TRUE(intersectModern(PrimType::Cube, {{-1, -1, -1}, {1, 1, 1}}, in));
   EXPECT_EQ(in.tIn, 1.0);
   EXPECT_EQ(in.tOut, 2.0);
   // Sliding inside the face plane x = 0 (closed solid): inside.
-  ASSERT_TRUE(intersectModern('B', {{0, 0.5, -1}, {0, 0, 1}}, in));
+  ASSERT_TRUE(intersectModern(PrimType::Cube, {{0, 0.5, -1}, {0, 0, 1}}, in));
   EXPECT_EQ(in.tIn, 1.0);
 }
 
@@ -71,8 +73,8 @@ TEST(PrimitivesModern, ConeBodyApexAndCap) {
   // Down the axis from above: enters the cap at t = 1, ends at the apex.
   expectInterval('N', {{0, 0, 2}, {0, 0, -1}}, 1, 2, {0, 0, 1}, {0, 0, -1});
   // The lower nappe (z < 0) is not part of the solid.
-  Interval in;
-  EXPECT_FALSE(intersectModern('N', {{-2, 0, -0.5}, {1, 0, 0}}, in));
+  PrimHit in;
+  EXPECT_FALSE(intersectModern(PrimType::Cone, {{-2, 0, -0.5}, {1, 0, 0}}, in));
 }
 
 TEST(PrimitivesModern, PyramidFrontAndBackFaces) {
@@ -82,8 +84,8 @@ TEST(PrimitivesModern, PyramidFrontAndBackFaces) {
   expectInterval('Y', {{0.5, 0.25, -1}, {0, 0, 1}}, 1.125, 1.875, {0, 0.5 * k, -k}, {0, 0.5 * k, k});
   // Up through the base (normal -y) to the apex region: x = z = 0.5 leaves
   // where 0.5y <= 0.5 stops holding, y = 1 (the apex; any side plane).
-  Interval in;
-  ASSERT_TRUE(intersectModern('Y', {{0.5, -1, 0.5}, {0, 1, 0}}, in));
+  PrimHit in;
+  ASSERT_TRUE(intersectModern(PrimType::Pyramid, {{0.5, -1, 0.5}, {0, 1, 0}}, in));
   EXPECT_EQ(in.tIn, 1.0);
   EXPECT_EQ(in.nIn, (Vec3{0, -1, 0}));
   EXPECT_DOUBLE_EQ(in.tOut, 2.0);
@@ -95,11 +97,11 @@ TEST(CsgModern, DifferenceCutFaceHasTheFlippedNormal) {
   // whose exit is B's entry face with B's outward normal (0,0,-1) negated.
   const std::vector<CsgEntry> entries = {{'-', 1, 2}, {'P', 0, 0}, {'P', 1, 0}};
   const Ray ray{{0.5, 0.5, -1}, {0, 0, 1}};
-  auto leaf = [&](int prim) -> std::optional<Interval> {
+  auto leaf = [&](int prim) -> std::optional<PrimHit> {
     Ray local = ray;
     if (prim == 1) local.o[Z] -= 0.5;
-    Interval in;
-    if (!intersectModern('B', local, in)) return std::nullopt;
+    PrimHit in;
+    if (!intersectModern(PrimType::Cube, local, in)) return std::nullopt;
     return in;
   };
   const TList l = csgModern(entries, leaf);

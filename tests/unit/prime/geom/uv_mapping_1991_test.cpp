@@ -14,6 +14,8 @@
 namespace prime {
 namespace {
 
+using io::PrimType;
+
 constexpr double kPi = std::numbers::pi;  // == acos(-1.0) == 2*acos(0.0)
 // The listing's constants, as printed (E47). Written out here rather than
 // taken from the header, so that a changed constant fails the tests.
@@ -90,26 +92,23 @@ TEST(UvSphere, GeneralPointBothSidesOfY) {
 TEST(UvSphere, CastRayNormalisesTheHitPointInsideOrOutside) {
   // 'S': UnitVector(tmpV, n) first, so (0,0,-2) and (0,0,-0.5) map as (0,0,-1).
   for (const Vec3& p : {Vec3{0.0, 0.0, -2.0}, Vec3{0.0, 0.0, -0.5}}) {
-    const auto r = inverseMap1991('S', p);
-    ASSERT_TRUE(r.has_value());
-    EXPECT_EQ(r->u, 0.0);
-    EXPECT_EQ(r->v, 0.0);
-    EXPECT_EQ(r->surface, 0);
-    EXPECT_FALSE(r->noFaceMatched);
+    const auto r = inverseMap1991(PrimType::Sphere, p);
+    EXPECT_EQ(r.u, 0.0);
+    EXPECT_EQ(r.v, 0.0);
+    EXPECT_EQ(r.surface, 0);
+    EXPECT_FALSE(r.noFaceMatched);
   }
-  const auto r = inverseMap1991('S', {0.96, 1.28, -1.2});  // 2 * (0.48, 0.64, -0.6)
-  ASSERT_TRUE(r.has_value());
-  EXPECT_NEAR(r->u, std::acos(0.6) * kPiInv1991, 1e-12);
-  EXPECT_NEAR(r->v, std::acos(0.6) * kPiInv1991, 1e-12);
+  const auto r = inverseMap1991(PrimType::Sphere, {0.96, 1.28, -1.2});  // 2 * (0.48, 0.64, -0.6)
+  EXPECT_NEAR(r.u, std::acos(0.6) * kPiInv1991, 1e-12);
+  EXPECT_NEAR(r.v, std::acos(0.6) * kPiInv1991, 1e-12);
 }
 
 TEST(UvSphere, RoundoffSnapsNearThePole) {
   // (1e-6, 0, -1) normalised: -n[Z] = 1/sqrt(1+1e-12) = 1 - 5e-13, which
   // Roundoff snaps to 1 (K24): alpha = 0, v = 0, u = 0.
-  const auto r = inverseMap1991('S', {1e-6, 0.0, -1.0});
-  ASSERT_TRUE(r.has_value());
-  EXPECT_EQ(r->v, 0.0);
-  EXPECT_EQ(r->u, 0.0);
+  const auto r = inverseMap1991(PrimType::Sphere, {1e-6, 0.0, -1.0});
+  EXPECT_EQ(r.v, 0.0);
+  EXPECT_EQ(r.u, 0.0);
 }
 
 // ------------------------------------------------------------------ cube (B)
@@ -160,18 +159,16 @@ TEST(UvCube, InsideAndOutsidePoints) {
 }
 
 TEST(UvCube, CastRayAppliesE44WhenNoFaceMatches) {
-  const auto r = inverseMap1991('B', {0.5, 0.5, 0.5});
-  ASSERT_TRUE(r.has_value());
-  EXPECT_EQ(r->surface, 0);
-  EXPECT_EQ(r->u, 0.0);
-  EXPECT_EQ(r->v, 0.0);
-  EXPECT_TRUE(r->noFaceMatched);
-  const auto f = inverseMap1991('B', {0.25, 0.75, 1.0});
-  ASSERT_TRUE(f.has_value());
-  EXPECT_EQ(f->surface, 2);
-  EXPECT_DOUBLE_EQ(f->u, 0.75);
-  EXPECT_DOUBLE_EQ(f->v, 0.25);
-  EXPECT_FALSE(f->noFaceMatched);
+  const auto r = inverseMap1991(PrimType::Cube, {0.5, 0.5, 0.5});
+  EXPECT_EQ(r.surface, 0);
+  EXPECT_EQ(r.u, 0.0);
+  EXPECT_EQ(r.v, 0.0);
+  EXPECT_TRUE(r.noFaceMatched);
+  const auto f = inverseMap1991(PrimType::Cube, {0.25, 0.75, 1.0});
+  EXPECT_EQ(f.surface, 2);
+  EXPECT_DOUBLE_EQ(f.u, 0.75);
+  EXPECT_DOUBLE_EQ(f.v, 0.25);
+  EXPECT_FALSE(f.noFaceMatched);
 }
 
 // -------------------------------------------------------------- cylinder (C)
@@ -375,12 +372,11 @@ TEST(UvPyramid, PrintedConstantMakesTheExactLeftPlaneMissAboveY02) {
 TEST(UvPyramid, InsideAndOutsideMatchNoFace) {
   expectUvs(getUVPyramid1991({0.5, 0.5, 0.5}), 0.0, 0.0, -1);
   expectUvs(getUVPyramid1991({0.5, -1.0, 0.5}), 0.0, 0.0, -1);
-  const auto r = inverseMap1991('Y', {0.5, 0.5, 0.5});
-  ASSERT_TRUE(r.has_value());
-  EXPECT_EQ(r->surface, 0);
-  EXPECT_TRUE(r->noFaceMatched);
-  EXPECT_EQ(r->u, 0.0);
-  EXPECT_EQ(r->v, 0.0);
+  const auto r = inverseMap1991(PrimType::Pyramid, {0.5, 0.5, 0.5});
+  EXPECT_EQ(r.surface, 0);
+  EXPECT_TRUE(r.noFaceMatched);
+  EXPECT_EQ(r.u, 0.0);
+  EXPECT_EQ(r.v, 0.0);
 }
 
 // ------------------------------------------------------------------ GetUVPoly
@@ -453,27 +449,18 @@ TEST(UvPoly, TriangleCopiesTheApexIntoTheFourthVertex) {
 
 // ------------------------------------------------------------- the dispatcher
 
-TEST(InverseMap, DispatchesOnTheTypeLetter) {
-  const auto c = inverseMap1991('C', {0.0, 1.0, 0.25});
-  ASSERT_TRUE(c.has_value());
-  EXPECT_EQ(c->surface, 0);
-  EXPECT_DOUBLE_EQ(c->u, kQuarter);
-  EXPECT_DOUBLE_EQ(c->v, 0.25);
-  const auto n = inverseMap1991('N', {0.5, 0.0, 1.0});
-  ASSERT_TRUE(n.has_value());
-  EXPECT_EQ(n->surface, 1);
-  EXPECT_DOUBLE_EQ(n->u, 1.0);
-  EXPECT_DOUBLE_EQ(n->v, 0.5);
-  const auto y = inverseMap1991('Y', {0.25, 0.0, 0.75});
-  ASSERT_TRUE(y.has_value());
-  EXPECT_EQ(y->surface, 4);
-  EXPECT_FALSE(y->noFaceMatched);
-}
-
-TEST(InverseMap, UnknownLetterIsAnError) {
-  EXPECT_FALSE(inverseMap1991('s', {0, 0, -1}).has_value());  // case sensitive
-  EXPECT_FALSE(inverseMap1991('O', {0, 0, -1}).has_value());
-  EXPECT_FALSE(inverseMap1991('\0', {0, 0, -1}).has_value());
+TEST(InverseMap, DispatchesOnTheType) {
+  const auto c = inverseMap1991(PrimType::Cylinder, {0.0, 1.0, 0.25});
+  EXPECT_EQ(c.surface, 0);
+  EXPECT_DOUBLE_EQ(c.u, kQuarter);
+  EXPECT_DOUBLE_EQ(c.v, 0.25);
+  const auto n = inverseMap1991(PrimType::Cone, {0.5, 0.0, 1.0});
+  EXPECT_EQ(n.surface, 1);
+  EXPECT_DOUBLE_EQ(n.u, 1.0);
+  EXPECT_DOUBLE_EQ(n.v, 0.5);
+  const auto y = inverseMap1991(PrimType::Pyramid, {0.25, 0.0, 0.75});
+  EXPECT_EQ(y.surface, 4);
+  EXPECT_FALSE(y.noFaceMatched);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ Matrix4 placed(Vec3 s, Vec3 t) {
 
 ScenePrim prim(char type, const Matrix4& m, int map) {
   ScenePrim p;
-  p.type = type;
+  p.type = io::primType(type).value();
   p.transform = m;
   inverse(m, p.inverse);
   for (auto& s : p.map) s = {map, map};

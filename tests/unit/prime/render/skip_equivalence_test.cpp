@@ -27,7 +27,7 @@ Scene randomScene(unsigned seed, int objects) {
   const char types[5] = {'S', 'B', 'C', 'N', 'Y'};
   auto addPrim = [&](char type) {
     ScenePrim p;
-    p.type = type;
+    p.type = io::primType(type).value();
     p.transform = identity4();
     const double k = size(rng);
     transform(p.transform, {k, k * (0.5 + unit(rng)), k}, {pos(rng), pos(rng), pos(rng) * 0.5},

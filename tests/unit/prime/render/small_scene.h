@@ -29,7 +29,7 @@ struct SmallScene {
 
   int prim(char type, const Vec3& scale, const Vec3& at) {
     ScenePrim p;
-    p.type = type;
+    p.type = io::primType(type).value();
     p.transform = identity4();
     transform(p.transform, scale, at, {0, 0, 0}, {10, 20, 0});
     EXPECT_TRUE(inverse(p.transform, p.inverse));

@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "src/prime/scene/scene.h"
+
 namespace prime {
 namespace {
 
@@ -137,15 +139,17 @@ TEST(ReadMap, CountersForX3) {
   EXPECT_EQ(readMap1991(kMap, 0.0, 1.0), 0.0);  // no counters: fine
 }
 
-TEST(ReadMap, TextureMapChannels) {
-  TextureMap map;
+TEST(ReadMap, SceneTextureChannels) {
+  SceneTexture map;
   map.uScale = 2;
   map.vScale = 1;
-  map.texels = {std::vector<double>{0.1, 0.2}, std::vector<double>{0.3, 0.4},
-                std::vector<double>{0.5, 0.6}};
-  EXPECT_EQ(readMap1991(map.channel(0), 0.5, 0.0), 0.2);
-  EXPECT_EQ(readMap1991(map.channel(1), 0.0, 0.0), 0.3);
-  EXPECT_EQ(readMap1991(map.channel(2), 0.5, 0.0), 0.6);
+  map.channel = {std::vector<double>{0.1, 0.2}, std::vector<double>{0.3, 0.4},
+                 std::vector<double>{0.5, 0.6}};
+  // A channel view as Tracer1991::castRay makes it.
+  auto channel = [&](int c) { return TextureChannelView{map.uScale, map.vScale, map.channel[c]}; };
+  EXPECT_EQ(readMap1991(channel(0), 0.5, 0.0), 0.2);
+  EXPECT_EQ(readMap1991(channel(1), 0.0, 0.0), 0.3);
+  EXPECT_EQ(readMap1991(channel(2), 0.5, 0.0), 0.6);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ namespace {
 Scene oneObject(char type, double scale, double rotZ = 0.0) {
   Scene s;
   ScenePrim p;
-  p.type = type;
+  p.type = io::primType(type).value();
   p.transform = identity4();
   transform(p.transform, {scale, scale, scale}, {0, 0, 0}, {0, 0, 0}, {0, 0, rotZ});
   EXPECT_TRUE(inverse(p.transform, p.inverse));
