@@ -5,6 +5,8 @@ namespace prime::io {
 std::string describe(const InputLocation& where) {
   std::string s = where.file;
   if (where.line) s += ":" + std::to_string(*where.line);
+  if (where.line && where.column) s += ":" + std::to_string(*where.column);
+  if (where.token) s += " (token " + std::to_string(*where.token) + ")";
   if (where.byte) s += " (byte " + std::to_string(*where.byte) + ")";
   return s;
 }

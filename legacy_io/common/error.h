@@ -10,9 +10,11 @@
 namespace prime::io {
 
 struct InputLocation {
-  std::string file;                  // path as the user would recognise it
-  std::optional<int> line;           // 1-based, for text files
-  std::optional<std::uint64_t> byte; // 0-based offset, for binary files
+  std::string file;                                  // path as the user would recognise it
+  std::optional<int> line = std::nullopt;            // 1-based, for text files
+  std::optional<std::uint64_t> byte = std::nullopt;  // 0-based offset, for binary files
+  std::optional<int> column = std::nullopt;          // 1-based, for token streams (with line)
+  std::optional<int> token = std::nullopt;           // 1-based token number, for token streams
 };
 
 class InputError : public std::runtime_error {
@@ -31,7 +33,7 @@ class InputError : public std::runtime_error {
   std::string field_, expected_, found_;
 };
 
-// "file:line: " or "file (byte N): " or "file: ".
+// "file:line: ", "file:line:column (token N): ", "file (byte N): " or "file: ".
 std::string describe(const InputLocation& where);
 
 }  // namespace prime::io

@@ -107,6 +107,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto options = std::make_shared<RenderOptions>();
   auto display = std::make_shared<DisplayOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  auto format = std::make_shared<std::string>("prime");
+  cmd->add_option("--format", *format,
+                  "Scene format (detected: a directory is PRIME's, a file of numbers "
+                  "Malone's, which takes its own options: prime trace FILE --help)")
+      ->check(CLI::IsMember({"prime"}));
   cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)");
   cmd->add_option("--png", *png,
                   "Also write the picture as PNG, through the display palette (see --png-area)");

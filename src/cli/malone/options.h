@@ -1,0 +1,25 @@
+// The options every Malone command shares: how the scene is read and traced.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "src/malone/render.h"
+#include "src/malone/scene.h"
+
+namespace prime::cli::malone {
+
+struct MaloneOptions {
+  std::string file;
+  std::string format = "malone";
+  bool comments = false;
+  std::string debug;             // depth | colour | normal
+  std::vector<std::string> off;  // --no ambient,diffuse,...
+  prime::malone::TraceSettings trace;
+  int threads = 0;
+};
+
+void addMaloneOptions(CLI::App* cmd, MaloneOptions& o);
+// Reads and builds the scene, applies --debug and --no to the settings.
+prime::malone::Scene loadMalone(MaloneOptions& o);
+
+}  // namespace prime::cli::malone

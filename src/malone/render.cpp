@@ -1,0 +1,36 @@
+#include "src/malone/render.h"
+
+#include <vector>
+
+namespace prime::malone {
+
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const RenderCallbacks& callbacks) {
+  const Tracer tracer(scene, settings.trace);
+  const int width = scene.viewer.xRes, height = scene.viewer.yRes;
+  RenderResult result;
+  result.raster.assign(width, height);
+  RowCallbacks rowCallbacks;
+  rowCallbacks.progress = callbacks.progress;
+  rowCallbacks.abort = callbacks.abort;
+  if (callbacks.rowDone)
+    rowCallbacks.rowDone = [&](int row) {
+      callbacks.rowDone(
+          row, std::span<const Rgb>(&result.raster.at(row, 0), static_cast<std::size_t>(width)));
+    };
+  std::vector<TraceStats> perThread(
+      static_cast<std::size_t>(threadCount(settings.threads, height)));
+  result.run = renderRows(
+      height, settings.threads,
+      [&](int row, int thread) -> std::uint64_t {
+        TraceStats& stats = perThread[static_cast<std::size_t>(thread)];
+        const std::uint64_t before = stats.rays();
+        for (int x = 0; x < width; ++x) result.raster.at(row, x) = tracer.pixel(x, row, stats);
+        return stats.rays() - before;
+      },
+      rowCallbacks);
+  for (const auto& s : perThread) result.stats += s;
+  return result;
+}
+
+}  // namespace prime::malone

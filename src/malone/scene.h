@@ -1,0 +1,85 @@
+// Malone's scene after reading (section 1.1: "a list of primitives, their
+// surfaces and types ... lights ... the viewer"), with each object's read-
+// time precalculation done once (r^2, unit normals, the inverted affine
+// matrix, the triangle's dot products) and every geometric check made with
+// the object's place in the file.
+#pragma once
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "legacy_io/malone/input.h"
+#include "src/math/rgb.h"
+#include "src/math/vec.h"
+
+namespace prime::malone {
+
+// A 3x3 matrix, rows.
+using Mat3 = std::array<Vec3, 3>;
+
+struct Primitive {
+  ObjectId id = ObjectId::Sphere;
+  // Sphere: c, r2. Plane: n (unit), D. Disk/annulus: c, n (unit), D, r2, rIn2.
+  // Triangle/parallelogram: c = v0, a, b, n (unit), D, aa, ab, bb, det.
+  // Cone: c = apex, axis (raw), u (unit axis), axis2 = |axis|^2, alpha,
+  //   alpha2, lo, hi (range in axis lengths). Cylinder: c, axis, u, axis2,
+  //   r2, lo, hi. Torus: c, u (unit axis), R, r.
+  // Polygon: n (unit), D, vertices [first, first + count) of
+  //   Scene::polygonVertices, dropped axis.
+  // Affine: c = O, m = M (world -> local), mT = M^T, inner (index into
+  //   Scene::embedded).
+  Vec3 c{}, n{}, a{}, b{}, axis{}, u{};
+  double D = 0, r2 = 0, rIn2 = 0, aa = 0, ab = 0, bb = 0, det = 0;
+  double axis2 = 0, alpha = 0, alpha2 = 0, lo = 0, hi = 0, R = 0, r = 0;
+  int first = 0, count = 0, dropAxis = 0;
+  Mat3 m{}, mT{}, mInv{};  // mInv = (X Y Z): local -> world
+  int inner = -1;
+  int surface = -1;      // index into Scene::surfaces (top-level primitives)
+  int objectNumber = 0;  // its place among the file's objects, for messages
+  io::InputLocation where;
+};
+
+struct Surface {
+  Rgb kd{};  // k_d times the colour: the diffuse spectrum
+  Rgb colour{};
+  double ks = 0, ke = 0, kt = 0, index = 1;
+};
+
+// One light sample: a point, a spectrum, and whether the r^-2 law applies.
+struct LightSample {
+  Vec3 position{};
+  Rgb rgb{};
+  bool inverseSquare = true;
+  int light = 0;  // which light of the file (for the probe)
+};
+
+struct Viewer {
+  Vec3 eye{}, lookAt{}, x{}, y{};
+  int xRes = 0, yRes = 0;
+};
+
+struct Scene {
+  std::vector<Primitive> primitives;  // top level, in file order
+  std::vector<Primitive> embedded;    // the primitives inside affine ones
+  std::vector<Vec3> polygonVertices;
+  std::vector<Surface> surfaces;
+  std::vector<LightSample> lights;  // every sample of every light, in file order
+  int lightCount = 0;               // lights in the file
+  Rgb ambient{};                    // the sum of the ambient lights
+  bool hasAmbient = false;
+  Viewer viewer;
+  std::string name;  // the file, for titles
+};
+
+// Builds the scene; throws io::InputError naming the object whose numbers
+// make no primitive (a zero normal or axis, a degenerate triangle, polygon
+// or parallelogram, a singular affine matrix, a refractive index <= 0 on a
+// transparent surface, a viewer looking at its own eye).
+Scene buildScene(const SceneFile& file, const std::string& name);
+
+// The deterministic sample positions of a sampled (spherical) light: a
+// Fibonacci lattice of `count` points on the sphere (MAL-D3).
+std::vector<Vec3> sphereSamples(const Vec3& centre, double radius, int count);
+
+}  // namespace prime::malone

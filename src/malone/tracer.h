@@ -1,0 +1,74 @@
+// Malone's trace (section 1.6-1.10): one function that "takes a ray and then
+// calculates the light shining back from that ray", called for each primary
+// ray and again for reflected and transmitted rays. In the document's order:
+// the nearest hit; transmission first (so that total internal reflection
+// can add k_t to k_s); Phong with the r^-2 law and shadow rays to every
+// light sample; the reflected ray; the cut-offs by depth and weight.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "src/geom/bvh.h"
+#include "src/malone/primitives.h"
+#include "src/malone/scene.h"
+
+namespace prime::malone {
+
+struct TraceSettings {
+  int maxDepth = 7;                 // section 1.10.2: "currently defaults to 7"
+  double minWeight = 0.01 / 256.0;  // MIN_WEIGHT (MAL-Q3)
+  double eps = 1e-6;                // the trapped-ray threshold (MAL-Q4)
+  // "The ability to turn off parts of the illumination model for testing."
+  bool ambient = true, diffuse = true, specular = true, shadows = true, reflection = true,
+       refraction = true;
+  // The debug renders of section 3.3.1: depth (grey = 1/r), colour (K_d of
+  // the first hit), normal (|n.i|).
+  enum class Debug { None, Depth, Colour, Normal } debug = Debug::None;
+  // Test every primitive for every ray, as the original did (same pixels,
+  // slower): for checking the BVH.
+  bool linearSearch = false;
+};
+
+struct TraceStats {
+  std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0, shadowRays = 0;
+  std::uint64_t primitiveTests = 0, hits = 0, totalInternalReflections = 0;
+  std::uint64_t cutByDepth = 0, cutByWeight = 0;
+  std::uint64_t rays() const { return primaryRays + reflectedRays + transmittedRays + shadowRays; }
+  TraceStats& operator+=(const TraceStats& o);
+};
+
+class Tracer {
+ public:
+  Tracer(const Scene& scene, TraceSettings settings);
+
+  // The primary ray of pixel (X, Y), exactly as printed (section 1.6):
+  // through v((2X - X_RES)/X_RES, -(2Y - Y_RES)/Y_RES), no half-pixel offset.
+  MRay primaryRay(int X, int Y) const;
+  // The colour of pixel (X, Y) (or its debug value).
+  Rgb pixel(int X, int Y, TraceStats& stats, std::string* probe = nullptr) const;
+  // trace(ray, depth, weight, index): the primary ray has depth 1, weight 1
+  // and index 1.
+  Rgb trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
+            std::string* probe = nullptr) const;
+
+  const Scene& scene() const { return scene_; }
+  const TraceSettings& settings() const { return settings_; }
+
+ private:
+  struct Hit {
+    double t = 0;
+    int primitive = -1;
+  };
+  Hit nearest(const MRay& ray, TraceStats& stats) const;
+  bool blocked(const MRay& ray, TraceStats& stats) const;
+  Rgb debugValue(const MRay& ray, TraceStats& stats) const;
+
+  const Scene& scene_;
+  TraceSettings settings_;
+  Vec3 forward_{};  // (l - e) / |l - e|
+  Bvh bvh_;
+  std::vector<int> unbounded_;  // planes: tested on every ray
+};
+
+}  // namespace prime::malone
