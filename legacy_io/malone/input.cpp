@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace prime::malone {
 
@@ -61,6 +63,16 @@ const ObjectInfo* findObject(int id) {
   return nullptr;
 }
 
+// A field being read, named only when a message needs it.
+struct FieldRef {
+  const char* object;
+  const Field* field = nullptr;
+  int component = 0;
+  const char* plain = nullptr;  // a name of its own (ID slots, polygon vertices)
+  int vertex = -1;              // polygon: 1-based vertex number
+  std::string name() const;
+};
+
 std::string fieldName(const Field& f, int component) {
   if (f.size == 1) return f.name;
   static const char* xyz[] = {" x", " y", " z"};
@@ -72,7 +84,7 @@ std::string fieldName(const Field& f, int component) {
 }
 
 // Escapes control bytes so that a message shows what the file holds.
-std::string shown(const std::string& word) {
+std::string shown(std::string_view word) {
   std::string out;
   for (unsigned char c : word) {
     if (c < 0x20 || c == 0x7f) {
@@ -87,6 +99,17 @@ std::string shown(const std::string& word) {
   return "'" + out + "'";
 }
 
+std::string FieldRef::name() const {
+  std::string n = object;
+  if (plain) return n + ", " + plain;
+  if (vertex >= 0)
+    return n + ", field vertex " + std::to_string(vertex) +
+           (component == 0   ? " x"
+            : component == 1 ? " y"
+                             : " z");
+  return n + ", field " + fieldName(*field, component);
+}
+
 class Tokens {
  public:
   Tokens(const std::string& text, std::string display, bool comments)
@@ -97,15 +120,20 @@ class Tokens {
       advance(3);  // a UTF-8 byte order mark is not part of the stream
   }
 
-  // The next token, or false at end of file.
-  bool next(std::string& word, io::InputLocation& where) {
+  // The next token, or false at end of file. `word` points into the text.
+  bool next(std::string_view& word, io::InputLocation& where) {
     skipBlanks();
     if (pos_ >= text_.size()) return false;
-    where = here();
+    where.file = display_;
+    where.line = line_;
+    where.column = column_;
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && !blank(text_[pos_]) && !(comments_ && text_[pos_] == '#'))
-      advance(1);
-    word = text_.substr(start, pos_ - start);
+    // A token has no line break: only the column moves.
+    while (pos_ < text_.size() && !blank(text_[pos_]) && !(comments_ && text_[pos_] == '#')) {
+      ++pos_;
+      ++column_;
+    }
+    word = std::string_view(text_).substr(start, pos_ - start);
     where.token = ++tokens_;
     return true;
   }
@@ -153,7 +181,7 @@ class Reader {
       : tokens_(text, display, options.comments), options_(options) {}
 
   SceneFile read() {
-    std::string word;
+    std::string_view word;
     io::InputLocation where;
     while (tokens_.next(word, where)) {
       const int id = objectId(word, where, "object ID (a primitive, light, viewer or 106)");
@@ -203,8 +231,8 @@ class Reader {
   }
 
  private:
-  int objectId(const std::string& word, const io::InputLocation& where, const std::string& what) {
-    const double v = parse(word, where, what);
+  int objectId(std::string_view word, const io::InputLocation& where, const std::string& what) {
+    const double v = parse(word, where, [&] { return what; });
     if (v != std::floor(v) || std::fabs(v) > 1e9)
       throw io::InputError(where, what, "an integral ID", shown(word));
     const int id = static_cast<int>(v);
@@ -216,47 +244,55 @@ class Reader {
     return id;
   }
 
-  double parse(const std::string& word, const io::InputLocation& where, const std::string& what) {
-    const char* begin = word.c_str();
+  // strtod on the token; `what` names the field, called only for a message.
+  template <class What>
+  double parse(std::string_view word, const io::InputLocation& where, What&& what) {
+    char small[64];
+    std::string large;
+    const char* begin = small;
+    if (word.size() < sizeof small) {
+      std::memcpy(small, word.data(), word.size());
+      small[word.size()] = '\0';
+    } else {
+      large.assign(word);
+      begin = large.c_str();
+    }
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(begin, &end);
-    if (end == begin || *end != '\0' || word.find('\0') != std::string::npos) {
-      throw io::InputError(where, what, "a number", shown(word));
-    }
-    if (!std::isfinite(v)) throw io::InputError(where, what, "a finite number", shown(word));
+    if (end == begin || static_cast<std::size_t>(end - begin) != word.size())
+      throw io::InputError(where, what(), "a number", shown(word));
+    if (!std::isfinite(v)) throw io::InputError(where, what(), "a finite number", shown(word));
     if (errno == ERANGE && std::fabs(v) > 1.0)
-      throw io::InputError(where, what, "a number within the range of a double",
+      throw io::InputError(where, what(), "a number within the range of a double",
                            shown(word) + " (out of range)");
     return v;
   }
 
-  // The next number of `object` for `field`; end of file is an error that
-  // says which object and which field was next.
-  double number(const std::string& object, const std::string& field,
-                const io::InputLocation& objectWhere) {
-    std::string word;
+  // The next number of an object's field; end of file is an error that says
+  // which object and which field was next.
+  double number(const FieldRef& field, const io::InputLocation& objectWhere) {
+    std::string_view word;
     io::InputLocation where;
     if (!tokens_.next(word, where))
-      throw io::InputError(tokens_.endOfFile(), object + ", field " + field,
-                           "a number (the " + object + " that starts at " +
+      throw io::InputError(tokens_.endOfFile(), field.name(),
+                           std::string("a number (the ") + field.object + " that starts at " +
                                io::describe(objectWhere) + " is not complete)",
                            "end of file");
-    return parse(word, where, object + ", field " + field);
+    return parse(word, where, [&] { return field.name(); });
   }
 
-  int integer(const std::string& object, const std::string& field,
-              const io::InputLocation& objectWhere, int lo, int hi) {
-    std::string word;
+  int integer(const FieldRef& field, const io::InputLocation& objectWhere, int lo, int hi) {
+    std::string_view word;
     io::InputLocation where;
     if (!tokens_.next(word, where))
-      throw io::InputError(tokens_.endOfFile(), object + ", field " + field,
-                           "an integer (the " + object + " that starts at " +
+      throw io::InputError(tokens_.endOfFile(), field.name(),
+                           std::string("an integer (the ") + field.object + " that starts at " +
                                io::describe(objectWhere) + " is not complete)",
                            "end of file");
-    const double v = parse(word, where, object + ", field " + field);
+    const double v = parse(word, where, [&] { return field.name(); });
     if (v != std::floor(v) || v < lo || v > hi)
-      throw io::InputError(where, object + ", field " + field,
+      throw io::InputError(where, field.name(),
                            "an integer from " + std::to_string(lo) + " to " + std::to_string(hi),
                            shown(word));
     return static_cast<int>(v);
@@ -264,9 +300,14 @@ class Reader {
 
   std::vector<double> numbers(const ObjectInfo& info, const io::InputLocation& where) {
     std::vector<double> v;
+    v.reserve(12);
     for (const Field& f : info.fields)
-      for (int k = 0; k < f.size; ++k) v.push_back(number(info.name, fieldName(f, k), where));
+      for (int k = 0; k < f.size; ++k) v.push_back(number({info.name, &f, k}, where));
     return v;
+  }
+  // One named field of `info` (by its index in the table).
+  double field(const ObjectInfo& info, int index, int component, const io::InputLocation& where) {
+    return number({info.name, &info.fields[static_cast<std::size_t>(index)], component}, where);
   }
 
   PrimitiveRecord primitive(int id, const io::InputLocation& where) {
@@ -275,21 +316,21 @@ class Reader {
     p.id = static_cast<ObjectId>(id);
     p.where = where;
     if (p.id == ObjectId::Polygon) {
-      const int n = integer(info.name, "N", where, 3, 1000000);
+      const int n = integer({info.name, &info.fields[0], 0}, where, 3, 1000000);
+      p.numbers.reserve(1 + 3 * static_cast<std::size_t>(n));
       p.numbers.push_back(n);
       for (int i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k)
-          p.numbers.push_back(number(info.name,
-                                     "vertex " + std::to_string(i + 1) +
-                                         (k == 0   ? " x"
-                                          : k == 1 ? " y"
-                                                   : " z"),
-                                     where));
+        for (int k = 0; k < 3; ++k) {
+          FieldRef f{info.name};
+          f.component = k;
+          f.vertex = i + 1;
+          p.numbers.push_back(number(f, where));
+        }
       return p;
     }
     p.numbers = numbers(info, where);
     if (p.id == ObjectId::Affine) {
-      std::string word;
+      std::string_view word;
       io::InputLocation innerWhere;
       if (!tokens_.next(word, innerWhere))
         throw io::InputError(tokens_.endOfFile(), "affine, embedded primitive",
@@ -311,7 +352,7 @@ class Reader {
 
   // A surface slot: 100 and its numbers, or 107 (the current default).
   int surface(const io::InputLocation& objectWhere, const std::string& object, bool allowDefault) {
-    std::string word;
+    std::string_view word;
     io::InputLocation where;
     if (!tokens_.next(word, where))
       throw io::InputError(tokens_.endOfFile(), object,
@@ -319,7 +360,7 @@ class Reader {
                                (allowDefault ? ", or 107" : "") + " (the object that starts at " +
                                io::describe(objectWhere) + " is not complete)",
                            "end of file");
-    const double v = parse(word, where, object);
+    const double v = parse(word, where, [&] { return object; });
     if (v == 107 && allowDefault) {
       if (defaultSurface_ < 0)
         throw io::InputError(where, object,
@@ -351,11 +392,10 @@ class Reader {
     l.id = id;
     l.where = where;
     if (id == ObjectId::SampledLight) {
-      l.samples = integer(info.name, "samples", where, 1, 100000);
-      for (int k = 0; k < 3; ++k)
-        l.position[k] = number(info.name, fieldName({"centre", 3}, k), where);
-      l.radius = number(info.name, "radius", where);
-      for (int k = 0; k < 3; ++k) l.rgb[k] = number(info.name, fieldName({"rgb", 3}, k), where);
+      l.samples = integer({info.name, &info.fields[0], 0}, where, 1, 100000);
+      for (int k = 0; k < 3; ++k) l.position[k] = field(info, 1, k, where);
+      l.radius = field(info, 2, 0, where);
+      for (int k = 0; k < 3; ++k) l.rgb[k] = field(info, 3, k, where);
     } else {
       const auto v = numbers(info, where);
       l.position = {v[0], v[1], v[2]};
@@ -371,10 +411,9 @@ class Reader {
                         &v.x[0],   &v.x[1],   &v.x[2],   &v.y[0],      &v.y[1],      &v.y[2]};
     int k = 0;
     for (int f = 0; f < 4; ++f)
-      for (int c = 0; c < 3; ++c)
-        *fields[k++] = number(info.name, fieldName(info.fields[f], c), where);
-    v.xRes = integer(info.name, "X_RES", where, 1, options_.maxResolution);
-    v.yRes = integer(info.name, "Y_RES", where, 1, options_.maxResolution);
+      for (int c = 0; c < 3; ++c) *fields[k++] = field(info, f, c, where);
+    v.xRes = integer({info.name, &info.fields[4], 0}, where, 1, options_.maxResolution);
+    v.yRes = integer({info.name, &info.fields[5], 0}, where, 1, options_.maxResolution);
     scene_.viewer = v;
     ++scene_.viewers;
   }

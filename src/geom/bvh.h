@@ -34,7 +34,8 @@ class Bvh {
   };
   int build(int first, int count, int depth);
   std::vector<Aabb> boxes_;
-  std::vector<int> order_;  // box indices, grouped by leaf
+  std::vector<Vec3> centres_;  // the boxes' centres, during the build
+  std::vector<int> order_;     // box indices, grouped by leaf
   std::vector<Node> nodes_;
 };
 

@@ -173,15 +173,16 @@ bool intersect(const Scene& scene, const Primitive& p, const MRay& ray, double e
     }
     case ObjectId::Affine: {
       // M(o - O) + t' Md/|Md|, t' = t |Md| (section 2.6).
-      const Vec3 md = mul(p.m, ray.d);
+      const Affine& f = scene.affines[p.affine];
+      const Vec3 md = mul(f.m, ray.d);
       const double scale = length(md);
       if (!(scale > 0)) return false;
       MRay local;
-      local.o = mul(p.m, ray.o - p.c);
+      local.o = mul(f.m, ray.o - p.c);
       local.d = md * (1.0 / scale);
       local.length = ray.length == kInfinite ? kInfinite : ray.length * scale;
       double tl = 0;
-      if (!intersect(scene, scene.embedded[p.inner], local, eps, tl)) return false;
+      if (!intersect(scene, scene.embedded[f.inner], local, eps, tl)) return false;
       t = tl / scale;
       return t < ray.length;
     }
@@ -221,8 +222,9 @@ Vec3 normal(const Scene& scene, const Primitive& p, const Vec3& x) {
     }
     case ObjectId::Affine: {
       // M^T n_local(M(x - O)), translation included (MAL-E5).
-      const Vec3 local = mul(p.m, x - p.c);
-      return unit(mul(p.mT, normal(scene, scene.embedded[p.inner], local)));
+      const Affine& f = scene.affines[p.affine];
+      const Vec3 local = mul(f.m, x - p.c);
+      return unit(mul(f.mT, normal(scene, scene.embedded[f.inner], local)));
     }
     default:
       return {0, 0, 1};
@@ -281,10 +283,11 @@ Aabb bounds(const Scene& scene, const Primitive& p) {
       disc(p.c - p.u * p.r, p.u, p.R + p.r);
       break;
     case ObjectId::Affine: {
-      const Aabb inner = bounds(scene, scene.embedded[p.inner]);
+      const Affine& f = scene.affines[p.affine];
+      const Aabb inner = bounds(scene, scene.embedded[f.inner]);
       if (inner.empty()) return Aabb{};  // an affine plane is still unbounded
       // World = O + (X Y Z) local: the corners of the local box.
-      const Mat3& cols = p.mInv;
+      const Mat3& cols = f.mInv;
       for (int corner = 0; corner < 8; ++corner) {
         const Vec3 local{corner & 1 ? inner.hi[0] : inner.lo[0],
                          corner & 2 ? inner.hi[1] : inner.lo[1],

@@ -75,7 +75,9 @@ bool invert(const Mat3& m, Mat3& out) {
 Primitive build(const PrimitiveRecord& p, Scene& scene) {
   Primitive q;
   q.id = p.id;
-  q.where = p.where;
+  q.line = p.where.line.value_or(0);
+  q.column = p.where.column.value_or(0);
+  q.token = p.where.token.value_or(0);
   q.objectNumber = p.objectNumber;
   const auto& v = p.numbers;
   switch (p.id) {
@@ -173,15 +175,18 @@ Primitive build(const PrimitiveRecord& p, Scene& scene) {
       q.c = at(v, 0);
       const Vec3 X = at(v, 3), Y = at(v, 6), Z = at(v, 9);
       const Mat3 cols = {Vec3{X[0], Y[0], Z[0]}, Vec3{X[1], Y[1], Z[1]}, Vec3{X[2], Y[2], Z[2]}};
-      q.mInv = cols;
-      if (!invert(cols, q.m))
+      Affine affine;
+      affine.mInv = cols;
+      if (!invert(cols, affine.m))
         refuse(p, "X, Y, Z", "three independent axes (the matrix (X Y Z) is inverted)",
                "a singular matrix: X " + str(X) + ", Y " + str(Y) + ", Z " + str(Z));
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) q.mT[i][j] = q.m[j][i];
+        for (int j = 0; j < 3; ++j) affine.mT[i][j] = affine.m[j][i];
       const Primitive inner = build(*p.inner, scene);
       scene.embedded.push_back(inner);
-      q.inner = static_cast<int>(scene.embedded.size()) - 1;
+      affine.inner = static_cast<int>(scene.embedded.size()) - 1;
+      scene.affines.push_back(affine);
+      q.affine = static_cast<int>(scene.affines.size()) - 1;
       break;
     }
     default:
@@ -222,6 +227,7 @@ Scene buildScene(const SceneFile& file, const std::string& name) {
     t.index = s.index;
     scene.surfaces.push_back(t);
   }
+  scene.primitives.reserve(file.primitives.size());
   for (const auto& p : file.primitives) {
     Primitive q = build(p, scene);
     q.surface = p.surface;

@@ -27,17 +27,24 @@ struct Primitive {
   //   r2, lo, hi. Torus: c, u (unit axis), R, r.
   // Polygon: n (unit), D, vertices [first, first + count) of
   //   Scene::polygonVertices, dropped axis.
-  // Affine: c = O, m = M (world -> local), mT = M^T, inner (index into
-  //   Scene::embedded).
+  // Affine: c = O, affine (index into Scene::affines).
   Vec3 c{}, n{}, a{}, b{}, axis{}, u{};
   double D = 0, r2 = 0, rIn2 = 0, aa = 0, ab = 0, bb = 0, det = 0;
   double axis2 = 0, alpha = 0, alpha2 = 0, lo = 0, hi = 0, R = 0, r = 0;
   int first = 0, count = 0, dropAxis = 0;
-  Mat3 m{}, mT{}, mInv{};  // mInv = (X Y Z): local -> world
-  int inner = -1;
-  int surface = -1;      // index into Scene::surfaces (top-level primitives)
-  int objectNumber = 0;  // its place among the file's objects, for messages
-  io::InputLocation where;
+  int affine = -1;
+  int surface = -1;                     // index into Scene::surfaces (top-level primitives)
+  int objectNumber = 0;                 // its place among the file's objects, for messages
+  int line = 0, column = 0, token = 0;  // where its ID stands in the file
+};
+
+// The affine primitive's matrices (kept apart: a mesh of a million triangles
+// should not carry them).
+struct Affine {
+  Mat3 m{};        // M = (X Y Z)^-1: world -> local
+  Mat3 mT{};       // M^T, for normals
+  Mat3 mInv{};     // (X Y Z): local -> world, for boxes
+  int inner = -1;  // index into Scene::embedded
 };
 
 struct Surface {
@@ -62,6 +69,7 @@ struct Viewer {
 struct Scene {
   std::vector<Primitive> primitives;  // top level, in file order
   std::vector<Primitive> embedded;    // the primitives inside affine ones
+  std::vector<Affine> affines;
   std::vector<Vec3> polygonVertices;
   std::vector<Surface> surfaces;
   std::vector<LightSample> lights;  // every sample of every light, in file order
@@ -69,7 +77,11 @@ struct Scene {
   Rgb ambient{};                    // the sum of the ambient lights
   bool hasAmbient = false;
   Viewer viewer;
-  std::string name;  // the file, for titles
+  std::string name;  // the file, for titles and messages
+
+  io::InputLocation where(const Primitive& p) const {
+    return {name, p.line, std::nullopt, p.column, p.token};
+  }
 };
 
 // Builds the scene; throws io::InputError naming the object whose numbers

@@ -158,8 +158,8 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
   if (probe)
     *probe += indent + "depth " + std::to_string(depth) + ": hit object " +
               std::to_string(p.objectNumber) + " (" + objectName(static_cast<int>(p.id)) + ", " +
-              io::describe(p.where) + ") at t = " + fmt("%.9g", hit.t) + ", point " + vec(x) +
-              ", normal " + vec(n) + "\n";
+              io::describe(scene_.where(p)) + ") at t = " + fmt("%.9g", hit.t) + ", point " +
+              vec(x) + ", normal " + vec(n) + "\n";
 
   double ks = s.ks;  // k_s', augmented by k_t on total internal reflection
   Rgb colour{0, 0, 0};
