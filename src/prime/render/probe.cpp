@@ -13,6 +13,8 @@ const char* rayKindName(RayKind k) {
       return "reflected";
     case RayKind::Transmitted:
       return "transmitted";
+    case RayKind::Shadow:
+      return "shadow";
   }
   return "?";
 }

@@ -29,6 +29,9 @@ Vec3 unit(const Vec3& v) {
 double clamp1(double x) {
   return std::clamp(x, -1.0, 1.0);
 }
+// Internal reflections inside one object before the light counts as trapped
+// (docs/prime/deviations.md N9); the 1991 profile's --tir-cap is its own.
+constexpr int kMaxInternalReflections = 64;
 double finiteOr0(double x) {
   return std::isfinite(x) ? x : 0.0;
 }
@@ -113,7 +116,7 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
   return po;
 }
 
-TracerModern::TracerModern(const Scene& scene, TraceOptions options)
+TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
     : scene_(scene), options_(options), bvh_(scene) {
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
   inverse_.reserve(scene.prims.size());
@@ -309,8 +312,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     through = true;
     return r;
   }
-  const int cap = options_.tirCap > 0 ? std::min(options_.tirCap, 64) : 64;
-  for (int step = 0; step < cap; ++step) {
+  for (int step = 0; step < kMaxInternalReflections; ++step) {
     const TList list = objectIntervals(obj, r, stats);
     const TNode* exit = nullptr;
     for (const TNode& node : list)

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "src/prime/render/hall_1991.h"
+#include "src/prime/render/trace_options.h"
 #include "src/prime/render/trace_stats.h"
-#include "src/prime/render/tracer_1991.h"
 #include "src/prime/scene/object_bvh.h"
 #include "src/prime/scene/scene.h"
 
@@ -40,7 +40,7 @@ struct SurfaceHit {
 
 class TracerModern {
  public:
-  TracerModern(const Scene& scene, TraceOptions options = {});
+  TracerModern(const Scene& scene, RayTreeOptions options = {});
 
   Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary,
               double weight = 1.0) const;
@@ -58,7 +58,7 @@ class TracerModern {
   Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
                TraceStats& stats) const;
   const Scene& scene_;
-  TraceOptions options_;
+  RayTreeOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
   std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform
