@@ -8,6 +8,7 @@
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/geom/uv_mapping_1991.h"
 #include "src/prime/math/listing_matrix.h"
+#include "src/prime/render/hall_modern.h"
 
 namespace prime {
 
@@ -382,40 +383,10 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
       iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
   }
 
-  // Hall's sum with the light vector pointing AT the light (K10 fixed),
-  // clamped cosines and no negative base in pow (K10, X2).
-  const Vec3 v = -ray.d;  // towards the viewer
-  Rgb color{};
-  for (int c = 0; c < 3; ++c) {
-    double a = 0, b = 0, cd = 0, dd = 0;
-    for (const HallLight& light : lights_) {
-      const Vec3 l = unit(light.pt - hit.point);
-      const Vec3 hj = unit(l + v);
-      const double nl = dot(n, l);
-      const double iL = light.intensity[c];
-      const double nh = std::max(0.0, dot(n, hj));
-      a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
-      if (h.indx !=
-          1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
-        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
-        const double nht = std::max(0.0, -dot(n, ht));
-        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
-             std::pow(nht, std::max(0.0, h.kTH));
-      }
-      cd += iL * std::max(0.0, nl);
-      dd += iL * std::max(0.0, -nl);
-    }
-    const double ia = scene_.ambient[c];
-    const double fDR = h.fDR[c], fDT = 1.0 - fDR;
-    const double cosR = clamp1(dot(n, refl));
-    const double sum =
-        kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
-        kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
-        kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
-    if (!std::isfinite(sum)) ++stats.nanColours;
-    color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
-  }
-  return color;
+  const HallHue hue{h.kDR, h.kDT, {h.fDR[0], h.fDR[1], h.fDR[2]}, h.tT, h.kRH, h.kTH, h.indx};
+  const auto terms = hallTermsModern(hue, surfColor, iSR, iST, sT, hit.point, ray.d, n, refl,
+                                     lights_, scene_.ambient);
+  return hallColourModern(terms, stats.nanColours);
 }
 
 }  // namespace prime
