@@ -57,6 +57,8 @@ class Tracer1991 {
   };
   bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                  int depth) const;
+  void childWeights(const SceneObject& obj, const Vec3& n, const Vec3& reflectedDir,
+                    const Rgb& surfColor, double sT, double& wR, double& wT) const;
   // The ray comes prepared for the primitives' box tests.
   TList objectList(const SceneObject& obj, const BoxRay& ray, TraceStats& stats, Probe* probe,
                    int depth) const;
