@@ -209,12 +209,12 @@ void Probe::texture(int depth, double u, double v, int surface, bool noFaceMatch
 }
 
 void Probe::transmit(int depth, int object, int steps, double distance, bool exited,
-                     const Ray& leaving) {
+                     const Ray& leaving, std::string_view whyNoExit) {
   add(depth, "transmit",
       "through object " + std::to_string(object) + ": " + std::to_string(steps) +
           " internal step(s), distance " + fmt(distance) +
-          (exited ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " +
-          fmt(leaving.o) + " dir " + fmt(leaving.d),
+          (exited ? "" : " (" + std::string(whyNoExit) + ")") + ", leaves at " + fmt(leaving.o) +
+          " dir " + fmt(leaving.d),
       JsonObject()
           .add("object", object)
           .add("steps", steps)

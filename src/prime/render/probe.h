@@ -69,8 +69,10 @@ class Probe {
   // The texture lookup at the hit: u, v, the surface and its map, the colour.
   void texture(int depth, double u, double v, int surface, bool noFaceMatched, int map, int uScale,
                int vScale, const Rgb& colour);
-  // TransmittedRay: the walk through the object and the ray that leaves it.
-  void transmit(int depth, int object, int steps, double distance, bool exited, const Ray& leaving);
+  // TransmittedRay: the walk through the object and the ray that leaves it;
+  // when it does not leave, why not.
+  void transmit(int depth, int object, int steps, double distance, bool exited, const Ray& leaving,
+                std::string_view whyNoExit);
   // No object hit: the background colour.
   void miss(int depth, const Vec3& background);
   // Hall's six terms of the hit's colour, per channel.

@@ -156,7 +156,9 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
     }
   }
   for (int i = 0; i < 3; ++i) tr.o[i] += tr.d[i];
-  if (probe) probe->transmit(depth, obj.number, iterations, distance, ok, tr);
+  if (probe)
+    probe->transmit(depth, obj.number, iterations, distance, ok, tr,
+                    "no exit found: E46/E59, entry refraction kept");
   return tr;
 }
 

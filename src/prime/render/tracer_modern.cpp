@@ -124,17 +124,24 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
 }
 
-TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
-                                    TraceStats& stats) const {
+TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
+                                    Probe* probe, int depth) const {
   ++stats.objectTests;
   auto leaf = [&](int primNum) -> std::optional<Interval> {
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
     Interval in;
-    if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
+    const bool ok = intersectModern(p.type, transformRay(ray, inverse_[primNum]), in);
+    if (probe)
+      probe->primitive(
+          depth, obj.number, primNum, p.type,
+          ok ? std::optional(PrimInterval{in.tIn, in.tOut, in.nIn, in.nOut}) : std::nullopt);
+    if (!ok) return std::nullopt;
     return in;
   };
-  return csgModern(obj.entries, leaf);
+  TList list = csgModern(obj.entries, leaf);
+  if (probe) probe->csgList(depth, obj.number, list);
+  return list;
 }
 
 // The hit point o + t d of `node` and a bound on its distance from the true
@@ -250,7 +257,8 @@ Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
   return po;
 }
 
-bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const {
+bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats, Probe* probe,
+                              int depth) const {
   double nearest = std::numeric_limits<double>::infinity();
   int bestObj = -1;
   TNode bestNode{};
@@ -260,11 +268,12 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
       Interval in;
-      if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
-          !(in.tOut > 0.0))
-        return;
+      const bool met =
+          intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) && in.tOut > 0.0;
+      if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
+      if (!met) return;
     }
-    const TList list = objectIntervals(obj, ray, stats);
+    const TList list = objectIntervals(obj, ray, stats, probe, depth);
     for (const TNode& node : list) {
       if (!(node.t > 0.0)) continue;  // behind the origin (or NaN)
       if (node.t < nearest || (node.t == nearest && k < bestObj)) {
@@ -296,7 +305,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
 // Refract into the object at the hit, walk to where the ray leaves it
 // (reflecting internally while beyond the critical angle), refract out.
 Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance,
-                           bool& through, TraceStats& stats) const {
+                           bool& through, TraceStats& stats, Probe* probe, int depth) const {
   distance = 0.0;
   through = false;
   const SceneObject& obj = scene_.objects[hit.obj];
@@ -306,12 +315,17 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   const double eta = hit.exitsObject ? indx : 1.0 / indx;
   const double cosI = clamp1(-dot(d, hit.normal));
   const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-  if (!(k >= 0.0)) return {};  // total internal reflection: nothing transmitted
+  auto report = [&](int steps, const Ray& leaving, std::string_view why) {
+    if (probe) probe->transmit(depth, obj.number, steps, distance, through, leaving, why);
+    return leaving;
+  };
+  if (!(k >= 0.0))  // total internal reflection: nothing transmitted
+    return report(0, {}, "total internal reflection at the surface: nothing transmitted");
   Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
   r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
-    return r;
+    return report(0, r, {});
   }
   for (int step = 0; step < kMaxInternalReflections; ++step) {
     const TList list = objectIntervals(obj, r, stats);
@@ -324,7 +338,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     if (!exit) {  // numerically outside already: leave as we are
       ++stats.emptyTransmitLists;
       through = true;
-      return r;
+      return report(step, r, {});
     }
     distance += exit->t;
     SurfaceHit at;
@@ -342,29 +356,39 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
     r.o = spawnOrigin(at, r.d);
     through = true;
-    return r;
+    return report(step + 1, r, {});
   }
   ++stats.cappedTirLoops;  // trapped: the light is absorbed
-  return {};
+  return report(kMaxInternalReflections, {}, "trapped by internal reflection: absorbed");
 }
 
-Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
+Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                           double weight) const {
   stats.countRay(kind);
   ray.d = unit(ray.d);
+  if (probe) probe->ray(depth, kind, ray);
   SurfaceHit hit;
-  if (!nearestHit(ray, hit, stats))
-    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  if (!nearestHit(ray, hit, stats, probe, depth)) {
+    if (probe) probe->miss(depth, scene_.background);
+    return scene_.background;
+  }
   ++stats.hits;
   const SceneObject& obj = scene_.objects[hit.obj];
   const ScenePrim& prim = scene_.prims[hit.prim];
+  if (probe)
+    probe->hit(depth, obj.number, hit.prim, prim.type, hit.t, hit.point, hit.local, hit.normal,
+               hit.fromInsidePrim);
   const auto uv = inverseMap1991(prim.type, hit.local);
   const int surface =
       uv && uv->surface >= 0 && uv->surface < io::surfaceCount(prim.type) ? uv->surface : 0;
-  const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
+  const int mapNum = prim.map[surface][hit.fromInsidePrim ? 1 : 0];
+  const SceneTexture& map = scene_.maps[mapNum];
+  const double u = uv ? finiteOr0(uv->u) : 0.0, v = uv ? finiteOr0(uv->v) : 0.0;
   Rgb surfColor{};
-  for (int c = 0; c < 3; ++c)
-    surfColor[c] = texel(map, c, uv ? finiteOr0(uv->u) : 0.0, uv ? finiteOr0(uv->v) : 0.0);
+  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, u, v);
+  if (probe)
+    probe->texture(depth, u, v, surface, uv && uv->noFaceMatched, mapNum, map.uScale, map.vScale,
+                   surfColor);
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;
@@ -373,20 +397,26 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
   bool through = false;
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
-  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats);
+  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats, probe, depth);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
-      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, RayKind::Reflected,
+      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, probe, RayKind::Reflected,
                     weight * std::abs(kSR));
     if (through && weight * std::abs(kST) >= options_.minWeight)
-      iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
+      iST = castRay(transmitted, depth + 1, stats, probe, RayKind::Transmitted,
+                    weight * std::abs(kST));
   }
 
-  const HallHue hue{h.kDR, h.kDT, {h.fDR[0], h.fDR[1], h.fDR[2]}, h.tT, h.kRH, h.kTH, h.indx};
+  const HallHue hue{h.kDR, h.kDT, h.fDR, h.tT, h.kRH, h.kTH, h.indx};
   const auto terms = hallTermsModern(hue, surfColor, iSR, iST, sT, hit.point, ray.d, n, refl,
                                      lights_, scene_.ambient);
-  return hallColourModern(terms, stats.nanColours);
+  const Rgb color = hallColourModern(terms, stats.nanColours);
+  if (probe) {
+    probe->hallTerms(depth, terms);
+    probe->shade(depth, iSR, iST, sT, color);
+  }
+  return color;
 }
 
 }  // namespace prime
