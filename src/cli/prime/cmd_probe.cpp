@@ -4,6 +4,7 @@
 #include "palette/prime/color_num.h"
 #include "src/cli/commands.h"
 #include "src/cli/prime/render_options.h"
+#include "src/prime/render/tracer_modern.h"
 
 namespace prime::cli {
 
@@ -52,30 +53,43 @@ void addProbeCommand(CLI::App& app, Action& action) {
         r.d = {(*ray)[3], (*ray)[4], (*ray)[5]};
         where = "ray from " + fmt(r.o) + " towards " + fmt(r.d);
       }
-      const Tracer1991 tracer(scene, options->settings.trace);
+      // The tracer of the chosen profile; only the modern one says so (the
+      // 1991 output is what it always was).
+      const bool modern = options->settings.profile == Profile::Modern;
       TraceStats stats;
       Probe probe;
-      const Rgb color = tracer.castRay(r, 0, stats, &probe);
+      const Rgb color =
+          modern ? TracerModern(scene, options->settings.trace).castRay(r, 0, stats, &probe)
+                 : Tracer1991(scene, options->settings.trace).castRay(r, 0, stats, &probe);
       const int index = paletteIndex(color, options->settings, stats);
       const PaletteTable table =
           options->settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
       const PaletteRgb shown = table[static_cast<std::size_t>(index & 0xFF)];
       if (*asJson) {
-        std::cout << "{\"scene\":\"" << scene.name << "\",\"where\":\"" << where
-                  << "\",\"events\":[";
+        std::string events = "[";
         for (std::size_t i = 0; i < probe.events.size(); ++i)
-          std::cout << (i ? "," : "") << "{\"depth\":" << probe.events[i].depth << ",\"event\":\""
-                    << probe.events[i].kind << "\",\"data\":" << probe.events[i].json << "}";
-        std::cout << "],\"color\":" << json(Vec3{color[0], color[1], color[2]})
-                  << ",\"index\":" << index << ",\"paletteRgb\":[" << shown.r << "," << shown.g
-                  << "," << shown.b << "],\"rays\":" << stats.rays() << "}\n";
+          events += (i ? "," : "") + JsonObject()
+                                         .add("depth", probe.events[i].depth)
+                                         .add("event", probe.events[i].kind)
+                                         .addJson("data", probe.events[i].json)
+                                         .str();
+        JsonObject doc;
+        doc.add("scene", scene.name).add("where", where);
+        if (modern) doc.add("profile", "modern");
+        doc.addJson("events", events + "]")
+            .add("color", color)
+            .add("index", index)
+            .addJson("paletteRgb", "[" + std::to_string(shown.r) + "," + std::to_string(shown.g) +
+                                       "," + std::to_string(shown.b) + "]")
+            .add("rays", stats.rays());
+        std::cout << doc.str() << "\n";
       } else {
-        std::cout << scene.name << ": " << where << "\n";
+        std::cout << scene.name << ": " << where << (modern ? " (modern profile)" : "") << "\n";
         for (const auto& e : probe.events)
           std::cout << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
-        std::cout << "colour " << fmt(Vec3{color[0], color[1], color[2]}) << " -> palette index "
-                  << index << " = (" << shown.r << ", " << shown.g << ", " << shown.b
-                  << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
+        std::cout << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r
+                  << ", " << shown.g << ", " << shown.b << ") of 255; " << stats.rays()
+                  << " ray(s) in the tree\n";
       }
       return 0;
     };

@@ -15,7 +15,8 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
       ->check(CLI::Range(0, 64));
   cmd->add_option(
          "--tir-cap", o.settings.trace.tirCap,
-         "Total-internal-reflection steps before giving up (errata E59: 1000; 0 = never, may hang)")
+         "1991 profile: total-internal-reflection steps before giving up (errata E59: 1000; 0 = "
+         "never, may hang); the modern profile stops at 64")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
                 "Errata Q4 alternative: skip the right subtree when the left list is empty");

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "legacy_io/prime/records.h"
+
 namespace prime {
 
 const char* rayKindName(RayKind k) {
@@ -13,8 +15,73 @@ const char* rayKindName(RayKind k) {
       return "reflected";
     case RayKind::Transmitted:
       return "transmitted";
+    case RayKind::Shadow:
+      return "shadow";
   }
   return "?";
+}
+
+std::string jsonString(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+JsonObject& JsonObject::key(std::string_view k) {
+  if (text_.size() > 1) text_ += ",";
+  text_ += jsonString(k) + ":";
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, int v) {
+  key(k).text_ += std::to_string(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, std::uint64_t v) {
+  key(k).text_ += std::to_string(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, double v) {
+  key(k).text_ += json(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, bool v) {
+  key(k).text_ += v ? "true" : "false";
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, const Vec3& v) {
+  key(k).text_ += json(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, std::string_view v) {
+  key(k).text_ += jsonString(v);
+  return *this;
+}
+JsonObject& JsonObject::addJson(std::string_view k, std::string_view v) {
+  key(k).text_ += v;
+  return *this;
 }
 
 std::string fmt(double v) {
@@ -38,13 +105,19 @@ std::string json(const Vec3& v) {
   return "[" + json(v[0]) + "," + json(v[1]) + "," + json(v[2]) + "]";
 }
 
+namespace {
+const char* inOut(int surfType) {
+  return surfType ? "In" : "Out";
+}
+}  // namespace
+
 std::string describe(const TList& list) {
   if (list.empty()) return "empty";
   std::string s;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const TNode& n = list[i];
-    s += (i % 2 == 0 ? "[" : "") + fmt(n.t) + " p" + std::to_string(n.prim) +
-         (n.surfType ? " In" : " Out");
+    s += (i % 2 == 0 ? "[" : "") + fmt(n.t) + " p" + std::to_string(n.prim) + " " +
+         inOut(n.surfType);
     s += (i % 2 == 0 ? ", " : "] ");
   }
   return s;
@@ -55,10 +128,141 @@ std::string jsonList(const TList& list) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const TNode& n = list[i];
     if (i) s += ",";
-    s += "{\"t\":" + json(n.t) + ",\"prim\":" + std::to_string(n.prim) + ",\"surfType\":\"" +
-         (n.surfType ? "In" : "Out") + "\",\"norm\":" + json(n.norm) + "}";
+    s += JsonObject()
+             .add("t", n.t)
+             .add("prim", n.prim)
+             .add("surfType", inOut(n.surfType))
+             .add("norm", n.norm)
+             .str();
   }
   return s + "]";
+}
+
+void Probe::ray(int depth, RayKind kind, const Ray& r) {
+  add(depth, "ray",
+      std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
+          fmt(r.o) + " dir " + fmt(r.d),
+      JsonObject()
+          .add("kind", rayKindName(kind))
+          .add("depth", depth)
+          .add("origin", r.o)
+          .add("dir", r.d));
+}
+
+void Probe::boundTest(int depth, int object, io::PrimType boundType, int boundPrim, bool hit) {
+  add(depth, "bound",
+      "object " + std::to_string(object) + ": bounding " + io::primTypeName(boundType) + " (prim " +
+          std::to_string(boundPrim) + ") " + (hit ? "hit" : "missed: object skipped"),
+      JsonObject().add("object", object).add("boundPrim", boundPrim).add("hit", hit));
+}
+
+void Probe::primitive(int depth, int object, int prim, io::PrimType type,
+                      const std::optional<PrimHit>& in) {
+  std::string text = "object " + std::to_string(object) + " prim " + std::to_string(prim) + " (" +
+                     io::primTypeName(type) + "): ";
+  JsonObject json;
+  json.add("object", object)
+      .add("prim", prim)
+      .add("type", static_cast<char>(type))
+      .add("hit", in.has_value());
+  if (in) {
+    text += "in " + fmt(in->tIn) + " n " + fmt(in->nIn) + ", out " + fmt(in->tOut) + " n " +
+            fmt(in->nOut);
+    json.add("tIn", in->tIn).add("tOut", in->tOut).add("nIn", in->nIn).add("nOut", in->nOut);
+  } else {
+    text += "miss";
+  }
+  add(depth, "primitive", std::move(text), json);
+}
+
+void Probe::csgList(int depth, int object, const TList& list) {
+  add(depth, "csg", "object " + std::to_string(object) + " Roth list: " + describe(list),
+      JsonObject().add("object", object).addJson("list", jsonList(list)));
+}
+
+void Probe::hit(int depth, int object, int prim, io::PrimType type, double t, const Vec3& point,
+                const Vec3& local, const Vec3& normal, bool inside) {
+  add(depth, "hit",
+      "nearest: object " + std::to_string(object) + " prim " + std::to_string(prim) + " (" +
+          io::primTypeName(type) + ") at t " + fmt(t) + ", point " + fmt(point) + ", local " +
+          fmt(local) + ", normal " + fmt(normal) + " (" + (inside ? "inside" : "outside") +
+          " surface)",
+      JsonObject()
+          .add("object", object)
+          .add("prim", prim)
+          .add("t", t)
+          .add("point", point)
+          .add("local", local)
+          .add("normal", normal)
+          .add("surfType", inOut(inside)));
+}
+
+void Probe::texture(int depth, double u, double v, int surface, bool noFaceMatched, int map,
+                    int uScale, int vScale, const Rgb& colour) {
+  add(depth, "texture",
+      "u " + fmt(u) + " v " + fmt(v) + " surface " + std::to_string(surface) +
+          (noFaceMatched ? " (no face matched: E44)" : "") + " -> map " + std::to_string(map) +
+          " (" + std::to_string(uScale) + "x" + std::to_string(vScale) + ") colour " + fmt(colour),
+      JsonObject()
+          .add("u", u)
+          .add("v", v)
+          .add("surface", surface)
+          .add("map", map)
+          .add("color", colour));
+}
+
+void Probe::transmit(int depth, int object, int steps, double distance, bool exited,
+                     const Ray& leaving, std::string_view whyNoExit) {
+  add(depth, "transmit",
+      "through object " + std::to_string(object) + ": " + std::to_string(steps) +
+          " internal step(s), distance " + fmt(distance) +
+          (exited ? "" : " (" + std::string(whyNoExit) + ")") + ", leaves at " + fmt(leaving.o) +
+          " dir " + fmt(leaving.d),
+      JsonObject()
+          .add("object", object)
+          .add("steps", steps)
+          .add("distance", distance)
+          .add("exited", exited)
+          .add("origin", leaving.o)
+          .add("dir", leaving.d));
+}
+
+void Probe::miss(int depth, const Vec3& background) {
+  add(depth, "miss", "no object hit: background " + fmt(background), JsonObject());
+}
+
+void Probe::hallTerms(int depth, const std::array<HallTerms, 3>& terms) {
+  static const char* kChannel[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c) {
+    const HallTerms& t = terms[static_cast<std::size_t>(c)];
+    add(depth, "hall",
+        std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) +
+            " + specular trans " + fmt(t.specularTransmission) + " + diffuse refl " +
+            fmt(t.diffuseReflection) + " + diffuse trans " + fmt(t.diffuseTransmission) +
+            " + reflected " + fmt(t.reflected) + " + transmitted " + fmt(t.transmitted) + " = " +
+            fmt(t.sum()),
+        JsonObject()
+            .add("channel", kChannel[c])
+            .add("specularReflection", t.specularReflection)
+            .add("specularTransmission", t.specularTransmission)
+            .add("diffuseReflection", t.diffuseReflection)
+            .add("diffuseTransmission", t.diffuseTransmission)
+            .add("reflected", t.reflected)
+            .add("transmitted", t.transmitted)
+            .add("sum", t.sum()));
+  }
+}
+
+void Probe::shade(int depth, const Rgb& reflected, const Rgb& transmitted, double sT,
+                  const Rgb& colour) {
+  add(depth, "shade",
+      "Hall: reflected " + fmt(reflected) + ", transmitted " + fmt(transmitted) + ", sT " +
+          fmt(sT) + " -> colour " + fmt(colour),
+      JsonObject()
+          .add("reflected", reflected)
+          .add("transmitted", transmitted)
+          .add("sT", sT)
+          .add("color", colour));
 }
 
 }  // namespace prime

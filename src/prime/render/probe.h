@@ -1,13 +1,19 @@
 // What `prime probe` records while one pixel's ray tree is traced: every ray,
 // every bound, object and primitive test, the chosen hit, the texture and the
-// shading. The tracer calls these hooks only when a probe is attached, so a
+// shading, as typed events that each keep a human-readable line and the same
+// as a JSON object. The tracers call them only when a probe is attached, so a
 // normal render pays one pointer test per event site.
 #pragma once
+#include <array>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "src/prime/geom/interval_list.h"
+#include "legacy_io/prime/records.h"
 #include "src/geom/ray.h"
+#include "src/prime/geom/csg_1991.h"
+#include "src/prime/geom/interval_list.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/trace_stats.h"
 
@@ -15,23 +21,76 @@ namespace prime {
 
 const char* rayKindName(RayKind k);
 
+// A JSON object built field by field: keys and strings quoted and escaped,
+// numbers as json(double) prints them (17 digits; NaN and Inf as strings).
+class JsonObject {
+ public:
+  JsonObject& add(std::string_view key, int v);
+  JsonObject& add(std::string_view key, std::uint64_t v);
+  JsonObject& add(std::string_view key, double v);
+  JsonObject& add(std::string_view key, bool v);
+  JsonObject& add(std::string_view key, const Vec3& v);
+  JsonObject& add(std::string_view key, std::string_view v);
+  JsonObject& add(std::string_view key, const char* v) { return add(key, std::string_view(v)); }
+  JsonObject& add(std::string_view key, char v) { return add(key, std::string_view(&v, 1)); }
+  // A value that is JSON already (an array or object built elsewhere).
+  JsonObject& addJson(std::string_view key, std::string_view json);
+  std::string str() const { return text_ + "}"; }
+
+ private:
+  JsonObject& key(std::string_view k);
+  std::string text_ = "{";
+};
+
+std::string jsonString(std::string_view s);  // "s", escaped
+
 struct ProbeEvent {
   int depth = 0;
   std::string kind;  // "ray", "bound", "primitive", "csg", "object", "hit", "texture", "transmit",
-                     // "shade", "miss"
+                     // "hall", "shade", "miss"
   std::string text;  // human-readable one-liner
   std::string json;  // the same as a JSON object
 };
 
 class Probe {
  public:
-  void add(int depth, std::string kind, std::string text, std::string json) {
-    events.push_back({depth, std::move(kind), std::move(text), std::move(json)});
-  }
+  // CastRay: a ray of the tree (its direction unit).
+  void ray(int depth, RayKind kind, const Ray& ray);
+  // IntersectObjBound: the object's bounding primitive met or missed (then
+  // the object is skipped).
+  void boundTest(int depth, int object, io::PrimType boundType, int boundPrim, bool hit);
+  // One leaf of an object's CSG tree: the primitive's interval, or a miss.
+  void primitive(int depth, int object, int prim, io::PrimType type,
+                 const std::optional<PrimHit>& in);
+  // The object's combined list along the ray.
+  void csgList(int depth, int object, const TList& list);
+  // The nearest surface: world point, primitive-space point, unit world
+  // normal, and whether the ray meets the surface from inside (kSurfIn).
+  void hit(int depth, int object, int prim, io::PrimType type, double t, const Vec3& point,
+           const Vec3& local, const Vec3& normal, bool inside);
+  // The texture lookup at the hit: u, v, the surface and its map, the colour.
+  void texture(int depth, double u, double v, int surface, bool noFaceMatched, int map, int uScale,
+               int vScale, const Rgb& colour);
+  // TransmittedRay: the walk through the object and the ray that leaves it;
+  // when it does not leave, why not.
+  void transmit(int depth, int object, int steps, double distance, bool exited, const Ray& leaving,
+                std::string_view whyNoExit);
+  // No object hit: the background colour.
+  void miss(int depth, const Vec3& background);
+  // Hall's six terms of the hit's colour, per channel.
+  void hallTerms(int depth, const std::array<HallTerms, 3>& terms);
+  // The hit's colour from the returned reflected and transmitted colours.
+  void shade(int depth, const Rgb& reflected, const Rgb& transmitted, double sT, const Rgb& colour);
+
   std::vector<ProbeEvent> events;
+
+ private:
+  void add(int depth, std::string kind, std::string text, const JsonObject& json) {
+    events.push_back({depth, std::move(kind), std::move(text), json.str()});
+  }
 };
 
-// Formatting helpers shared by the tracer's probe hooks.
+// Formatting helpers for the probe's lines (an Rgb is a Vec3).
 std::string fmt(double v);
 std::string fmt(const Vec3& v);
 std::string json(const Vec3& v);

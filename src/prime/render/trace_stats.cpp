@@ -3,13 +3,10 @@
 namespace prime {
 
 TraceStats& TraceStats::operator+=(const TraceStats& o) {
-  primaryRays += o.primaryRays;
-  reflectedRays += o.reflectedRays;
-  transmittedRays += o.transmittedRays;
+  RayCounts::operator+=(o);
   boundTests += o.boundTests;
   objectTests += o.objectTests;
   primitiveTests += o.primitiveTests;
-  hits += o.hits;
   maskedPrimaryRays += o.maskedPrimaryRays;
   totalInternalReflections += o.totalInternalReflections;
   emptyTransmitLists += o.emptyTransmitLists;

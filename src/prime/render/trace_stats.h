@@ -1,16 +1,15 @@
-// Counters of one render: rays cast by kind, and the X3 diagnostics that show
-// where a scene leaves the ground on which the 1991 program was well defined.
+// Counters of one render: the rays cast by kind (RayCounts, shared by every
+// system), the tests made, and the X3 diagnostics that show where a scene
+// leaves the ground on which the 1991 program was well defined.
 #pragma once
 #include <cstdint>
 
+#include "src/render/ray_counts.h"
+
 namespace prime {
 
-enum class RayKind { Primary, Reflected, Transmitted };
-
-struct TraceStats {
-  std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0;
+struct TraceStats : RayCounts {
   std::uint64_t boundTests = 0, objectTests = 0, primitiveTests = 0;
-  std::uint64_t hits = 0;
   std::uint64_t maskedPrimaryRays =
       0;  // primary rays answered by the mask (PrimaryRayMask), not traced
   std::uint64_t totalInternalReflections = 0;
@@ -21,12 +20,6 @@ struct TraceStats {
   std::uint64_t nanColours = 0;          // X3: a NaN reached ColorNum
   std::uint64_t indicesOutOfRange = 0;   // K15: palette index outside 0..255
 
-  std::uint64_t rays() const { return primaryRays + reflectedRays + transmittedRays; }
-  void countRay(RayKind kind) {
-    ++(kind == RayKind::Primary     ? primaryRays
-       : kind == RayKind::Reflected ? reflectedRays
-                                    : transmittedRays);
-  }
   TraceStats& operator+=(const TraceStats& o);
 };
 

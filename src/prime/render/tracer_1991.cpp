@@ -8,8 +8,8 @@
 #include "src/prime/geom/primitives_1991.h"
 #include "src/prime/geom/uv_mapping_1991.h"
 #include "src/prime/math/listing_math.h"
-#include "src/prime/render/texture_lookup.h"
 #include "src/prime/math/listing_vec.h"
+#include "src/prime/render/texture_lookup.h"
 
 namespace prime {
 
@@ -43,13 +43,7 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
   ++stats.boundTests;
   const ScenePrim& b = scene_.prims[obj.boundPrim];
   const bool hit = boundHit1991(b.type, transformRay(ray, b.inverse));
-  if (probe)
-    probe->add(depth, "bound",
-               "object " + std::to_string(obj.number) + ": bounding " + io::primTypeName(b.type) +
-                   " (prim " + std::to_string(obj.boundPrim) + ") " +
-                   (hit ? "hit" : "missed: object skipped"),
-               "{\"object\":" + std::to_string(obj.number) + ",\"boundPrim\":" +
-                   std::to_string(obj.boundPrim) + ",\"hit\":" + (hit ? "true" : "false") + "}");
+  if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, hit);
   return hit;
 }
 
@@ -67,23 +61,10 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
     const ScenePrim& p = scene_.prims[primNum];
     PrimHit hit;
     const bool ok = intersectPrimitive1991(p.type, transformRay(ray, p.inverse), hit);
-    if (probe) {
-      std::string text = "object " + std::to_string(obj.number) + " prim " +
-                         std::to_string(primNum) + " (" + io::primTypeName(p.type) + "): ";
-      text += ok ? "in " + fmt(hit.tIn) + " n " + fmt(hit.nIn) + ", out " + fmt(hit.tOut) + " n " +
-                       fmt(hit.nOut)
-                 : "miss";
-      probe->add(depth, "primitive", text,
-                 "{\"object\":" + std::to_string(obj.number) +
-                     ",\"prim\":" + std::to_string(primNum) + ",\"type\":\"" +
-                     static_cast<char>(p.type) + "\",\"hit\":" + (ok ? "true" : "false") +
-                     (ok ? ",\"tIn\":" + json(hit.tIn) + ",\"tOut\":" + json(hit.tOut) +
-                               ",\"nIn\":" + json(hit.nIn) + ",\"nOut\":" + json(hit.nOut)
-                         : std::string()) +
-                     "}");
-    }
-    if (!ok) return std::nullopt;
-    return hit;
+    std::optional<PrimHit> in;
+    if (ok) in = hit;
+    if (probe) probe->primitive(depth, obj.number, primNum, p.type, in);
+    return in;
   };
   TList list;
   const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
@@ -103,10 +84,7 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
                                std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
                                fmt(ray.d) + ": " + e.what());
     }
-  if (probe)
-    probe->add(depth, "csg",
-               "object " + std::to_string(obj.number) + " Roth list: " + describe(list),
-               "{\"object\":" + std::to_string(obj.number) + ",\"list\":" + jsonList(list) + "}");
+  if (probe) probe->csgList(depth, obj.number, list);
   return list;
 }
 
@@ -179,29 +157,31 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
   }
   for (int i = 0; i < 3; ++i) tr.o[i] += tr.d[i];
   if (probe)
-    probe->add(depth, "transmit",
-               "through object " + std::to_string(obj.number) + ": " + std::to_string(iterations) +
-                   " internal step(s), distance " + fmt(distance) +
-                   (ok ? "" : " (no exit found: E46/E59, entry refraction kept)") + ", leaves at " +
-                   fmt(tr.o) + " dir " + fmt(tr.d),
-               "{\"object\":" + std::to_string(obj.number) +
-                   ",\"steps\":" + std::to_string(iterations) + ",\"distance\":" + json(distance) +
-                   ",\"exited\":" + (ok ? "true" : "false") + ",\"origin\":" + json(tr.o) +
-                   ",\"dir\":" + json(tr.d) + "}");
+    probe->transmit(depth, obj.number, iterations, distance, ok, tr,
+                    "no exit found: E46/E59, entry refraction kept");
   return tr;
+}
+
+// The children's weights in the pixel for the adaptive tree-depth control
+// (TraceOptions::minWeight): the parent's weight times kSR*FSR(acos(N.R)),
+// or kST*FST(0)*tT^sT, largest channel.
+void Tracer1991::childWeights(const SceneObject& obj, const Vec3& n, const Vec3& reflectedDir,
+                              const Rgb& surfColor, double sT, double& wR, double& wT) const {
+  const double cosR = cosDeg(acosDeg(dot(n, reflectedDir)));
+  double fR = 0.0, fT = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    fR = std::max(fR, std::abs(fsrFromCos1991(surfColor[c], scene_.ambient[c], cosR)));
+    fT = std::max(fT, std::abs(1.0 - fsrFromCos1991(surfColor[c], scene_.ambient[c], 1.0)));
+  }
+  wR *= std::abs(1.0 - obj.hue.kDR) * fR;
+  wT *= std::abs(1.0 - obj.hue.kDT) * fT * std::abs(std::pow(obj.hue.tT, sT));
 }
 
 Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                         double weight) const {
   stats.countRay(kind);
   unitVector(ray.d, ray.d);  // E41
-  if (probe)
-    probe->add(depth, "ray",
-               std::string(rayKindName(kind)) + " ray, depth " + std::to_string(depth) + ": from " +
-                   fmt(ray.o) + " dir " + fmt(ray.d),
-               "{\"kind\":\"" + std::string(rayKindName(kind)) +
-                   "\",\"depth\":" + std::to_string(depth) + ",\"origin\":" + json(ray.o) +
-                   ",\"dir\":" + json(ray.d) + "}");
+  if (probe) probe->ray(depth, kind, ray);
 
   const BoxRay boxRay(ray);  // prepared once for all the box tests
   double nearest = kInfinity;
@@ -232,9 +212,8 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }
   if (nearest == kInfinity) {
-    if (probe)
-      probe->add(depth, "miss", "no object hit: background " + fmt(scene_.background), "{}");
-    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+    if (probe) probe->miss(depth, scene_.background);
+    return scene_.background;
   }
   ++stats.hits;
 
@@ -251,6 +230,9 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   if (uv->noFaceMatched) ++stats.noFaceMatched;
   Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
   unitVector(n, n);
+  if (probe)
+    probe->hit(depth, obj.number, best.prim, prim.type, nearest, surfPt, tmpV, n,
+               best.surfType != 0);
 
   const int mapNum = prim.map[uv->surface][best.surfType];
   const SceneTexture& map = scene_.maps[mapNum];
@@ -260,26 +242,9 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
     surfColor[c] = readMap1991({map.uScale, map.vScale, map.channel[c]}, uv->u, uv->v, &counters);
     stats.failedTexelReads += counters.failedReads;
   }
-  if (probe) {
-    probe->add(
-        depth, "hit",
-        "nearest: object " + std::to_string(obj.number) + " prim " + std::to_string(best.prim) +
-            " (" + io::primTypeName(prim.type) + ") at t " + fmt(nearest) + ", point " +
-            fmt(surfPt) + ", local " + fmt(tmpV) + ", normal " + fmt(n) + " (" +
-            (best.surfType ? "inside" : "outside") + " surface)",
-        "{\"object\":" + std::to_string(obj.number) + ",\"prim\":" + std::to_string(best.prim) +
-            ",\"t\":" + json(nearest) + ",\"point\":" + json(surfPt) + ",\"local\":" + json(tmpV) +
-            ",\"normal\":" + json(n) + ",\"surfType\":\"" + (best.surfType ? "In" : "Out") + "\"}");
-    probe->add(depth, "texture",
-               "u " + fmt(uv->u) + " v " + fmt(uv->v) + " surface " + std::to_string(uv->surface) +
-                   (uv->noFaceMatched ? " (no face matched: E44)" : "") + " -> map " +
-                   std::to_string(mapNum) + " (" + std::to_string(map.uScale) + "x" +
-                   std::to_string(map.vScale) + ") colour " +
-                   fmt(Vec3{surfColor[0], surfColor[1], surfColor[2]}),
-               "{\"u\":" + json(uv->u) + ",\"v\":" + json(uv->v) + ",\"surface\":" +
-                   std::to_string(uv->surface) + ",\"map\":" + std::to_string(mapNum) +
-                   ",\"color\":" + json(Vec3{surfColor[0], surfColor[1], surfColor[2]}) + "}");
-  }
+  if (probe)
+    probe->texture(depth, uv->u, uv->v, uv->surface, uv->noFaceMatched, mapNum, map.uScale,
+                   map.vScale, surfColor);
 
   // kSR = 1 - kDR and kST = 1 - kDT weigh the reflected and transmitted
   // colours in Hall's sum; where one is 0 its ray tree cannot change the
@@ -295,63 +260,23 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   Rgb colorReflected{}, colorTransmitted{};
   if (depth++ < options_.maxDepth) {  // K20
     double wR = weight, wT = weight;
-    if (options_.minWeight > 0.0) {  // adaptive tree-depth control: the children's weights
-      const double cosR = cosDeg(acosDeg(dot(n, reflected.d)));
-      double fR = 0.0, fT = 0.0;
-      for (int c = 0; c < 3; ++c) {
-        fR = std::max(fR, std::abs(fsrFromCos1991(surfColor[c], scene_.ambient[c], cosR)));
-        fT = std::max(fT, std::abs(1.0 - fsrFromCos1991(surfColor[c], scene_.ambient[c], 1.0)));
-      }
-      wR *= std::abs(1.0 - obj.hue.kDR) * fR;
-      wT *= std::abs(1.0 - obj.hue.kDT) * fT * std::abs(std::pow(obj.hue.tT, sT));
-    }
     const double cut = options_.minWeight;
+    if (cut > 0.0) childWeights(obj, n, reflected.d, surfColor, sT, wR, wT);
     if (wantReflected && !(cut > 0.0 && wR < cut))
       colorReflected = castRay(reflected, depth, stats, probe, RayKind::Reflected, wR);
     if (wantTransmitted && !(cut > 0.0 && wT < cut))
       colorTransmitted = castRay(transmitted, depth, stats, probe, RayKind::Transmitted, wT);
   }
-  const HallHue hue{obj.hue.kDR, obj.hue.kDT, {obj.hue.fDR[0], obj.hue.fDR[1], obj.hue.fDR[2]},
-                    obj.hue.tT,  obj.hue.kRH, obj.hue.kTH,
-                    obj.hue.indx};
+  const HallHue hue{obj.hue.kDR, obj.hue.kDT, obj.hue.fDR, obj.hue.tT,
+                    obj.hue.kRH, obj.hue.kTH, obj.hue.indx};
   const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
-  const Rgb color =
-      processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
-                       {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]}, hallSkipping_);
-  if (probe) {
-    const auto terms =
-        hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom, lights_,
-                         {scene_.ambient[0], scene_.ambient[1], scene_.ambient[2]});
-    static const char* kChannel[3] = {"R", "G", "B"};
-    std::string jsonTerms = "[";
-    for (int c = 0; c < 3; ++c) {
-      const HallTerms& t = terms[c];
-      probe->add(depth - 1, "hall",
-                 std::string(kChannel[c]) + ": specular refl " + fmt(t.specularReflection) +
-                     " + specular trans " + fmt(t.specularTransmission) + " + diffuse refl " +
-                     fmt(t.diffuseReflection) + " + diffuse trans " + fmt(t.diffuseTransmission) +
-                     " + reflected " + fmt(t.reflected) + " + transmitted " + fmt(t.transmitted) +
-                     " = " + fmt(t.sum()),
-                 "{\"channel\":\"" + std::string(kChannel[c]) +
-                     "\",\"specularReflection\":" + json(t.specularReflection) +
-                     ",\"specularTransmission\":" + json(t.specularTransmission) +
-                     ",\"diffuseReflection\":" + json(t.diffuseReflection) +
-                     ",\"diffuseTransmission\":" + json(t.diffuseTransmission) +
-                     ",\"reflected\":" + json(t.reflected) +
-                     ",\"transmitted\":" + json(t.transmitted) + ",\"sum\":" + json(t.sum()) + "}");
-    }
+  const Rgb color = processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom,
+                                     lights_, scene_.ambient, hallSkipping_);
+  if (probe) {  // at the hit's depth (depth++ above)
+    probe->hallTerms(depth - 1, hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted,
+                                                 sT, geom, lights_, scene_.ambient));
+    probe->shade(depth - 1, colorReflected, colorTransmitted, sT, color);
   }
-  if (probe)
-    probe->add(
-        depth - 1, "shade",
-        "Hall: reflected " + fmt(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
-            ", transmitted " +
-            fmt(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) + ", sT " +
-            fmt(sT) + " -> colour " + fmt(Vec3{color[0], color[1], color[2]}),
-        "{\"reflected\":" + json(Vec3{colorReflected[0], colorReflected[1], colorReflected[2]}) +
-            ",\"transmitted\":" +
-            json(Vec3{colorTransmitted[0], colorTransmitted[1], colorTransmitted[2]}) +
-            ",\"sT\":" + json(sT) + ",\"color\":" + json(Vec3{color[0], color[1], color[2]}) + "}");
   return color;
 }
 

@@ -17,30 +17,12 @@
 #include "src/prime/geom/csg_program_1991.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/probe.h"
+#include "src/prime/render/trace_options.h"
 #include "src/prime/render/trace_stats.h"
 #include "src/prime/scene/object_bvh.h"
 #include "src/prime/scene/scene.h"
 
 namespace prime {
-
-struct TraceOptions {
-  int maxDepth = 5;    // Define.h MaxDepth
-  int tirCap = 1000;   // E59: iterations of the TIR loop before giving up; 0 = no cap
-  Csg1991Options csg;  // Q4 alternative etc.
-  // Skip work whose result the listing multiplies by zero or throws away:
-  // no reflected ray where kSR = 1 - kDR = 0, no transmitted ray (nor the
-  // walk through the object) where kST = 1 - kDT = 0, and Roth's early exit
-  // (Q4) for '-' and '&' with an empty left list. The pixels are identical
-  // unless a skipped subtree would have produced NaN/Inf or a fatal listing
-  // error (E57), which the original could not render either (docs/prime/deviations.md).
-  // false: do every piece of work the listing did (for ray counts and checks).
-  bool skipUnneededWork = true;
-  // Adaptive tree-depth control (thesis 2.4): a reflected or transmitted
-  // ray whose weight in the pixel (the product of the kSR*FSR or
-  // kST*FST*tT^sT factors above it, largest channel) falls below this is
-  // not cast. 0 = off (the listing).
-  double minWeight = 0.0;
-};
 
 class Tracer1991 {
  public:
@@ -75,6 +57,8 @@ class Tracer1991 {
   };
   bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                  int depth) const;
+  void childWeights(const SceneObject& obj, const Vec3& n, const Vec3& reflectedDir,
+                    const Rgb& surfColor, double sT, double& wR, double& wT) const;
   // The ray comes prepared for the primitives' box tests.
   TList objectList(const SceneObject& obj, const BoxRay& ray, TraceStats& stats, Probe* probe,
                    int depth) const;

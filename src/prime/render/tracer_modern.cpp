@@ -8,6 +8,7 @@
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/geom/uv_mapping_1991.h"
 #include "src/prime/math/listing_matrix.h"
+#include "src/prime/render/hall_modern.h"
 
 namespace prime {
 
@@ -29,6 +30,9 @@ Vec3 unit(const Vec3& v) {
 double clamp1(double x) {
   return std::clamp(x, -1.0, 1.0);
 }
+// Internal reflections inside one object before the light counts as trapped
+// (docs/prime/deviations.md N9); the 1991 profile's --tir-cap is its own.
+constexpr int kMaxInternalReflections = 64;
 double finiteOr0(double x) {
   return std::isfinite(x) ? x : 0.0;
 }
@@ -113,24 +117,30 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
   return po;
 }
 
-TracerModern::TracerModern(const Scene& scene, TraceOptions options)
+TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
     : scene_(scene), options_(options), bvh_(scene) {
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
   inverse_.reserve(scene.prims.size());
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
 }
 
-TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray,
-                                    TraceStats& stats) const {
+TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
+                                    Probe* probe, int depth) const {
   ++stats.objectTests;
   auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     ++stats.primitiveTests;
     const ScenePrim& p = scene_.prims[primNum];
     PrimHit in;
-    if (!intersectModern(p.type, transformRay(ray, inverse_[primNum]), in)) return std::nullopt;
+    const bool ok = intersectModern(p.type, transformRay(ray, inverse_[primNum]), in);
+    if (probe)
+      probe->primitive(depth, obj.number, primNum, p.type,
+                       ok ? std::optional<PrimHit>(in) : std::nullopt);
+    if (!ok) return std::nullopt;
     return in;
   };
-  return csgModern(obj.entries, leaf);
+  TList list = csgModern(obj.entries, leaf);
+  if (probe) probe->csgList(depth, obj.number, list);
+  return list;
 }
 
 // The hit point o + t d of `node` and a bound on its distance from the true
@@ -246,7 +256,8 @@ Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
   return po;
 }
 
-bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const {
+bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats, Probe* probe,
+                              int depth) const {
   double nearest = std::numeric_limits<double>::infinity();
   int bestObj = -1;
   TNode bestNode{};
@@ -256,11 +267,12 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
       PrimHit in;
-      if (!intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) ||
-          !(in.tOut > 0.0))
-        return;
+      const bool met =
+          intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) && in.tOut > 0.0;
+      if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
+      if (!met) return;
     }
-    const TList list = objectIntervals(obj, ray, stats);
+    const TList list = objectIntervals(obj, ray, stats, probe, depth);
     for (const TNode& node : list) {
       if (!(node.t > 0.0)) continue;  // behind the origin (or NaN)
       if (node.t < nearest || (node.t == nearest && k < bestObj)) {
@@ -292,7 +304,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
 // Refract into the object at the hit, walk to where the ray leaves it
 // (reflecting internally while beyond the critical angle), refract out.
 Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance,
-                           bool& through, TraceStats& stats) const {
+                           bool& through, TraceStats& stats, Probe* probe, int depth) const {
   distance = 0.0;
   through = false;
   const SceneObject& obj = scene_.objects[hit.obj];
@@ -302,15 +314,19 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   const double eta = hit.exitsObject ? indx : 1.0 / indx;
   const double cosI = clamp1(-dot(d, hit.normal));
   const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-  if (!(k >= 0.0)) return {};  // total internal reflection: nothing transmitted
+  auto report = [&](int steps, const Ray& leaving, std::string_view why) {
+    if (probe) probe->transmit(depth, obj.number, steps, distance, through, leaving, why);
+    return leaving;
+  };
+  if (!(k >= 0.0))  // total internal reflection: nothing transmitted
+    return report(0, {}, "total internal reflection at the surface: nothing transmitted");
   Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
   r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
-    return r;
+    return report(0, r, {});
   }
-  const int cap = options_.tirCap > 0 ? std::min(options_.tirCap, 64) : 64;
-  for (int step = 0; step < cap; ++step) {
+  for (int step = 0; step < kMaxInternalReflections; ++step) {
     const TList list = objectIntervals(obj, r, stats);
     const TNode* exit = nullptr;
     for (const TNode& node : list)
@@ -321,7 +337,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     if (!exit) {  // numerically outside already: leave as we are
       ++stats.emptyTransmitLists;
       through = true;
-      return r;
+      return report(step, r, {});
     }
     distance += exit->t;
     SurfaceHit at;
@@ -339,27 +355,38 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
     r.o = spawnOrigin(at, r.d);
     through = true;
-    return r;
+    return report(step + 1, r, {});
   }
   ++stats.cappedTirLoops;  // trapped: the light is absorbed
-  return {};
+  return report(kMaxInternalReflections, {}, "trapped by internal reflection: absorbed");
 }
 
-Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
+Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                           double weight) const {
   stats.countRay(kind);
   ray.d = unit(ray.d);
+  if (probe) probe->ray(depth, kind, ray);
   SurfaceHit hit;
-  if (!nearestHit(ray, hit, stats))
-    return {scene_.background[0], scene_.background[1], scene_.background[2]};
+  if (!nearestHit(ray, hit, stats, probe, depth)) {
+    if (probe) probe->miss(depth, scene_.background);
+    return scene_.background;
+  }
   ++stats.hits;
   const SceneObject& obj = scene_.objects[hit.obj];
   const ScenePrim& prim = scene_.prims[hit.prim];
+  if (probe)
+    probe->hit(depth, obj.number, hit.prim, prim.type, hit.t, hit.point, hit.local, hit.normal,
+               hit.fromInsidePrim);
   const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
   const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;
-  const SceneTexture& map = scene_.maps[prim.map[surface][hit.fromInsidePrim ? 1 : 0]];
+  const int mapNum = prim.map[surface][hit.fromInsidePrim ? 1 : 0];
+  const SceneTexture& map = scene_.maps[mapNum];
+  const double u = finiteOr0(uv.u), v = finiteOr0(uv.v);
   Rgb surfColor{};
-  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, finiteOr0(uv.u), finiteOr0(uv.v));
+  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, u, v);
+  if (probe)
+    probe->texture(depth, u, v, surface, uv.noFaceMatched, mapNum, map.uScale, map.vScale,
+                   surfColor);
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;
@@ -368,48 +395,24 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, RayKind kind,
   bool through = false;
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
-  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats);
+  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats, probe, depth);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
-      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, RayKind::Reflected,
+      iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, probe, RayKind::Reflected,
                     weight * std::abs(kSR));
     if (through && weight * std::abs(kST) >= options_.minWeight)
-      iST = castRay(transmitted, depth + 1, stats, RayKind::Transmitted, weight * std::abs(kST));
+      iST = castRay(transmitted, depth + 1, stats, probe, RayKind::Transmitted,
+                    weight * std::abs(kST));
   }
 
-  // Hall's sum with the light vector pointing AT the light (K10 fixed),
-  // clamped cosines and no negative base in pow (K10, X2).
-  const Vec3 v = -ray.d;  // towards the viewer
-  Rgb color{};
-  for (int c = 0; c < 3; ++c) {
-    double a = 0, b = 0, cd = 0, dd = 0;
-    for (const HallLight& light : lights_) {
-      const Vec3 l = unit(light.pt - hit.point);
-      const Vec3 hj = unit(l + v);
-      const double nl = dot(n, l);
-      const double iL = light.intensity[c];
-      const double nh = std::max(0.0, dot(n, hj));
-      a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
-      if (h.indx !=
-          1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), strongest along -n
-        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
-        const double nht = std::max(0.0, -dot(n, ht));
-        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
-             std::pow(nht, std::max(0.0, h.kTH));
-      }
-      cd += iL * std::max(0.0, nl);
-      dd += iL * std::max(0.0, -nl);
-    }
-    const double ia = scene_.ambient[c];
-    const double fDR = h.fDR[c], fDT = 1.0 - fDR;
-    const double cosR = clamp1(dot(n, refl));
-    const double sum =
-        kSR * a + kST * b + h.kDR * fDR * (ia + cd) + h.kDT * fDT * (ia + dd) +
-        kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR) +
-        kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
-    if (!std::isfinite(sum)) ++stats.nanColours;
-    color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
+  const HallHue hue{h.kDR, h.kDT, h.fDR, h.tT, h.kRH, h.kTH, h.indx};
+  const auto terms = hallTermsModern(hue, surfColor, iSR, iST, sT, hit.point, ray.d, n, refl,
+                                     lights_, scene_.ambient);
+  const Rgb color = hallColourModern(terms, stats.nanColours);
+  if (probe) {
+    probe->hallTerms(depth, terms);
+    probe->shade(depth, iSR, iST, sT, color);
   }
   return color;
 }

@@ -15,8 +15,9 @@
 #include <vector>
 
 #include "src/prime/render/hall_1991.h"
+#include "src/prime/render/probe.h"
+#include "src/prime/render/trace_options.h"
 #include "src/prime/render/trace_stats.h"
-#include "src/prime/render/tracer_1991.h"
 #include "src/prime/scene/object_bvh.h"
 #include "src/prime/scene/scene.h"
 
@@ -40,14 +41,19 @@ struct SurfaceHit {
 
 class TracerModern {
  public:
-  TracerModern(const Scene& scene, TraceOptions options = {});
+  TracerModern(const Scene& scene, RayTreeOptions options = {});
 
-  Rgb castRay(Ray ray, int depth, TraceStats& stats, RayKind kind = RayKind::Primary,
-              double weight = 1.0) const;
+  // With a probe, every ray, the tests of the objects the BVH visits (as a
+  // render visits them), the hit, texture, transmission and Hall's terms are
+  // recorded, as Tracer1991::castRay records the 1991 profile's.
+  Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
+              RayKind kind = RayKind::Primary, double weight = 1.0) const;
   // The nearest surface along the ray with t > 0, if any.
-  bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats) const;
+  bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats, Probe* probe = nullptr,
+                  int depth = 0) const;
   // The object's solid along the whole line of `ray` (sorted intervals).
-  TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats) const;
+  TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
+                        Probe* probe = nullptr, int depth = 0) const;
 
   const Scene& scene() const { return scene_; }
   // The object boxes every ray is tested against first (the BVH's).
@@ -56,9 +62,9 @@ class TracerModern {
  private:
   void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
   Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
-               TraceStats& stats) const;
+               TraceStats& stats, Probe* probe, int depth) const;
   const Scene& scene_;
-  TraceOptions options_;
+  RayTreeOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
   std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform

@@ -1,0 +1,67 @@
+#include "src/prime/render/hall_modern.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace prime {
+
+namespace {
+
+Vec3 unit(const Vec3& v) {
+  const double l = std::sqrt(dot(v, v));
+  return l > 0 ? v * (1.0 / l) : v;
+}
+
+}  // namespace
+
+std::array<HallTerms, 3> hallTermsModern(const HallHue& h, const Rgb& surfColor, const Rgb& iSR,
+                                         const Rgb& iST, double sT, const Vec3& point,
+                                         const Vec3& view, const Vec3& n, const Vec3& refl,
+                                         std::span<const HallLight> lights, const Rgb& ambient) {
+  const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
+  const Vec3 v = -view;  // towards the viewer
+  std::array<HallTerms, 3> terms{};
+  for (int c = 0; c < 3; ++c) {
+    double a = 0, b = 0, cd = 0, dd = 0;
+    for (const HallLight& light : lights) {
+      const Vec3 l = unit(light.pt - point);
+      const Vec3 hj = unit(l + v);
+      const double nl = dot(n, l);
+      const double iL = light.intensity[c];
+      const double nh = std::max(0.0, dot(n, hj));
+      a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
+      if (h.indx != 1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), along -n
+        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
+        const double nht = std::max(0.0, -dot(n, ht));
+        b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
+             std::pow(nht, std::max(0.0, h.kTH));
+      }
+      cd += iL * std::max(0.0, nl);
+      dd += iL * std::max(0.0, -nl);
+    }
+    const double ia = ambient[c];
+    const double fDR = h.fDR[c], fDT = 1.0 - fDR;
+    const double cosR = std::clamp(dot(n, refl), -1.0, 1.0);
+    HallTerms& t = terms[static_cast<std::size_t>(c)];
+    t.specularReflection = kSR * a;
+    t.specularTransmission = kST * b;
+    t.diffuseReflection = h.kDR * fDR * (ia + cd);
+    t.diffuseTransmission = h.kDT * fDT * (ia + dd);
+    t.reflected = kSR * iSR[c] * fsrFromCos1991(surfColor[c], ia, cosR);
+    t.transmitted =
+        kST * iST[c] * (1.0 - fsrFromCos1991(surfColor[c], ia, 1.0)) * std::pow(h.tT, sT);
+  }
+  return terms;
+}
+
+Rgb hallColourModern(const std::array<HallTerms, 3>& terms, std::uint64_t& nonFinite) {
+  Rgb color{};
+  for (int c = 0; c < 3; ++c) {
+    const double sum = terms[static_cast<std::size_t>(c)].sum();
+    if (!std::isfinite(sum)) ++nonFinite;
+    color[c] = std::isfinite(sum) ? std::clamp(sum, 0.0, 0.999999) : 0.0;
+  }
+  return color;
+}
+
+}  // namespace prime
