@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
-"""Writes the Malone scenes of scenes/malone/ that this port adds (the
-document's own examples are typed in verbatim, see scenes/malone/README.md).
+"""Writes the Malone scenes of scenes/malone/: the port's own, and the
+document's examples of section 2, each verbatim inside a small scene (a
+viewer, a light, a surface) of this port's. The document's complete scene of
+section 1.2 (doc-scene.mal) is typed in by hand, verbatim, and not written
+here.
 
 Malone's input language has no comments (the strict reading), so the scenes
 are written by this script, which says what each number is. With --check it
@@ -248,6 +251,41 @@ def mesh():
     return s
 
 
+# The examples of section 2 of the document, verbatim (the triangle's and the
+# parallelogram's leading spaces included), each in a small scene of its own:
+# (ID, the example's lines, eye, look-at, light, surface).
+DOC_EXAMPLES = {
+    "doc-sphere.mal": (1, ["1", "0 0 0"], [0, 0.5, 5], [0, 0, 0], [4, 4, 6],
+                       Scene.surf([0.9, 0.3, 0.2], 0.5, 20, 0.8)),
+    "doc-plane.mal": (2, ["5", "0 0 1"], [3, -3, 12], [3, 4, 5], [6, 8, 10],
+                      Scene.surf([0.2, 0.7, 0.3], 0, 1, 0.9)),
+    "doc-disk.mal": (3, ["1 1 1", "4 3 -1", "2.5"], [13, 10, -2], [1, 1, 1], [9, 4, 6],
+                     Scene.surf([0.3, 0.5, 0.9], 0.3, 30, 0.8)),
+    "doc-annulus.mal": (4, ["1 1 1", "4 3 -1", "4 0.23"], [17, 13, -3], [1, 1, 1], [12, 6, 8],
+                        Scene.surf([0.9, 0.8, 0.2], 0.3, 30, 0.8)),
+    "doc-triangle.mal": (5, ["1 0 0", " 0 1 0", " 0 0 1"], [2, 2, 2], [0.33, 0.33, 0.33],
+                         [3, 4, 2], Scene.surf([0.9, 0.4, 0.1], 0, 1, 0.9)),
+    "doc-parallelogram.mal": (6, ["1 1 0", " 0 -1 0", " 0 0 -1"], [4, 0.5, -0.5], [1, 0.5, -0.5],
+                              [5, 3, 1], Scene.surf([0.2, 0.5, 0.9], 0, 1, 0.9)),
+    "doc-ellipsoid.mal": (7, ["", "0 0 0", "1 0 0", "0 2 0", "0 0 2", "1", "0.5", "0 0.5 0", ""],
+                          [3, 1.5, 4], [0, 1, 0], [4, 4, 6],
+                          Scene.surf([0.3, 0.8, 0.4], 0.5, 20, 0.8)),
+    "doc-cone.mal": (8, ["0.9", "0 2", "0 2 0", "0 -5 0"], [14, 0, 14], [0, -3, 0], [8, 6, 8],
+                     Scene.surf([0.8, 0.6, 0.2], 0.4, 40, 0.8)),
+    "doc-cylinder.mal": (9, ["0.5", "0 10", "0 2 0", "0 -1 0"], [12, 0, 12], [0, -3, 0], [6, 6, 8],
+                         Scene.surf([0.5, 0.8, 0.9], 0.4, 40, 0.8)),
+}
+
+
+def doc_example(pid, example, eye, look, light, surface):
+    s = Scene()
+    s.viewer(eye, look, 40, 256, 256)
+    s.light(light, [60, 60, 60])
+    s.ambient([0.1, 0.1, 0.1])
+    s.lines += [str(pid)] + example + surface
+    return s
+
+
 SCENES = {
     "primitives.mal": primitives,
     "lights.mal": lights,
@@ -262,7 +300,10 @@ SCENES = {
 def main():
     check = "--check" in sys.argv[1:]
     status = 0
-    for name, make in SCENES.items():
+    makers = dict(SCENES)
+    for name, args in DOC_EXAMPLES.items():
+        makers[name] = lambda args=args: doc_example(*args)
+    for name, make in makers.items():
         text = make().text()
         path = os.path.join(OUT, name)
         if check:

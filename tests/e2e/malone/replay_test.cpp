@@ -1,0 +1,182 @@
+// End-to-end replay of every Malone scene (scenes/malone/*.mal) with the real
+// `prime`: the picture must be the golden one pixel for pixel
+// (tests/golden/malone/<scene>.png, each looked at and checked by hand before
+// it was committed: tests/golden/malone/README.md), the same for any thread
+// count, and a bad scene must exit 1 and leave no picture behind.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "palette/png_image.h"
+
+namespace fs = std::filesystem;
+
+namespace prime {
+namespace {
+
+const fs::path kScenes = MALONE_SCENES;
+const fs::path kGolden = MALONE_GOLDEN;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = fs::temp_directory_path() / ("prime-malone-" + std::to_string(rd()));
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+struct PrimeRun {
+  int status = 0;
+  std::string output;
+};
+
+PrimeRun prime(const std::string& args, const fs::path& dir) {
+  const fs::path log = dir / "log.txt";
+  const std::string command = std::string(PRIME_EXE) + " " + args + " > " + log.string() + " 2>&1";
+  const int raw = std::system(command.c_str());
+  PrimeRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(log);
+  std::ostringstream text;
+  text << in.rdbuf();
+  r.output = text.str();
+  return r;
+}
+
+std::vector<std::string> scenes() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(kScenes))
+    if (e.path().extension() == ".mal") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// How many pixels differ, and where the first one is.
+std::string compare(const Image8& got, const Image8& want) {
+  if (got.width != want.width || got.height != want.height)
+    return "size " + std::to_string(got.width) + "x" + std::to_string(got.height) + ", golden " +
+           std::to_string(want.width) + "x" + std::to_string(want.height);
+  long differ = 0, first = -1;
+  for (std::size_t i = 0; i < got.rgb.size(); i += 3)
+    if (got.rgb[i] != want.rgb[i] || got.rgb[i + 1] != want.rgb[i + 1] ||
+        got.rgb[i + 2] != want.rgb[i + 2]) {
+      if (first < 0) first = static_cast<long>(i / 3);
+      ++differ;
+    }
+  if (differ == 0) return "";
+  return std::to_string(differ) + " pixels differ, the first at (" +
+         std::to_string(first % got.width) + ", " + std::to_string(first / got.width) + ")";
+}
+
+class MaloneReplay : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MaloneReplay, RendersTheGoldenPicture) {
+  const std::string scene = GetParam();
+  const fs::path golden = kGolden / (scene + ".png");
+  ASSERT_TRUE(fs::exists(golden)) << "no golden for scenes/malone/" << scene
+                                  << ".mal: add it (tests/golden/malone/README.md)";
+  TempDir dir;
+  const fs::path png = dir.path() / "out.png", ppm = dir.path() / "out.ppm";
+  const PrimeRun r =
+      prime("trace " + (kScenes / (scene + ".mal")).string() + " --no-window -q --png " +
+                png.string() + " --ppm " + ppm.string() + " --threads 2",
+            dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image8 got = readPng(png.string()), want = readPng(golden.string());
+  EXPECT_EQ(compare(got, want), "") << scene;
+  // The PPM holds the same bytes as the PNG, after its P6 header.
+  std::ifstream in(ppm, std::ios::binary);
+  const std::vector<char> bytes{std::istreambuf_iterator<char>(in),
+                                std::istreambuf_iterator<char>()};
+  const std::string header =
+      "P6\n" + std::to_string(got.width) + " " + std::to_string(got.height) + "\n255\n";
+  ASSERT_EQ(bytes.size(), header.size() + got.rgb.size());
+  EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + static_cast<long>(header.size())), header);
+  EXPECT_TRUE(std::equal(got.rgb.begin(), got.rgb.end(),
+                         reinterpret_cast<const unsigned char*>(bytes.data()) + header.size()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, MaloneReplay, ::testing::ValuesIn(scenes()), [](const auto& info) {
+  std::string n = info.param;
+  for (char& c : n)
+    if (c == '-') c = '_';
+  return n;
+});
+
+TEST(MaloneReplay, TheSameBytesForAnyThreadCount) {
+  TempDir dir;
+  std::vector<std::vector<std::uint8_t>> pictures;
+  for (int threads : {1, 2, 3}) {
+    const fs::path out = dir.path() / ("t" + std::to_string(threads) + ".ppm");
+    const PrimeRun r =
+        prime("trace " + (kScenes / "glass.mal").string() + " --no-window -q --ppm " +
+                  out.string() + " --threads " + std::to_string(threads),
+              dir.path());
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::ifstream in(out, std::ios::binary);
+    pictures.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  EXPECT_EQ(pictures[0], pictures[1]);
+  EXPECT_EQ(pictures[0], pictures[2]);
+}
+
+// The document's own scene (section 1.2), by hand: the centre pixel's ray
+// (alpha = beta = 0) from (0,2,3) towards the origin meets the plane y = 0 at
+// the origin; the light at (-2,5,2) is l = sqrt(33) away, d.s = 5/sqrt(33);
+// k_s = 0, no ambient: 1 * 1 * (5/sqrt(33)) / 33 = 0.026376, byte
+// round(6.726) = 7.
+TEST(MaloneReplay, TheDocumentsSceneCentrePixelByHand) {
+  const Image8 want = readPng((kGolden / "doc-scene.png").string());
+  const std::size_t at = (static_cast<std::size_t>(128) * want.width + 128) * 3;
+  EXPECT_EQ(want.rgb[at], 7);
+  EXPECT_EQ(want.rgb[at + 1], 7);
+  EXPECT_EQ(want.rgb[at + 2], 7);
+}
+
+TEST(MaloneReplay, ABadSceneExitsOneAndWritesNothing) {
+  TempDir dir;
+  const fs::path scene = dir.path() / "bad.mal", out = dir.path() / "out.ppm";
+  std::ofstream(scene) << "102 0 2 3 0 0 0 1 0 0 0 1 0 64 64\n1 0.5 0 0\n";  // ends inside a sphere
+  const PrimeRun r =
+      prime("trace " + scene.string() + " --no-window --ppm " + out.string(), dir.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("bad.mal:2:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("sphere, field centre z"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("end of file"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(MaloneReplay, TheFormatIsDetectedOrNamed) {
+  TempDir dir;
+  // A Malone scene under a name that says nothing, and --format malone.
+  const fs::path scene = dir.path() / "scene.txt";
+  fs::copy_file(kScenes / "doc-scene.mal", scene);
+  const PrimeRun a = prime("trace " + scene.string() + " --no-window -q", dir.path());
+  EXPECT_EQ(a.status, 0) << a.output;
+  const PrimeRun b =
+      prime("trace --format malone " + scene.string() + " --no-window -q", dir.path());
+  EXPECT_EQ(b.status, 0) << b.output;
+  const PrimeRun probe = prime("probe " + scene.string() + " --pixel 128 128", dir.path());
+  EXPECT_EQ(probe.status, 0) << probe.output;
+  EXPECT_NE(probe.output.find("bytes 7 7 7"), std::string::npos) << probe.output;
+}
+
+}  // namespace
+}  // namespace prime
