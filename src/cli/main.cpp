@@ -14,7 +14,7 @@
 
 namespace {
 
-// `prime trace` and `prime probe` serve every system: the scene says which.
+// `prime trace`, `probe` and `bench` serve every system: the scene says which.
 // --format names it; otherwise a directory is a PRIME scene and a file is
 // read for what it is (a stream of numbers: Malone's). Returns the
 // subcommand that handles it.
@@ -40,7 +40,9 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
         return prime::malone::looksLikeMalone(head);
       }());
   if (!malone) return command;
-  return command == "trace" ? prime::cli::malone::kTraceCommand : prime::cli::malone::kProbeCommand;
+  if (command == "trace") return prime::cli::malone::kTraceCommand;
+  if (command == "probe") return prime::cli::malone::kProbeCommand;
+  return prime::cli::malone::kBenchCommand;
 }
 
 }  // namespace
@@ -48,7 +50,8 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
 int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   std::string routed;
-  if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe")) {
+  if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe" ||
+                    std::string(argv[1]) == "bench")) {
     routed = commandFor(argv[1], argc, argv);
     args[1] = routed.data();
   }
@@ -69,6 +72,7 @@ int main(int argc, char** argv) {
   prime::cli::addStressCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
+  prime::cli::malone::addBenchCommand(app, action);
   CLI11_PARSE(app, argc, args.data());
   try {
     return action ? action() : 0;

@@ -180,3 +180,25 @@ TEST(MaloneReplay, TheFormatIsDetectedOrNamed) {
 
 }  // namespace
 }  // namespace prime
+
+namespace prime {
+namespace {
+
+TEST(MaloneBench, TimesAMaloneScene) {
+  TempDir dir;
+  const fs::path csv = dir.path() / "bench.csv";
+  const PrimeRun r = prime("bench " + (kScenes / "doc-sphere.mal").string() +
+                               " --runs 1 --threads 1 --csv " + csv.string(),
+                           dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("doc-sphere.mal"), std::string::npos) << r.output;
+  std::ifstream in(csv);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_EQ(header, "scene,pixels,read_ms,build_ms,cpu_s_1,wall_s_1,rays,primitive_tests");
+  EXPECT_NE(row.find(",65536,"), std::string::npos) << row;  // 256 x 256 pixels
+}
+
+}  // namespace
+}  // namespace prime
