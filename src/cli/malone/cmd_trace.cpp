@@ -12,6 +12,7 @@
 #include "src/cli/live_render.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
+#include "src/cli/view_8514.h"
 
 namespace prime::cli::malone {
 
@@ -56,11 +57,15 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<MaloneOptions>();
   auto ppm = std::make_shared<std::string>();
   auto png = std::make_shared<std::string>();
+  auto png8514 = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
   auto live = std::make_shared<LiveOptions>();
   addMaloneOptions(cmd, *o);
   cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did");
   cmd->add_option("--png", *png, "Write the picture as PNG (the same bytes as the PPM)");
+  cmd->add_option("--png-8514", *png8514,
+                  "Write the picture as PRIME's IBM 8514/A (1991) would have shown it: ColorNum's "
+                  "fixed 256-colour palette");
   cmd->add_flag("--no-window", live->noWindow, "Do not open a window (also without a DISPLAY)");
   cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
   cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
@@ -110,6 +115,10 @@ void addTraceCommand(CLI::App& app, Action& action) {
       if (!png->empty()) {
         writePng(*png, toImage8(result.raster));
         written += (written.empty() ? ": " : ", ") + *png;
+      }
+      if (!png8514->empty()) {
+        write8514Png(*png8514, result.raster);
+        written += (written.empty() ? ": " : ", ") + *png8514;
       }
       if (!*quiet) printSummary(result, written);
       std::fflush(stdout);

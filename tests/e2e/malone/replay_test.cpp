@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -198,6 +199,32 @@ TEST(MaloneBench, TimesAMaloneScene) {
   std::getline(in, row);
   EXPECT_EQ(header, "scene,pixels,read_ms,build_ms,cpu_s_1,wall_s_1,rays,primitive_tests");
   EXPECT_NE(row.find(",65536,"), std::string::npos) << row;  // 256 x 256 pixels
+}
+
+}  // namespace
+}  // namespace prime
+
+namespace prime {
+namespace {
+
+TEST(MaloneView8514, ThePictureThroughPrimesPalette) {
+  TempDir dir;
+  const fs::path png = dir.path() / "p.png", view = dir.path() / "v.png";
+  const PrimeRun r =
+      prime("trace " + (kScenes / "doc-sphere.mal").string() + " --no-window -q --png " +
+                png.string() + " --png-8514 " + view.string(),
+            dir.path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Image8 truecolour = readPng(png.string()), shown = readPng(view.string());
+  EXPECT_EQ(shown.width, truecolour.width);
+  EXPECT_EQ(shown.height, truecolour.height);
+  // 256 colours at most, and not the true-colour picture.
+  std::set<std::uint32_t> colours;
+  for (std::size_t i = 0; i < shown.rgb.size(); i += 3)
+    colours.insert(static_cast<std::uint32_t>(shown.rgb[i]) << 16 | shown.rgb[i + 1] << 8 |
+                   shown.rgb[i + 2]);
+  EXPECT_LE(colours.size(), 256u);
+  EXPECT_NE(shown.rgb, truecolour.rgb);
 }
 
 }  // namespace
