@@ -339,6 +339,22 @@ TEST(MaloneCone, RayAlongAGenerator) {
   EXPECT_NEAR(*t, sHit, 1e-9);
 }
 
+TEST(MaloneCone, ApexNormalIsFinite) {
+  // A ray through the apex (0,2,0) from outside: q = o - c = -t0 d makes the
+  // quadratic (t - t0)^2 (alpha^2 - (d.a)^2): a double root at the apex, range
+  // parameter 0, accepted. There w = x - c = 0 and no normal is defined; the
+  // one returned must still be a unit vector (a NaN would blacken the pixel).
+  const Scene s = sceneOf("8 0.9 0 2 0 2 0 0 -5 0" + test::kSurface);
+  const MRay ray = rayOf({5, 2, 0}, {-1, 0, 0});
+  const auto t = hitT(s, ray);
+  ASSERT_TRUE(t.has_value());
+  EXPECT_NEAR(*t, 5, 1e-6);  // a double root: about sqrt(machine epsilon) * 5
+  // Exactly at the apex: -u = (0,1,0) (a point of the other nappe's axis side).
+  const Vec3 n = normal(s, s.primitives[0], Vec3{0, 2, 0});
+  EXPECT_NEAR(dot(n, n), 1, 1e-12);
+  expectVecNear(n, {0, 1, 0});
+}
+
 // ---- Cylinder (section 2.8): the document's radius 0.5, range 0 10, point
 // (0,2,0), axis (0,-1,0): y from 2 down to -8.
 
