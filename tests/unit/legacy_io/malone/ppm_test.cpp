@@ -1,5 +1,5 @@
 // raster2ppm (legacy_io/malone/ppm.h): the P6 header and bytes, the byte
-// rule round(255 * clamp(v, 0, 1)) (MAL-Q7), and a write/read round trip.
+// rule round(255 * clamp(v, 0, 1)) (notes section 3.3), and a write/read round trip.
 #include "legacy_io/malone/ppm.h"
 
 #include <gtest/gtest.h>
