@@ -359,6 +359,22 @@ TEST(MaloneTracer, EscapedRaysAreBlack) {
   EXPECT_EQ(stats.shadowRays, 0u);
 }
 
+TEST(MaloneTracer, EqualTKeepsTheEarlierObject) {
+  // Two coincident unit spheres, red then green, lit only by ambient 1: both
+  // are hit at t = 4; the earlier in the file wins (notes 2.10), with the BVH
+  // and with the linear search alike.
+  const std::string red = "1 1 0 0 0 100 1 0 0 0 1 1 0 1\n",
+                    green = "1 1 0 0 0 100 0 1 0 0 1 1 0 1\n";
+  for (bool linear : {false, true}) {
+    TraceSettings settings;
+    settings.linearSearch = linear;
+    TraceStats stats;
+    const MRay ray = rayOf({0, 0, 5}, {0, 0, -1});
+    expectRgb(traceOnce(sceneOf(red + green + "103 1 1 1\n"), ray, stats, settings), {1, 0, 0});
+    expectRgb(traceOnce(sceneOf(green + red + "103 1 1 1\n"), ray, stats, settings), {0, 1, 0});
+  }
+}
+
 // ---- The debug renders (notes 5.2): no lights, no recursion.
 
 TEST(MaloneDebug, DepthColourNormal) {
