@@ -262,10 +262,12 @@ class Reader {
     const double v = std::strtod(begin, &end);
     if (end == begin || static_cast<std::size_t>(end - begin) != word.size())
       throw io::InputError(where, what(), "a number", shown(word));
-    if (!std::isfinite(v)) throw io::InputError(where, what(), "a finite number", shown(word));
+    // Overflow first: strtod returns HUGE_VAL for 1e309, which is not finite
+    // either, and the message should say why.
     if (errno == ERANGE && std::fabs(v) > 1.0)
       throw io::InputError(where, what(), "a number within the range of a double",
                            shown(word) + " (out of range)");
+    if (!std::isfinite(v)) throw io::InputError(where, what(), "a finite number", shown(word));
     return v;
   }
 

@@ -206,7 +206,8 @@ Vec3 normal(const Scene& scene, const Primitive& p, const Vec3& x) {
       // n = w - (|w|^2 / (w.a)) a, outward on both nappes (MAL-E4).
       const Vec3 w = x - p.c;
       const double wa = dot(w, p.u);
-      if (wa == 0.0) return unit(w);
+      // At the apex itself (w = 0) no normal is defined: -u, not 0/0 = NaN.
+      if (wa == 0.0) return dot(w, w) > 0 ? unit(w) : p.u * -1.0;
       return unit(w - p.u * (dot(w, w) / wa));
     }
     case ObjectId::Cylinder: {

@@ -108,11 +108,14 @@ int solveQuartic(double a, double b, double c, double d, std::array<double, 4>& 
     long double slope = 0;
     const long double f = quarticAt(x, a, b, c, d, slope);
     // A root of the closed form that polishing could not bring near zero is
-    // an artefact of a negative discriminant lost to rounding: dropped.
-    const long double scale =
-        1 + std::fabs((long double)x) *
-                (std::fabs(a) + std::fabs((long double)x) * (std::fabs(b) + std::fabs(c)));
-    if (!std::isfinite(x) || std::fabs(f) > 1e-6L * scale * (1 + std::fabs(d))) continue;
+    // an artefact of a negative discriminant lost to rounding: dropped. Near
+    // zero means within what the rounding of the double coefficients allows
+    // at x: a small multiple of eps * sum |coefficient| |x|^i (a bound that
+    // grew with |d| let points far off the torus through on grazing rays).
+    const long double ax = std::fabs((long double)x);
+    const long double bound =
+        (((ax + std::fabs(a)) * ax + std::fabs(b)) * ax + std::fabs(c)) * ax + std::fabs(d);
+    if (!std::isfinite(x) || std::fabs(f) > 1e-10L * bound) continue;
     roots[kept++] = x;
   }
   std::sort(roots.begin(), roots.begin() + kept);
