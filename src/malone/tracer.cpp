@@ -139,6 +139,54 @@ Rgb Tracer::debugValue(const MRay& ray, TraceStats& stats) const {
   return {0, 0, 0};
 }
 
+// Phong as written (section 1.7): I_a k_d c for the ambient light, and for
+// every light sample the surface faces and no object blocks,
+// I (k_d c (d.s) + k_s' (r.s)^k_e) / l^2 (without / l^2 for 104); the
+// specular term only where r.s > 0 (MAL-E9).
+Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
+                         TraceStats& stats, std::string* probe, const std::string& indent) const {
+  Rgb colour{0, 0, 0};
+  if (settings_.ambient && scene_.hasAmbient)
+    for (int k = 0; k < 3; ++k) colour[k] += scene_.ambient[k] * s.kd[k];
+
+  for (const LightSample& light : scene_.lights) {
+    const Vec3 toLight = light.position - x;
+    const double l = length(toLight);
+    if (!(l > 0)) continue;
+    const Vec3 sdir = toLight * (1.0 / l);
+    const double ds = dot(df, sdir);
+    if (!(ds > 0)) continue;  // the surface does not face the light
+    if (settings_.shadows) {
+      ++stats.shadowRays;
+      MRay shadow;
+      shadow.o = x;
+      shadow.d = sdir;
+      shadow.length = l;
+      if (blocked(shadow, stats)) {
+        if (probe)
+          *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
+                    vec(light.position) + ": shadowed\n";
+        continue;
+      }
+    }
+    const double rs = dot(r, sdir);
+    const double spec = settings_.specular && rs > 0 && ks > 0 ? ks * std::pow(rs, s.ke) : 0.0;
+    const double falloff = light.inverseSquare ? 1.0 / (l * l) : 1.0;
+    Rgb add{};
+    for (int k = 0; k < 3; ++k) {
+      const double diffuse = settings_.diffuse ? s.kd[k] * ds : 0.0;
+      add[k] = light.rgb[k] * (diffuse + spec) * falloff;
+      colour[k] += add[k];
+    }
+    if (probe)
+      *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
+                vec(light.position) + ": d.s = " + fmt("%.6g", ds) + ", r.s = " + fmt("%.6g", rs) +
+                ", l = " + fmt("%.6g", l) + ", adds " + vec(add) + "\n";
+  }
+
+  return colour;
+}
+
 Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
                   std::string* probe) const {
   std::string indent;  // the probe's only: no allocation on a plain render
@@ -196,43 +244,8 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
   // r = i - 2 (i.d) d (the printed sign corrected, MAL-E1).
   const Vec3 r = i - df * (2 * dot(i, df));
 
-  if (settings_.ambient && scene_.hasAmbient)
-    for (int k = 0; k < 3; ++k) colour[k] += scene_.ambient[k] * s.kd[k];
-
-  for (const LightSample& light : scene_.lights) {
-    const Vec3 toLight = light.position - x;
-    const double l = length(toLight);
-    if (!(l > 0)) continue;
-    const Vec3 sdir = toLight * (1.0 / l);
-    const double ds = dot(df, sdir);
-    if (!(ds > 0)) continue;  // the surface does not face the light
-    if (settings_.shadows) {
-      ++stats.shadowRays;
-      MRay shadow;
-      shadow.o = x;
-      shadow.d = sdir;
-      shadow.length = l;
-      if (blocked(shadow, stats)) {
-        if (probe)
-          *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
-                    vec(light.position) + ": shadowed\n";
-        continue;
-      }
-    }
-    const double rs = dot(r, sdir);
-    const double spec = settings_.specular && rs > 0 && ks > 0 ? ks * std::pow(rs, s.ke) : 0.0;
-    const double falloff = light.inverseSquare ? 1.0 / (l * l) : 1.0;
-    Rgb add{};
-    for (int k = 0; k < 3; ++k) {
-      const double diffuse = settings_.diffuse ? s.kd[k] * ds : 0.0;
-      add[k] = light.rgb[k] * (diffuse + spec) * falloff;
-      colour[k] += add[k];
-    }
-    if (probe)
-      *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
-                vec(light.position) + ": d.s = " + fmt("%.6g", ds) + ", r.s = " + fmt("%.6g", rs) +
-                ", l = " + fmt("%.6g", l) + ", adds " + vec(add) + "\n";
-  }
+  const Rgb local = illumination(s, x, df, r, ks, stats, probe, indent);
+  for (int k = 0; k < 3; ++k) colour[k] += local[k];
 
   if (ks > 0 && settings_.reflection) {
     if (depth + 1 > settings_.maxDepth) {

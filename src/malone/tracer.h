@@ -63,6 +63,8 @@ class Tracer {
   Hit nearest(const MRay& ray, TraceStats& stats) const;
   bool blocked(const MRay& ray, TraceStats& stats) const;
   Rgb debugValue(const MRay& ray, TraceStats& stats) const;
+  Rgb illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
+                   TraceStats& stats, std::string* probe, const std::string& indent) const;
 
   const Scene& scene_;
   TraceSettings settings_;
