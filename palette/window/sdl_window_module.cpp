@@ -34,6 +34,17 @@ class SdlWindow final : public WindowBackend {
       why = std::string("SDL cannot start video: ") + SDL_GetError();
       return nullptr;
     }
+    // A DISPLAY that names no X server makes SDL fall back to a driver whose
+    // windows nobody can see (offscreen, dummy): a render would then wait
+    // for an Esc no one can press. Only a visible window will do.
+    const char* driver = SDL_GetCurrentVideoDriver();
+    const std::string name = driver != nullptr ? driver : "";
+    if (name.empty() || name == "offscreen" || name == "dummy" || name == "evdev") {
+      why = "no visible window: SDL's video driver is '" + name +
+            "' (does DISPLAY or WAYLAND_DISPLAY name a running display server?)";
+      SDL_Quit();
+      return nullptr;
+    }
     // The window surface in plain system memory (X11: shared-memory images),
     // not a GPU texture: exact pixels, no GL context (under Xvfb that would
     // be llvmpipe taking CPU from the render), and no re-creation of the

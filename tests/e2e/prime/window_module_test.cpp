@@ -30,14 +30,13 @@ Outcome run(const std::vector<std::string>& argv, std::map<std::string, std::str
   // For the ASan run: SDL's third-party leaks, if SDL gets as far as
   // starting (window_xvfb_test.cpp, tests/support/lsan-sdl.supp).
   const char* lsan = std::getenv("LSAN_OPTIONS");
-  env.emplace("LSAN_OPTIONS",
-              (lsan && *lsan ? std::string(lsan) + ":" : "") + "suppressions=" +
-                  (fs::path(PRIME_TEST_SUPPORT) / "lsan-sdl.supp").string() +
-                  ":print_suppressions=0");
+  env.emplace("LSAN_OPTIONS", (lsan && *lsan ? std::string(lsan) + ":" : "") + "suppressions=" +
+                                  (fs::path(PRIME_TEST_SUPPORT) / "lsan-sdl.supp").string() +
+                                  ":print_suppressions=0");
   env.emplace("WAYLAND_DISPLAY", "");
   env.emplace("PRIME_WINDOW_MODULE", "");  // unless a test sets it
   ChildProcess p(argv, env);
-  const auto status = p.wait(120000);
+  const auto status = p.wait(60000);  // nullopt (-1) if it hangs
   return {status.value_or(-1), p.out(), p.err()};
 }
 
@@ -145,3 +144,21 @@ TEST(WindowModule, AModuleThatCannotBeLoadedMeansHeadlessAndSaysWhy) {
 }
 
 }  // namespace
+
+// A DISPLAY that names no X server (everyday over ssh and in containers)
+// made SDL fall back to a driver whose windows nobody sees (offscreen), and
+// the render then waited for an Esc nobody could press. Only a visible
+// window may wait: otherwise prime says why and runs headless.
+TEST(WindowModule, AStaleDisplayNeverWaitsForAnInvisibleWindow) {
+  prime::test::TempScene s;
+  sphere(s);
+  ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}, {}).status, 0);
+  for (const std::string driver : {"offscreen", ""}) {  // named, and SDL's own fallback
+    std::map<std::string, std::string> env{{"DISPLAY", ":65533"}, {"SDL_VIDEODRIVER", driver}};
+    const Outcome r = run({PRIME_EXE, "trace", s.path().string(), "--screen", "64", "48"}, env);
+    ASSERT_EQ(r.status, 0) << "driver '" << driver << "': " << r.err;  // -1: it hung
+    EXPECT_THAT(r.err, HasSubstr("prime: running headless (")) << driver;
+    EXPECT_THAT(r.err, Not(HasSubstr("drawing in window"))) << driver;
+    EXPECT_THAT(r.out, HasSubstr("traced ")) << driver;
+  }
+}
