@@ -1,6 +1,7 @@
 // prime: the command-line front end. Every error a user can cause (bad scene
 // data, missing files) is reported on stderr as "prime: <file:line: ...>" with
 // exit status 1; usage errors exit with CLI11's status (106 and friends).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -45,10 +46,51 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
   return prime::cli::malone::kBenchCommand;
 }
 
+// Edit distance, for "did you mean".
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The visible subcommand nearest to `word`, if it is near enough.
+std::string nearestCommand(const CLI::App& app, const std::string& word) {
+  std::string best;
+  std::size_t bestDistance = 3;
+  for (const CLI::App* sub :
+       app.get_subcommands([](const CLI::App* a) { return !a->get_group().empty(); })) {
+    const std::size_t d = distance(word, sub->get_name());
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = sub->get_name();
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
+  // `prime help CMD` is `prime CMD --help`.
+  std::string helpFlag = "--help";
+  if (argc >= 3 && std::string(argv[1]) == "help") {
+    args.erase(args.begin() + 1);
+    args.push_back(helpFlag.data());
+    argv = args.data();
+    argc = static_cast<int>(args.size());
+  } else if (argc == 2 && std::string(argv[1]) == "help") {
+    args[1] = helpFlag.data();
+  }
   std::string routed;
   if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe" ||
                     std::string(argv[1]) == "bench")) {
@@ -73,7 +115,27 @@ int main(int argc, char** argv) {
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
-  CLI11_PARSE(app, argc, args.data());
+  app.set_version_flag("--version",
+                       std::string("prime ") + PRIME_VERSION + " (PRIME 1991, Malone 1995)");
+  try {
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Usage errors: one line with the prime: prefix, exit status 2.
+    // The command as the user typed it (not the system's subcommand it went to).
+    const std::string first = argc > 1 ? argv[1] : "";
+    if (!first.empty() && first[0] != '-' && app.get_subcommands().empty()) {
+      const std::string near = nearestCommand(app, first);
+      std::cerr << "prime: unknown command '" << first << "'"
+                << (near.empty() ? "" : " - did you mean '" + near + "'?")
+                << " (prime --help lists the commands)\n";
+      return 2;
+    }
+    std::cerr << "prime: " << e.what() << " (prime " << (first.empty() ? "" : first + " ")
+              << "--help)\n";
+    return 2;
+  }
   try {
     return action ? action() : 0;
   } catch (const prime::io::InputError& e) {

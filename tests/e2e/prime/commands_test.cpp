@@ -1,11 +1,11 @@
 // The `prime` commands as a user runs them: exit codes and messages.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 #include "tests/support/temp_scene.h"
 
@@ -43,7 +43,8 @@ TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
   r = prime("trace --model " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("traced 350 x 769 pixels (graph file header 349 x 768)"));
-  EXPECT_THAT(r.output, HasSubstr("rays: 356330 (primary 269150, reflected 43590, transmitted 43590)"));
+  EXPECT_THAT(r.output,
+              HasSubstr("rays: 356330 (primary 269150, reflected 43590, transmitted 43590)"));
   EXPECT_TRUE(s.exists("graph_scr"));
 }
 
@@ -79,7 +80,8 @@ TEST(PrimeCommand, VectorOptionsMayComeBeforeTheDirectory) {
   // the positional argument, not a fifth number.
   prime::test::TempScene s;
   sphere(s);
-  const CommandResult r = prime("trace --viewport 0.125 0 0.875 1 --screen 512 384 --model --no-window " + s.path().string());
+  const CommandResult r = prime(
+      "trace --viewport 0.125 0 0.875 1 --screen 512 384 --model --no-window " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("traced 385 x 385 pixels"));
 }
@@ -95,6 +97,32 @@ TEST(PrimeCommand, DumpNamesTheKindOrAsksForIt) {
   r = prime("dump " + s.path("Model.txt").string());
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, HasSubstr("--as prim|obj|list|map|graph"));
+}
+
+// Usage errors: one line with the prime: prefix and exit status 2 (not
+// CLI11's 105-114); a mistyped command gets a suggestion.
+TEST(PrimeCommand, UsageErrorsExitTwoWithTheirPrefix) {
+  CommandResult r = prime("tracee scenes");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("prime: unknown command 'tracee' - did you mean 'trace'?"));
+  r = prime("trace --no-such-option " + std::string(PRIME_SCENES) + "/default");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("prime: "));
+  EXPECT_THAT(r.output, HasSubstr("--no-such-option"));
+  EXPECT_THAT(r.output, HasSubstr("(prime trace --help)"));
+  r = prime("");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("prime: A subcommand is required"));
+}
+
+TEST(PrimeCommand, VersionAndHelpCommand) {
+  CommandResult r = prime("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("prime 0."));
+  r = prime("help trace");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_THAT(r.output, HasSubstr("Usage:"));
+  EXPECT_THAT(r.output, HasSubstr("--profile"));
 }
 
 }  // namespace
