@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # prime.sh: set up a fresh Debian machine, build, and run PRIME.
-#   ./prime.sh demo    install what is missing, build, model + trace the default scene
+#   ./prime.sh demo    install what is missing, build prime, model + trace Colour Plate 2
 #   ./prime.sh test    install what is missing, build, run every test (plain and ASan+UBSan),
 #                      then fuzz every reader for a bounded time (clang + libFuzzer, tests/fuzz)
 #   ./prime.sh build   install what is missing and build the release preset only
@@ -26,18 +26,28 @@ setup() {
   fi
 }
 
-build() {  # build PRESET
-  cmake --preset "$1" >/dev/null
-  cmake --build --preset "$1" -j "$(nproc)"
+build() {  # build PRESET [TARGET...]
+  local preset=$1
+  shift
+  cmake --preset "$preset" >/dev/null
+  if [ $# -gt 0 ]; then
+    cmake --build --preset "$preset" -j "$(nproc)" --target "$@"
+  else
+    cmake --build --preset "$preset" -j "$(nproc)"
+  fi
 }
 
 case "${1:-}" in
   demo)
     setup
-    build release
+    build release prime prime_window_sdl   # only what the demo runs, not the tests
     mkdir -p out
-    ./build/release/src/cli/prime trace scenes/prime/default --model --png out/default.png
-    echo "prime.sh: the screen image is out/default.png"
+    ./build/release/src/cli/prime trace scenes/prime/plate2 --model --png out/plate2.png \
+      --true-color-png out/plate2-true.png
+    echo "prime.sh: out/plate2.png is Colour Plate 2 of the 1991 thesis as its IBM 8514/A showed it:"
+    echo "  three CSG objects with texture maps (the D.C.U. '91 cube on the right), in the 256"
+    echo "  fixed colours of the listing's palette; out/plate2-true.png is the same render before"
+    echo "  those 256 colours. Next: README.md, docs/user-guide.md."
     ;;
   test)
     setup
