@@ -94,8 +94,7 @@ class XvfbTest : public ::testing::Test {
   // ASan runs) the suppressions of SDL's third-party leaks.
   std::map<std::string, std::string> env() const {
     const char* lsan = std::getenv("LSAN_OPTIONS");
-    const std::string supp =
-        (fs::path(PRIME_TEST_SUPPORT) / "lsan-sdl.supp").string();
+    const std::string supp = (fs::path(PRIME_TEST_SUPPORT) / "lsan-sdl.supp").string();
     return {{"DISPLAY", display_},
             {"WAYLAND_DISPLAY", ""},
             {"PRIME_WINDOW_MODULE", ""},
@@ -363,6 +362,28 @@ TEST_F(XvfbTest, WithoutItsWindowModuleTraceRunsHeadlessAndSaysWhy) {
   EXPECT_EQ(shown.wait(60000).value_or(-1), 0) << shown.err();
   EXPECT_THAT(shown.err(), HasSubstr("prime: drawing in window 0x"));
   EXPECT_THAT(shown.err(), Not(HasSubstr("headless")));
+}
+
+}  // namespace
+
+namespace {
+
+// Malone's trace in the same window, fed through a true-colour LiveFrame:
+// what the window shows is exactly the PNG the render writes.
+TEST_F(XvfbTest, MaloneTraceShowsItsTrueColourPicture) {
+  prime::test::TempScene s;
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  const fs::path scene = fs::path(PRIME_SCENES).parent_path() / "malone" / "doc-sphere.mal";
+  ChildProcess trace({PRIME_EXE, "trace", scene.string(), "--png", s.path("want.png").string()},
+                     env());
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+  const prime::Image8 want = prime::readPng(s.path("want.png").string());
+  ASSERT_EQ(want.width, 256);
+  const std::string id = windowId(trace.err());
+  ASSERT_FALSE(id.empty()) << trace.err();
+  EXPECT_EQ(captureMatches(run, id, s.path("shown.xwd"), want, 1), "");
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
 }
 
 }  // namespace
