@@ -4,6 +4,7 @@
 // `prime trace` sends a scene file here when it reads as Malone's numbers
 // (or with --format malone).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/malone/ppm.h"
@@ -72,6 +73,20 @@ void addTraceCommand(CLI::App& app, Action& action) {
   cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
   cmd->callback([=, &action] {
     action = [=] {
+      // Outputs whose directory is missing are found before the render, not after it.
+      for (const std::string* out : {ppm.get(), png.get(), png8514.get()}) {
+        if (out->empty()) continue;
+        const std::filesystem::path dir = std::filesystem::path(*out).parent_path();
+        if (!dir.empty() && !std::filesystem::is_directory(dir)) {
+          std::cerr << "prime: trace: cannot write " << *out << ": the directory " << dir.string()
+                    << " does not exist\n";
+          return 1;
+        }
+        if (std::filesystem::is_directory(*out)) {
+          std::cerr << "prime: trace: cannot write " << *out << ": it is a directory\n";
+          return 1;
+        }
+      }
       const prime::malone::Scene scene = loadMalone(*o);
       const int width = scene.viewer.xRes, height = scene.viewer.yRes;
       display::LiveRgbFrame frame(width, height);

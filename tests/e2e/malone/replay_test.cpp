@@ -229,3 +229,20 @@ TEST(MaloneView8514, ThePictureThroughPrimesPalette) {
 
 }  // namespace
 }  // namespace prime
+
+namespace prime {
+namespace {
+
+TEST(MaloneReplay, AMissingOutputDirectoryIsFoundBeforeRendering) {
+  TempDir dir;
+  const fs::path out = dir.path() / "no-such-dir" / "x.ppm";
+  const PrimeRun r =
+      prime("trace " + (kScenes / "doc-sphere.mal").string() + " --no-window --ppm " + out.string(),
+            dir.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("no-such-dir does not exist"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("traced"), std::string::npos) << r.output;  // nothing rendered
+}
+
+}  // namespace
+}  // namespace prime
