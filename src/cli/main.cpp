@@ -14,7 +14,7 @@
 
 namespace {
 
-// `prime trace` and `prime probe` serve every system: the scene says which.
+// `prime trace`, `prime probe` and `prime export-pov` serve every system: the scene says which.
 // --format names it; otherwise a directory is a PRIME scene and a file is
 // read for what it is (a stream of numbers: Malone's). Returns the
 // subcommand that handles it.
@@ -40,6 +40,7 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
         return prime::malone::looksLikeMalone(head);
       }());
   if (!malone) return command;
+  if (command == "export-pov") return prime::cli::malone::kExportPovCommand;
   return command == "trace" ? prime::cli::malone::kTraceCommand : prime::cli::malone::kProbeCommand;
 }
 
@@ -48,7 +49,8 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
 int main(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   std::string routed;
-  if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe")) {
+  const std::string first = argc >= 2 ? argv[1] : "";
+  if (first == "trace" || first == "probe" || first == "export-pov") {
     routed = commandFor(argv[1], argc, argv);
     args[1] = routed.data();
   }
@@ -69,6 +71,7 @@ int main(int argc, char** argv) {
   prime::cli::addStressCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
+  prime::cli::malone::addExportPovCommand(app, action);
   CLI11_PARSE(app, argc, args.data());
   try {
     return action ? action() : 0;
