@@ -167,7 +167,7 @@ rm -f "$BIG"
 # --- ns per primitive test: with the BVH and with --linear-search. ---
 # stats FILE ARGS...: "seconds tests rays shadow" of one single-threaded run.
 stats() {
-  "$PRIME" trace "$@" --threads 1 --no-window |
+  "$PRIME" trace "$@" --threads 1 --no-window 2>/dev/null |
     awk '/^traced/ {s=$(NF-4)} /^rays:/ {
            for (i = 1; i <= NF; i++) { if ($i == "rays:") r=$(i+1); if ($i == "shadow") sh=$(i+1); if ($i == "tests") t=$(i+1) }
            gsub(/[^0-9]/, "", r); gsub(/[^0-9]/, "", sh); gsub(/[^0-9]/, "", t) }
@@ -211,7 +211,7 @@ and start-up count, as prime's reading of the scene does.
 
 ### prime / POV-Ray per scene
 
-| scene | size | prime CPU s (median) | POV-Ray CPU s (median) | prime / POV-Ray, median of pairs (min-max) | prime <= 0.5x? | pictures (bytes 0-255: mean \|d\|, pixels within 8, pixels off by > 32, coverage) |
+| scene | size | prime CPU s (median) | POV-Ray CPU s (median) | prime / POV-Ray, median of pairs (min-max) | prime <= 0.5x? | pictures, bytes 0-255 (mean difference; pixels that differ, largest difference; within 8; off by > 32; black in one only) |
 |---|---|---|---|---|---|---|
 ${ROWS}
 Commands per scene (from \`${OUT#"$ROOT"/}\`):
