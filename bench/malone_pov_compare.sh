@@ -246,7 +246,7 @@ each part, one thread):
 | mesh-1600, ${LINEAR_RES} x ${LINEAR_RES}, \`--linear-search\` (every primitive, as the original) | $linRays | $linShadow | $linTests | $linSec | **$linNs** |
 
 The document (section 3.3.4): "A scene of the space shuttle consisting of 1600 triangles takes in
-the region of half an hour" at 512 x 512. As /work/shared/docs/malone-notes.md §5.3 derives it,
+the region of half an hour" at 512 x 512 (the machine is not stated). Derived (the document gives no count):
 with no acceleration structure every ray tests every triangle: 512 x 512 x 1600 x (1 + shadow rays
 per light) tests. With one light that is $orig1 tests in 1,800 s, $orig1Rate tests/s, **about
 $orig1Ns ns per test**; with two lights (as mesh-1600.mal) about $orig2Ns ns. Against the linear
