@@ -15,7 +15,7 @@
 
 namespace {
 
-// `prime trace`, `probe` and `bench` serve every system: the scene says which.
+// `prime trace`, `probe`, `bench` and `export-pov` serve every system: the scene says which.
 // --format names it; otherwise a directory is a PRIME scene and a file is
 // read for what it is (a stream of numbers: Malone's). Returns the
 // subcommand that handles it.
@@ -43,6 +43,7 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
   if (!malone) return command;
   if (command == "trace") return prime::cli::malone::kTraceCommand;
   if (command == "probe") return prime::cli::malone::kProbeCommand;
+  if (command == "export-pov") return prime::cli::malone::kExportPovCommand;
   return prime::cli::malone::kBenchCommand;
 }
 
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
   }
   std::string routed;
   if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe" ||
-                    std::string(argv[1]) == "bench")) {
+                    std::string(argv[1]) == "bench" || std::string(argv[1]) == "export-pov")) {
     routed = commandFor(argv[1], argc, argv);
     args[1] = routed.data();
   }
@@ -115,6 +116,7 @@ int main(int argc, char** argv) {
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
+  prime::cli::malone::addExportPovCommand(app, action);
   app.set_version_flag("--version",
                        std::string("prime ") + PRIME_VERSION + " (PRIME 1991, Malone 1995)");
   try {

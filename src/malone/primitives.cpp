@@ -157,19 +157,31 @@ bool intersect(const Scene& scene, const Primitive& p, const MRay& ray, double e
     case ObjectId::Torus: {
       // (|x|^2 + R^2 - r^2)^2 = 4 R^2 (|x|^2 - (x.a)^2), x = o - c + t d.
       const Vec3 q = ray.o - p.c;
-      const double b = dot(q, ray.d), k = dot(q, q) + p.R * p.R - p.r * p.r;
+      const double b = dot(q, ray.d), qq = dot(q, q);
       const double qd = dot(ray.d, p.u), s = dot(q, p.u);
+      // The torus lies within the sphere |x - c| <= R + r and the slab
+      // |(x - c).u| <= r: a ray that misses either, or meets both only
+      // outside (eps, length), cannot hit it, and skips the quartic (the
+      // same pixels: the margin 1e-9 keeps every root the quartic finds).
+      const double outer = (p.R + p.r) * (1 + 1e-9), slab = p.r * (1 + 1e-9);
+      const double disc = b * b - (qq - outer * outer);
+      if (disc < 0) return false;
+      const double root = std::sqrt(disc);
+      double t0 = -b - root, t1 = -b + root;
+      if (qd != 0) {
+        double ta = (-slab - s) / qd, tb = (slab - s) / qd;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+      } else if (std::fabs(s) > slab) {
+        return false;
+      }
+      if (t0 > t1 || t1 <= eps || t0 >= ray.length) return false;
+      const double k = qq + p.R * p.R - p.r * p.r;
       const double R2 = p.R * p.R;
-      std::array<double, 4> roots{};
-      const int n = solveQuartic(4 * b, 4 * b * b + 2 * k - 4 * R2 * (1 - qd * qd),
-                                 4 * b * k - 8 * R2 * (b - s * qd),
-                                 k * k - 4 * R2 * (dot(q, q) - s * s), roots);
-      for (int i = 0; i < n; ++i)
-        if (accept(roots[i], eps, ray.length)) {
-          t = roots[i];
-          return true;
-        }
-      return false;
+      return firstQuarticRoot(4 * b, 4 * b * b + 2 * k - 4 * R2 * (1 - qd * qd),
+                              4 * b * k - 8 * R2 * (b - s * qd), k * k - 4 * R2 * (qq - s * s), eps,
+                              ray.length, t);
     }
     case ObjectId::Affine: {
       // M(o - O) + t' Md/|Md|, t' = t |Md| (section 2.6).

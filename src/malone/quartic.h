@@ -16,5 +16,8 @@ int solveCubic(double a, double b, double c, std::array<double, 3>& roots);
 // Real roots of x^4 + a x^3 + b x^2 + c x + d, ascending, polished; returns
 // how many (0..4).
 int solveQuartic(double a, double b, double c, double d, std::array<double, 4>& roots);
+// The smallest root of solveQuartic's in (lo, hi), polishing only the
+// candidates up to it (ascending); false when there is none.
+bool firstQuarticRoot(double a, double b, double c, double d, double lo, double hi, double& x);
 
 }  // namespace prime::malone

@@ -1,14 +1,19 @@
 #include "src/malone/render.h"
 
+#include <chrono>
 #include <vector>
 
 namespace prime::malone {
 
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const RenderCallbacks& callbacks) {
+  const auto start = std::chrono::steady_clock::now();
   const Tracer tracer(scene, settings.trace);
+  const double setupSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const int width = scene.viewer.xRes, height = scene.viewer.yRes;
   RenderResult result;
+  result.setupSeconds = setupSeconds;
   result.raster.assign(width, height);
   RowCallbacks rowCallbacks;
   rowCallbacks.progress = callbacks.progress;

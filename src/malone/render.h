@@ -21,6 +21,7 @@ struct RenderResult {
   RgbImage raster;  // X_RES x Y_RES, row 0 at the top
   TraceStats stats;
   RowsRun run;
+  double setupSeconds = 0;  // the tracer's set-up before the first ray: the BVH
 };
 
 // The shared scheduler's callbacks, with each finished row's colours (what

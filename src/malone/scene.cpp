@@ -221,6 +221,7 @@ Scene buildScene(const SceneFile& file, const std::string& name) {
     Surface t;
     t.colour = {s.colour[0], s.colour[1], s.colour[2]};
     for (int k = 0; k < 3; ++k) t.kd[k] = s.kd * s.colour[k];
+    t.diffuse = s.kd;
     t.ks = s.ks;
     t.ke = s.ke;
     t.kt = s.kt;

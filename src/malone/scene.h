@@ -50,6 +50,7 @@ struct Affine {
 struct Surface {
   Rgb kd{};  // k_d times the colour: the diffuse spectrum
   Rgb colour{};
+  double diffuse = 0;  // k_d itself (the POV-Ray export's finish)
   double ks = 0, ke = 0, kt = 0, index = 1;
 };
 

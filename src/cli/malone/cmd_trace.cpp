@@ -60,6 +60,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto png = std::make_shared<std::string>();
   auto png8514 = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
+  auto timings = std::make_shared<bool>(false);
   auto live = std::make_shared<LiveOptions>();
   addMaloneOptions(cmd, *o);
   cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did");
@@ -71,6 +72,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
   cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
   cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
   cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
+  cmd->add_flag("--timings", *timings,
+                "Print the seconds spent reading, building (scene and BVH) and rendering")
+      ->group("");  // for bench/malone_pov_compare.sh
   cmd->callback([=, &action] {
     action = [=] {
       // Outputs whose directory is missing are found before the render, not after it.
@@ -87,7 +91,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
           return 1;
         }
       }
-      const prime::malone::Scene scene = loadMalone(*o);
+      LoadTimings load;
+      const prime::malone::Scene scene = loadMalone(*o, &load);
       const int width = scene.viewer.xRes, height = scene.viewer.yRes;
       display::LiveRgbFrame frame(width, height);
       LiveOptions options = *live;
@@ -136,6 +141,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
         written += (written.empty() ? ": " : ", ") + *png8514;
       }
       if (!*quiet) printSummary(result, written);
+      if (*timings)
+        std::printf(
+            "timings: read %.3f s, build %.3f s (scene %.3f s, BVH %.3f s), render %.3f s\n",
+            load.read, load.build + result.setupSeconds, load.build, result.setupSeconds,
+            result.run.seconds);
       std::fflush(stdout);
       char status[64];
       std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.run.seconds);

@@ -1,5 +1,7 @@
 #include "src/cli/malone/options.h"
 
+#include <chrono>
+
 #include "legacy_io/common/error.h"
 #include "legacy_io/malone/input.h"
 
@@ -35,7 +37,7 @@ void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
                 "Test every primitive for every ray, as the original did (same pixels, slower)");
 }
 
-prime::malone::Scene loadMalone(MaloneOptions& o) {
+prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {
   using prime::malone::TraceSettings;
   for (const auto& part : o.off) {
     if (part == "ambient") o.trace.ambient = false;
@@ -50,8 +52,16 @@ prime::malone::Scene loadMalone(MaloneOptions& o) {
   if (o.debug == "normal") o.trace.debug = TraceSettings::Debug::Normal;
   prime::malone::ReadOptions read;
   read.comments = o.comments;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
   const auto file = prime::malone::readSceneFile(o.file, read);
-  return prime::malone::buildScene(file, o.file);
+  const auto readDone = Clock::now();
+  auto scene = prime::malone::buildScene(file, o.file);
+  if (timings) {
+    timings->read = std::chrono::duration<double>(readDone - start).count();
+    timings->build = std::chrono::duration<double>(Clock::now() - readDone).count();
+  }
+  return scene;
 }
 
 }  // namespace prime::cli::malone

@@ -20,6 +20,10 @@ struct MaloneOptions {
 
 void addMaloneOptions(CLI::App* cmd, MaloneOptions& o);
 // Reads and builds the scene, applies --debug and --no to the settings.
-prime::malone::Scene loadMalone(MaloneOptions& o);
+// With `timings`, the seconds spent reading the file and building the scene.
+struct LoadTimings {
+  double read = 0, build = 0;
+};
+prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings = nullptr);
 
 }  // namespace prime::cli::malone
