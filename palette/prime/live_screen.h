@@ -9,7 +9,6 @@
 #pragma once
 #include <algorithm>
 #include <array>
-#include <climits>
 #include <mutex>
 #include <span>
 #include <vector>
@@ -25,8 +24,7 @@ class LiveScreen : public LiveFrame {
  public:
   // `palettes`: what P cycles through, the first shown first (the listing's
   // palette when empty).
-  LiveScreen(int width, int height, std::vector<Palette> palettes = {},
-             DacTo8 dac = kDefaultDacTo8)
+  LiveScreen(int width, int height, std::vector<Palette> palettes = {}, DacTo8 dac = kDefaultDacTo8)
       : screen_(width, height), palettes_(std::move(palettes)), dac_(dac) {
     if (palettes_.empty()) palettes_.push_back(*findBuiltinPalette("listing"));
     rebuildLut();
@@ -41,7 +39,7 @@ class LiveScreen : public LiveFrame {
     drawGraphRow(screen_, at, row, values);
     const Rect changed =
         intersect(screen_.bounds(), {at.left, at.top + row, static_cast<int>(values.size()), 1});
-    if (!changed.empty()) markLocked(changed);
+    if (!changed.empty()) dirty_.mark(changed);
   }
   // Any thread: draw anything (lines, pixels); the whole screen counts as
   // changed.
@@ -49,21 +47,20 @@ class LiveScreen : public LiveFrame {
   void draw(F&& f) {
     std::lock_guard lock(mutex_);
     f(screen_);
-    markLocked(screen_.bounds());
+    dirty_.mark(screen_.bounds());
   }
   void markAllDirty() override {
     std::lock_guard lock(mutex_);
-    markLocked(screen_.bounds());
+    dirty_.mark(screen_.bounds());
   }
   // If anything changed since the last call, calls f(screen, rect) with the
   // bounding rectangle of the changes, under the lock, and returns true.
   template <class F>
   bool takeDirty(F&& f) {
     std::lock_guard lock(mutex_);
-    if (x1_ <= x0_ || y1_ <= y0_) return false;
-    f(static_cast<const Screen&>(screen_), Rect{x0_, y0_, x1_ - x0_, y1_ - y0_});
-    x0_ = y0_ = INT_MAX;
-    x1_ = y1_ = INT_MIN;
+    const Rect r = dirty_.take();
+    if (r.empty()) return false;
+    f(static_cast<const Screen&>(screen_), r);
     return true;
   }
   // The window's side: the changed indices through the palette's DAC.
@@ -75,14 +72,15 @@ class LiveScreen : public LiveFrame {
       for (int y = 0; y < r.h; ++y) {
         const auto src = s.row(r.y + y);
         for (int x = 0; x < r.w; ++x)
-          pixels[static_cast<std::size_t>(y) * r.w + x] = lut_[src[static_cast<std::size_t>(r.x + x)]];
+          pixels[static_cast<std::size_t>(y) * r.w + x] =
+              lut_[src[static_cast<std::size_t>(r.x + x)]];
       }
     });
     return changed;
   }
   bool dirty() const override {
     std::lock_guard lock(mutex_);
-    return x0_ < x1_ && y0_ < y1_;
+    return dirty_.any();
   }
 
   bool onKey(module::Key key) override {
@@ -127,19 +125,13 @@ class LiveScreen : public LiveFrame {
       lut_[i] = static_cast<std::uint32_t>(colours[i].r) << 16 |
                 static_cast<std::uint32_t>(colours[i].g) << 8 | colours[i].b;
   }
-  void markLocked(const Rect& r) {
-    x0_ = std::min(x0_, r.x);
-    y0_ = std::min(y0_, r.y);
-    x1_ = std::max(x1_, r.x + r.w);
-    y1_ = std::max(y1_, r.y + r.h);
-  }
   mutable std::mutex mutex_;
   Screen screen_;
   std::vector<Palette> palettes_;
   std::size_t paletteIndex_ = 0;
   DacTo8 dac_;
   std::array<std::uint32_t, 256> lut_ = {};
-  int x0_ = INT_MAX, y0_ = INT_MAX, x1_ = INT_MIN, y1_ = INT_MIN;  // the changed rectangle
+  DirtyRegion dirty_;  // the changed rectangle
 };
 
 }  // namespace prime::display

@@ -4,6 +4,8 @@
 // that renders true colour gives rows of RGB. The window only ever asks for
 // the rectangle that changed, as XRGB8888, and scales it by its zoom.
 #pragma once
+#include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,6 +14,30 @@
 #include "palette/window/window_module.h"
 
 namespace prime::display {
+
+// The bounding rectangle of everything marked since it was last taken: what
+// a frame tells the window to redraw. Not locked: the frame's lock guards it.
+class DirtyRegion {
+ public:
+  void mark(const Rect& r) {
+    x0_ = std::min(x0_, r.x);
+    y0_ = std::min(y0_, r.y);
+    x1_ = std::max(x1_, r.x + r.w);
+    y1_ = std::max(y1_, r.y + r.h);
+  }
+  bool any() const { return x0_ < x1_ && y0_ < y1_; }
+  // The rectangle (empty if nothing was marked), and nothing marked after.
+  Rect take() {
+    if (!any()) return {};
+    const Rect r{x0_, y0_, x1_ - x0_, y1_ - y0_};
+    x0_ = y0_ = INT_MAX;
+    x1_ = y1_ = INT_MIN;
+    return r;
+  }
+
+ private:
+  int x0_ = INT_MAX, y0_ = INT_MAX, x1_ = INT_MIN, y1_ = INT_MIN;
+};
 
 class LiveFrame {
  public:

@@ -4,7 +4,6 @@
 // to bytes its own way before a row is set.
 #pragma once
 #include <algorithm>
-#include <climits>
 #include <cstdint>
 #include <mutex>
 #include <span>
@@ -28,42 +27,34 @@ class LiveRgbFrame : public LiveFrame {
     if (row < 0 || row >= height_) return;
     std::copy_n(xrgb.begin(), std::min<std::size_t>(xrgb.size(), width_),
                 pixels_.begin() + static_cast<std::ptrdiff_t>(row) * width_);
-    markLocked({0, row, width_, 1});
+    dirty_.mark({0, row, width_, 1});
   }
 
   Rect takeDirty(std::vector<std::uint32_t>& pixels) override {
     std::lock_guard lock(mutex_);
-    if (x1_ <= x0_ || y1_ <= y0_) return {};
-    const Rect r{x0_, y0_, x1_ - x0_, y1_ - y0_};
+    const Rect r = dirty_.take();
+    if (r.empty()) return {};
     pixels.resize(static_cast<std::size_t>(r.w) * r.h);
     for (int y = 0; y < r.h; ++y)
       std::copy_n(pixels_.begin() + static_cast<std::ptrdiff_t>(r.y + y) * width_ + r.x, r.w,
                   pixels.begin() + static_cast<std::ptrdiff_t>(y) * r.w);
-    x0_ = y0_ = INT_MAX;
-    x1_ = y1_ = INT_MIN;
     return r;
   }
   void markAllDirty() override {
     std::lock_guard lock(mutex_);
-    markLocked({0, 0, width_, height_});
+    dirty_.mark({0, 0, width_, height_});
   }
   bool dirty() const override {
     std::lock_guard lock(mutex_);
-    return x0_ < x1_ && y0_ < y1_;
+    return dirty_.any();
   }
   std::string describe() const override { return "true colour"; }
 
  private:
-  void markLocked(const Rect& r) {
-    x0_ = std::min(x0_, r.x);
-    y0_ = std::min(y0_, r.y);
-    x1_ = std::max(x1_, r.x + r.w);
-    y1_ = std::max(y1_, r.y + r.h);
-  }
   mutable std::mutex mutex_;
   int width_, height_;
   std::vector<std::uint32_t> pixels_;
-  int x0_ = INT_MAX, y0_ = INT_MAX, x1_ = INT_MIN, y1_ = INT_MIN;
+  DirtyRegion dirty_;
 };
 
 }  // namespace prime::display
