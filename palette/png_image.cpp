@@ -6,21 +6,19 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "legacy_io/common/output_file.h"
+
 namespace prime {
 
 void writePng(const std::string& path, const Image8& image) {
-  const std::string tmp = path + ".prime-tmp";
-  FILE* fp = std::fopen(tmp.c_str(), "wb");
-  if (!fp) throw std::runtime_error(path + ": cannot create PNG file");
+  io::OutputFile out(path);  // a fresh temporary beside it, renamed into place at the end
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    std::fclose(fp);
-    std::filesystem::remove(tmp);
     throw std::runtime_error(path + ": libpng failed to write the image");
   }
-  png_init_io(png, fp);
+  png_init_io(png, out.stream());
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -30,8 +28,7 @@ void writePng(const std::string& path, const Image8& image) {
                   const_cast<png_bytep>(&image.rgb[static_cast<std::size_t>(y) * image.width * 3]));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  if (std::fclose(fp) != 0) throw std::runtime_error(path + ": write failed");
-  std::filesystem::rename(tmp, path);
+  out.commit();
 }
 
 Image8 readPng(const std::string& path) {

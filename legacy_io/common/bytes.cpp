@@ -1,10 +1,13 @@
 #include "legacy_io/common/bytes.h"
 
+#include <unistd.h>
+
 #include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
+
+#include "legacy_io/common/output_file.h"
 
 namespace prime::io {
 
@@ -21,8 +24,7 @@ void ByteWriter::putDouble(double v) {
 
 void ByteReader::need(std::size_t n, const std::string& field) {
   if (remaining() < n)
-    throw InputError({file_, std::nullopt, offset()}, field,
-                     std::to_string(n) + " more byte(s)",
+    throw InputError({file_, std::nullopt, offset()}, field, std::to_string(n) + " more byte(s)",
                      "end of file after " + std::to_string(remaining()) + " byte(s) (truncated)");
 }
 
@@ -53,24 +55,18 @@ void ByteReader::skip(std::size_t n, const std::string& field) {
 
 std::vector<std::uint8_t> readFileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, std::nullopt, std::nullopt}, "cannot open file (missing or unreadable)");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in)
+    throw InputError({path, std::nullopt, std::nullopt},
+                     "cannot open file (missing or unreadable)");
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
   return bytes;
 }
 
 void writeFileAtomically(const std::string& path, std::span<const std::uint8_t> bytes) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError({path, std::nullopt, std::nullopt}, "cannot create file for writing");
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw InputError({path, std::nullopt, std::nullopt}, "write failed (disk full?)");
-    }
-  }
-  std::filesystem::rename(tmp, path);
+  OutputFile out(path);
+  out.write(bytes);
+  out.commit();
 }
 
 }  // namespace prime::io

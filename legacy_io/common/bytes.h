@@ -51,7 +51,9 @@ class ByteReader {
 // Whole-file helpers. readFileBytes reports a missing file as an InputError.
 std::vector<std::uint8_t> readFileBytes(const std::string& path);
 // Writes through a temporary file in the same directory and renames it into
-// place, so an interrupted write never leaves a half-written file behind.
+// place, so an interrupted write never leaves a half-written file behind
+// (legacy_io/common/output_file.h: no planted link followed, no device or
+// FIFO replaced).
 void writeFileAtomically(const std::string& path, std::span<const std::uint8_t> bytes);
 
 }  // namespace prime::io

@@ -3,8 +3,10 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
+#include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/turbo_c.h"
 #include "src/prime/math/listing_matrix.h"
 
@@ -23,10 +25,14 @@ class Modeller {
   void run(const std::vector<ModelCall>& calls, const std::string& origin) {
     for (const auto& call : calls) {
       const std::string where = origin + ":" + std::to_string(call.line);
-      if (call.name == "AddObj") addObj(call.args[0], where);
-      else if (call.name == "AddToObjList") addToObjList(call.args[0], where);
-      else if (call.name == "CopyObj") copyObj(call.args[0], call.args[1], call.args[2], where);
-      else if (call.name == "AddMap") addMap(call.args[0], where);
+      if (call.name == "AddObj")
+        addObj(call.args[0], where);
+      else if (call.name == "AddToObjList")
+        addToObjList(call.args[0], where);
+      else if (call.name == "CopyObj")
+        copyObj(call.args[0], call.args[1], call.args[2], where);
+      else if (call.name == "AddMap")
+        addMap(call.args[0], where);
     }
   }
 
@@ -43,14 +49,16 @@ class Modeller {
     const std::size_t n = model_.prims.prims.size();
     const std::size_t fileSize = n * kPrimSizePacked;
     if (options_.limitPrimFileTo16Bits && fileSize > 32767)
-      throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",
-                       "at most 113 primitives and bounding volumes (numbers 0..112: NewPrimNum keeps "
-                       "ftell() in a 16-bit int, which wraps once PrimFile passes 32767 bytes, errata "
-                       "E40/K37; --no-16bit-limit numbers on)",
-                       "primitive number " + std::to_string(n));
+      throw InputError(
+          {origin, std::nullopt, std::nullopt}, "primitive count",
+          "at most 113 primitives and bounding volumes (numbers 0..112: NewPrimNum keeps "
+          "ftell() in a 16-bit int, which wraps once PrimFile passes 32767 bytes, errata "
+          "E40/K37; --no-16bit-limit numbers on)",
+          "primitive number " + std::to_string(n));
     if (n > 32767)
       throw InputError({origin, std::nullopt, std::nullopt}, "primitive count",
-                       "at most 32768 primitives (16-bit primitive numbers)", std::to_string(n + 1));
+                       "at most 32768 primitives (16-bit primitive numbers)",
+                       std::to_string(n + 1));
     return static_cast<std::int16_t>(n);
   }
 
@@ -131,7 +139,8 @@ class Modeller {
   static std::string objectStem(const std::string& name, const std::string& origin) {
     const auto dot = name.find('.');
     bool ok = dot != std::string::npos && dot >= 2;
-    for (std::size_t i = 1; ok && i < dot; ++i) ok = std::isdigit(static_cast<unsigned char>(name[i]));
+    for (std::size_t i = 1; ok && i < dot; ++i)
+      ok = std::isdigit(static_cast<unsigned char>(name[i]));
     if (!ok)
       throw InputError({origin, std::nullopt, std::nullopt}, "AddObj file name",
                        "a letter, the object number and an extension, like \"d1.txt\"",
@@ -154,8 +163,10 @@ class Modeller {
 
     for (const auto& e : text.entries) {
       const std::string where = in.name() + ":" + std::to_string(e.line);
-      if (isLeafOpcode(e.op)) obj.entries.push_back(record('P', addPrim(e.op, e.l, where), 0));
-      else obj.entries.push_back(record(e.op, e.l, e.r));
+      if (isLeafOpcode(e.op))
+        obj.entries.push_back(record('P', addPrim(e.op, e.l, where), 0));
+      else
+        obj.entries.push_back(record(e.op, e.l, e.r));
     }
 
     // Replace each 'O' entry by the root of the named object and append the
@@ -177,8 +188,9 @@ class Modeller {
       if (obj.entries.size() + src.entries.size() - 1 > 32767)
         throw InputError({in.name(), line, std::nullopt}, "numEntries",
                          "at most 32767 entries after copying objects",
-                         std::to_string(obj.entries.size() + src.entries.size() - 1) + " once this O entry copies the " +
-                             std::to_string(src.entries.size()) + " entries of object " + srcName.substr(1));
+                         std::to_string(obj.entries.size() + src.entries.size() - 1) +
+                             " once this O entry copies the " + std::to_string(src.entries.size()) +
+                             " entries of object " + srcName.substr(1));
       const std::int16_t copyFile = obj.entries[i].r;
       const auto offset = static_cast<std::int16_t>(obj.entries.size() - 1);
       ObjRecord root = src.entries.at(0);
@@ -193,11 +205,15 @@ class Modeller {
       for (std::size_t j = 1; j < src.entries.size(); ++j) {
         ObjRecord e = src.entries[j];
         switch (e.op()) {
-          case '+': case '-': case '&':
+          case '+':
+          case '-':
+          case '&':
             e.l = static_cast<std::int16_t>(e.l + offset);
             e.r = static_cast<std::int16_t>(e.r + offset);
             break;
-          case 'P': e.l = copyPrim(prim(e.l, where), copyFile, where); break;
+          case 'P':
+            e.l = copyPrim(prim(e.l, where), copyFile, where);
+            break;
           default:
             throw InputError({where, std::nullopt, std::nullopt}, "entry of object " + srcName,
                              "an operator or primitive", std::string("opcode '") + e.op() + "'");
@@ -207,7 +223,8 @@ class Modeller {
     }
     if (obj.entries.size() > 32767)
       throw InputError({in.name(), std::nullopt, std::nullopt}, "numEntries",
-                       "at most 32767 entries after copying objects", std::to_string(obj.entries.size()));
+                       "at most 32767 entries after copying objects",
+                       std::to_string(obj.entries.size()));
     obj.header.numEntries = static_cast<std::int16_t>(obj.entries.size());
     obj.header.boundVol = -1;
     if (text.bound)
@@ -222,8 +239,8 @@ class Modeller {
     if (!in.atEnd()) in.fail("AddToObjList object number", "an integer", "\"" + arg + "\"");
     if (!model_.objects.count("O" + std::to_string(n)))
       throw InputError({origin, std::nullopt, std::nullopt}, "AddToObjList object number",
-                       "an object built earlier in Model.txt", std::to_string(n) + " (no obj/O" +
-                                                                   std::to_string(n) + ")");
+                       "an object built earlier in Model.txt",
+                       std::to_string(n) + " (no obj/O" + std::to_string(n) + ")");
     model_.list.objects.push_back(n);
   }
 
@@ -239,9 +256,10 @@ class Modeller {
     // input) or cannot replace (the Copy/ folder).
     const bool textInput = destName.ends_with(".txt") || destName.ends_with(".TXT");
     if (destName == "List" || destName == "Copy" || textInput)
-      throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj destination object",
-                       "a name for a new object file in obj/ like O4 (not List, Copy or a .txt input)",
-                       "\"" + destName + "\"");
+      throw InputError(
+          {origin, std::nullopt, std::nullopt}, "CopyObj destination object",
+          "a name for a new object file in obj/ like O4 (not List, Copy or a .txt input)",
+          "\"" + destName + "\"");
     auto found = model_.objects.find(srcName);
     if (found == model_.objects.end())
       throw InputError({origin, std::nullopt, std::nullopt}, "CopyObj source object",
@@ -285,7 +303,8 @@ class Modeller {
 
 }  // namespace
 
-Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls, const ModelOptions& options) {
+Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
+                 const ModelOptions& options) {
   Modeller m(scene, options);
   m.run(calls, scene.display(scene.root() / "Model.txt"));
   return m.take();
@@ -304,28 +323,24 @@ void writeModel(const SceneDir& scene, const Model& model) {
   std::vector<std::pair<fs::path, std::vector<std::uint8_t>>> files;
   files.emplace_back(scene.root() / "prim" / "PrimFile", toBytes(model.prims));
   files.emplace_back(scene.root() / "obj" / "List", toBytes(model.list));
-  for (const auto& [name, obj] : model.objects) files.emplace_back(scene.root() / "obj" / name, toBytes(obj));
-  for (const auto& [name, map] : model.maps) files.emplace_back(scene.root() / "map" / name, toBytes(map));
+  for (const auto& [name, obj] : model.objects)
+    files.emplace_back(scene.root() / "obj" / name, toBytes(obj));
+  for (const auto& [name, map] : model.maps)
+    files.emplace_back(scene.root() / "map" / name, toBytes(map));
 
-  std::vector<fs::path> temps;
-  try {
-    for (const auto& [path, bytes] : files) {
-      fs::create_directories(path.parent_path());
-      if (fs::is_symlink(fs::symlink_status(path)))
-        throw InputError({scene.display(path), std::nullopt, std::nullopt},
-                         "is a symbolic link; refusing to write through it");
-      const fs::path tmp = path.string() + ".prime-tmp";
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      temps.push_back(tmp);
-      out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-      out.close();
-      if (!out) throw InputError({scene.display(path), std::nullopt, std::nullopt}, "cannot be written");
-    }
-  } catch (...) {
-    for (const auto& t : temps) fs::remove(t);
-    throw;
+  // Every temporary written first (each a fresh mkstemp name beside its
+  // target: a planted link is never followed), then all renamed; any
+  // failure before the renames removes every temporary.
+  std::vector<std::unique_ptr<OutputFile>> outs;
+  for (const auto& [path, bytes] : files) {
+    fs::create_directories(path.parent_path());
+    if (fs::is_symlink(fs::symlink_status(path)))
+      throw InputError({scene.display(path), std::nullopt, std::nullopt},
+                       "is a symbolic link; refusing to write through it");
+    outs.push_back(std::make_unique<OutputFile>(path.string()));
+    outs.back()->write(bytes);
   }
-  for (std::size_t i = 0; i < files.size(); ++i) fs::rename(temps[i], files[i].first);
+  for (auto& out : outs) out->commit();
 }
 
 }  // namespace prime::io

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "legacy_io/common/output_file.h"
+
 namespace prime::malone {
 
 namespace {
@@ -251,17 +253,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
 }
 
 void writePovFile(const std::string& text, const std::filesystem::path& file) {
-  std::filesystem::path tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream outFile(tmp, std::ios::binary);
-    if (!outFile) throw std::runtime_error("cannot write " + tmp.string());
-    outFile.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!outFile) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) throw std::runtime_error("cannot write " + file.string() + ": " + ec.message());
+  io::OutputFile out(file.string());
+  out.write(text);
+  out.commit();
 }
 
 }  // namespace prime::malone

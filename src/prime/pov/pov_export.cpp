@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/records.h"
 
 namespace prime {
@@ -160,7 +161,8 @@ class Exporter {
          << " -A File_Gamma=1.0 +FN\n"
          << "// from this file's directory (the texture maps are next to it).\n"
          << "// Geometry, CSG, camera rays, lights and recursion depth are exact; texture\n"
-         << "// mapping is close; the finish only approximates Hall's model (docs/prime/pov-export.md).\n"
+         << "// mapping is close; the finish only approximates Hall's model "
+            "(docs/prime/pov-export.md).\n"
          << "#version 3.7;\n\n"
          << "global_settings {\n"
          << "  // PRIME's MaxDepth " << o_.maxDepth
@@ -511,21 +513,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
 void writePovExport(const PovExport& exported, const fs::path& povFile) {
   const fs::path dir = povFile.parent_path();
   for (const PovImage& img : exported.images) writePng((dir / img.fileName).string(), img.image);
-  const fs::path tmp = fs::path(povFile.string() + ".tmp");
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-    f << exported.pov;
-    f.close();
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::error_code ec;
-  fs::rename(tmp, povFile, ec);
-  if (ec) {
-    fs::remove(tmp);
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + povFile.string() + ": " +
-                             ec.message());
-  }
+  io::OutputFile out(povFile.string());
+  out.write(exported.pov);
+  out.commit();
 }
 
 }  // namespace prime

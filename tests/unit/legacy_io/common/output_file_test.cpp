@@ -1,0 +1,162 @@
+// Every output is written through a fresh temporary and renamed into place
+// (legacy_io/common/output_file.h). The class of defects this guards against
+// (issue 17, "Writing files"): temporaries at predictable names followed
+// planted symbolic links (write-anywhere in a downloaded scene directory),
+// and outputs that were device nodes or FIFOs were replaced by regular files.
+#include "legacy_io/common/output_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "legacy_io/common/bytes.h"
+#include "legacy_io/common/error.h"
+
+namespace prime::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = fs::temp_directory_path() / ("prime-output-" + std::to_string(rd()));
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int entries(const fs::path& dir) {
+  int n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+  return n;
+}
+
+TEST(OutputFile, PlantedLinksAtTheOldTemporaryNamesAreNeverFollowed) {
+  TempDir dir;
+  const fs::path victim = dir / "victim.txt", target = dir / "out.bin";
+  std::ofstream(victim) << "precious";
+  // The names the writers used before: <out>.prime-tmp, <out>.tmp.<pid>, <out>.tmp.
+  for (const std::string& suffix : std::vector<std::string>{
+           ".prime-tmp", ".tmp." + std::to_string(::getpid()), ".tmp", ".prime-tmp.XXXXXX"})
+    fs::create_symlink(victim, target.string() + suffix);
+  const std::vector<std::uint8_t> bytes{1, 2, 3, 4};
+  writeFileAtomically(target.string(), bytes);
+  EXPECT_EQ(read(victim), "precious");
+  EXPECT_EQ(read(target), std::string("\x01\x02\x03\x04"));
+  EXPECT_EQ(entries(dir.path()), 1 + 1 + 4);  // victim, out.bin, the four links: no temporary left
+}
+
+TEST(OutputFile, EachTemporaryHasAFreshName) {
+  TempDir dir;
+  OutputFile a((dir / "x").string()), b((dir / "x").string());
+  EXPECT_NE(a.temporary(), b.temporary());
+  EXPECT_EQ(a.temporary().rfind((dir / "x").string() + ".prime-tmp.", 0), 0u);
+}
+
+TEST(OutputFile, AFifoIsRefusedNotOpenedNorReplaced) {
+  TempDir dir;
+  const fs::path fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    writeFileAtomically(fifo.string(), std::vector<std::uint8_t>{1});
+    FAIL() << "a FIFO was written";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("it is a FIFO"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fifo.string()), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_EQ(entries(dir.path()), 1);
+}
+
+TEST(OutputFile, ADeviceNodeIsNeverReplaced) {
+  // /dev/null itself cannot be used (its directory is not ours to write in);
+  // the check is the same for any character device.
+  try {
+    checkOutputPath("/dev/null");
+    FAIL() << "/dev/null accepted as an output";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a character device"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+TEST(OutputFile, ADirectoryOrAMissingDirectoryIsNamed) {
+  TempDir dir;
+  fs::create_directories(dir / "sub");
+  try {
+    writeFileAtomically((dir / "sub").string(), std::vector<std::uint8_t>{1});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("it is a directory"), std::string::npos) << e.what();
+  }
+  try {
+    writeFileAtomically((dir / "no" / "x.bin").string(), std::vector<std::uint8_t>{1});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("the directory " + (dir / "no").string() + " does not exist"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(OutputFile, AnUncommittedTemporaryIsRemovedAndTheOldFileKept) {
+  TempDir dir;
+  const fs::path target = dir / "graph";
+  std::ofstream(target) << "old";
+  {
+    OutputFile out(target.string());
+    out.write(std::string_view("new, but never committed"));
+    EXPECT_TRUE(fs::exists(out.temporary()));
+  }  // an exception or an abort would leave here the same way
+  EXPECT_EQ(read(target), "old");
+  EXPECT_EQ(entries(dir.path()), 1);
+}
+
+TEST(OutputFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
+  TempDir dir;
+  const fs::path victim = dir / "victim.txt", target = dir / "out.png";
+  std::ofstream(victim) << "precious";
+  fs::create_symlink(victim, target);
+  writeFileAtomically(target.string(), std::vector<std::uint8_t>{'n', 'e', 'w'});
+  EXPECT_EQ(read(victim), "precious");
+  EXPECT_FALSE(fs::is_symlink(target));
+  EXPECT_EQ(read(target), "new");
+}
+
+TEST(OutputFile, AnOutputKeepsTheUsualPermissions) {
+  TempDir dir;
+  const mode_t mask = ::umask(022);
+  writeFileAtomically((dir / "f").string(), std::vector<std::uint8_t>{1});
+  ::umask(mask);
+  struct stat st {};
+  ASSERT_EQ(::stat((dir / "f").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0644u);
+}
+
+}  // namespace
+}  // namespace prime::io
