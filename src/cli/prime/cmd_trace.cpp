@@ -6,9 +6,9 @@
 // the window stays until Esc or close, like WaitForEsc. Without one (no
 // DISPLAY, or --no-window) it runs headless, says so, and Ctrl-C aborts.
 //
-// An aborted render never leaves a graph file that looks complete: the target
-// is removed (an older one too), and TARGET.partial holds the header and the
-// rows finished from the top, as the listing's exit(1) would have left it.
+// An aborted render never writes its target: a previous complete graph file
+// there is kept as it was, and TARGET.partial holds the header and the rows
+// finished from the top, as the listing's exit(1) would have left them.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -55,23 +55,23 @@ void printSummary(const RenderResult& r, const std::string& out) {
       static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
-// An aborted render never leaves a graph file that looks complete: the
-// target is removed (an older one too), and `partial` gets the header and the
-// rows finished from the top, as the listing's exit(1) would have left it.
+// An aborted render never writes its target: a previous good render there is
+// kept (an interrupted re-render must not cost the last finished picture),
+// and `partial` gets the header and the rows finished from the top, as the
+// listing's exit(1) would have left them.
 void writeAborted(const RenderResult& result, const std::vector<char>& finished,
                   const std::string& target, const std::string& partial) {
   std::size_t prefix = 0;
   while (prefix < finished.size() && finished[prefix]) ++prefix;
   std::error_code ec;
-  const bool removed = std::filesystem::remove(target, ec);
+  const bool kept = std::filesystem::exists(target, ec);
   io::GraphFile head = result.graph;
   head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
   io::writeGraphFile(partial, head);
   const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
   std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size()
-            << " rows: " << target << " not written"
-            << (removed ? " (the old one was removed)" : "") << "; the " << prefix
-            << " rows finished from the top are in " << partial
+            << " rows: " << target << " not written" << (kept ? " (the previous one is kept)" : "")
+            << "; the " << prefix << " rows finished from the top are in " << partial
             << " (prime view shows it); no PNG written\n";
 }
 

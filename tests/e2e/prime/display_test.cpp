@@ -9,8 +9,8 @@
 #include <fstream>
 
 #include "legacy_io/prime/graph_file.h"
-#include "palette/prime/palettes.h"
 #include "palette/png_image.h"
+#include "palette/prime/palettes.h"
 #include "tests/support/child_process.h"
 #include "tests/support/temp_scene.h"
 
@@ -278,7 +278,9 @@ TEST(PrimeTrace, HeadlessPngTrueColourAndStalePartialRemoved) {
   EXPECT_EQ(at(file, 174, 384), shown("plate3", 99));
 }
 
-TEST(PrimeTrace, CtrlCAbortsHeadlessAndLeavesOnlyAPartialFile) {
+// An interrupted re-render keeps the previous good graph file (issue 17: it
+// used to be deleted) and puts the finished rows in the .partial beside it.
+TEST(PrimeTrace, CtrlCAbortsHeadlessKeepsThePreviousRenderAndWritesAPartialFile) {
   prime::test::TempScene s;
   sphere(s);
   ASSERT_EQ(prime({"model", s.path().string()}).status, 0);
@@ -294,9 +296,11 @@ TEST(PrimeTrace, CtrlCAbortsHeadlessAndLeavesOnlyAPartialFile) {
   ASSERT_TRUE(status.has_value());
   EXPECT_EQ(*status, 1) << p.out() << p.err();
   EXPECT_THAT(p.err(), HasSubstr("prime: trace aborted after "));
-  EXPECT_THAT(p.err(), HasSubstr("graph_scr not written (the old one was removed)"));
+  EXPECT_THAT(p.err(), HasSubstr("graph_scr not written (the previous one is kept)"));
   EXPECT_THAT(p.out(), HasSubstr("ABORTED after"));
-  EXPECT_FALSE(s.exists("graph_scr"));
+  ASSERT_TRUE(s.exists("graph_scr"));
+  const auto previous = s.read("graph_scr");
+  EXPECT_EQ(std::string(previous.begin(), previous.end()), "an older, complete-looking render");
   ASSERT_TRUE(s.exists("graph_scr.partial"));
   const prime::io::GraphFilePrefix part =
       prime::io::readGraphFilePrefix(s.path("graph_scr.partial").string());
