@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tests/support/run_prime.h"
 #include "tests/support/temp_scene.h"
 
 namespace {
@@ -14,18 +15,9 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int status;
-  std::string output;  // stdout and stderr
-};
-
+using prime::test::CommandResult;
 CommandResult prime(const std::string& args) {
-  std::string out;
-  FILE* p = popen((std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  const int status = pclose(p);
-  return {WEXITSTATUS(status), out};
+  return prime::test::runPrime(args);
 }
 
 void sphere(const prime::test::TempScene& s) {

@@ -1,0 +1,26 @@
+// Runs the `prime` executable under test (PRIME_EXE) with a command line and
+// collects its exit status and output (stdout and stderr together).
+#pragma once
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace prime::test {
+
+struct CommandResult {
+  int status;
+  std::string output;  // stdout and stderr
+};
+
+inline CommandResult runPrime(const std::string& args) {
+  std::string out;
+  FILE* p = popen((std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf;
+  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+  const int status = pclose(p);
+  return {WEXITSTATUS(status), out};
+}
+
+}  // namespace prime::test
