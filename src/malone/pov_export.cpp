@@ -12,10 +12,6 @@ namespace prime::malone {
 
 namespace {
 
-double length(const Vec3& v) {
-  return std::sqrt(dot(v, v));
-}
-
 std::string rgbText(const Rgb& c) {
   return "rgb " + povVector({c[0], c[1], c[2]});
 }

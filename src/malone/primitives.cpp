@@ -10,12 +10,6 @@ namespace prime::malone {
 
 namespace {
 
-double length(const Vec3& v) {
-  return std::sqrt(dot(v, v));
-}
-Vec3 unit(const Vec3& v) {
-  return v * (1.0 / length(v));
-}
 Vec3 mul(const Mat3& m, const Vec3& v) {
   return {dot(m[0], v), dot(m[1], v), dot(m[2], v)};
 }
@@ -206,7 +200,7 @@ bool intersect(const Scene& scene, const Primitive& p, const MRay& ray, double e
 Vec3 normal(const Scene& scene, const Primitive& p, const Vec3& x) {
   switch (p.id) {
     case ObjectId::Sphere:
-      return unit(x - p.c);
+      return normalized(x - p.c);
     case ObjectId::Plane:
     case ObjectId::Disk:
     case ObjectId::Annulus:
@@ -219,25 +213,25 @@ Vec3 normal(const Scene& scene, const Primitive& p, const Vec3& x) {
       const Vec3 w = x - p.c;
       const double wa = dot(w, p.u);
       // At the apex itself (w = 0) no normal is defined: -u, not 0/0 = NaN.
-      if (wa == 0.0) return dot(w, w) > 0 ? unit(w) : p.u * -1.0;
-      return unit(w - p.u * (dot(w, w) / wa));
+      if (wa == 0.0) return dot(w, w) > 0 ? normalized(w) : p.u * -1.0;
+      return normalized(w - p.u * (dot(w, w) / wa));
     }
     case ObjectId::Cylinder: {
       const Vec3 w = x - p.c;
-      return unit(w - p.u * dot(w, p.u));
+      return normalized(w - p.u * dot(w, p.u));
     }
     case ObjectId::Torus: {
       const Vec3 w = x - p.c;
       const Vec3 radial = w - p.u * dot(w, p.u);
       const double len = length(radial);
-      if (!(len > 0)) return unit(w);
-      return unit(w - radial * (p.R / len));
+      if (!(len > 0)) return normalized(w);
+      return normalized(w - radial * (p.R / len));
     }
     case ObjectId::Affine: {
       // M^T n_local(M(x - O)), translation included (MAL-E5).
       const Affine& f = scene.affines[p.affine];
       const Vec3 local = mul(f.m, x - p.c);
-      return unit(mul(f.mT, normal(scene, scene.embedded[f.inner], local)));
+      return normalized(mul(f.mT, normal(scene, scene.embedded[f.inner], local)));
     }
     default:
       return {0, 0, 1};

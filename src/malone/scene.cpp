@@ -6,9 +6,6 @@ namespace prime::malone {
 
 namespace {
 
-double length(const Vec3& v) {
-  return std::sqrt(dot(v, v));
-}
 Vec3 at(const std::vector<double>& v, std::size_t i) {
   return {v[i], v[i + 1], v[i + 2]};
 }

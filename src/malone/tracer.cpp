@@ -8,13 +8,6 @@ namespace prime::malone {
 
 namespace {
 
-double length(const Vec3& v) {
-  return std::sqrt(dot(v, v));
-}
-Vec3 unit(const Vec3& v) {
-  return v * (1.0 / length(v));
-}
-
 std::string fmt(const char* format, double a = 0, double b = 0, double c = 0, double d = 0) {
   char buf[256];
   std::snprintf(buf, sizeof buf, format, a, b, c, d);
@@ -40,7 +33,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
 }
 
 Tracer::Tracer(const Scene& scene, TraceSettings settings) : scene_(scene), settings_(settings) {
-  forward_ = unit(scene.viewer.lookAt - scene.viewer.eye);
+  forward_ = normalized(scene.viewer.lookAt - scene.viewer.eye);
   std::vector<Aabb> boxes;
   for (int i = 0; i < static_cast<int>(scene.primitives.size()); ++i) {
     Aabb box = bounds(scene, scene.primitives[i]);
@@ -60,7 +53,7 @@ MRay Tracer::primaryRay(int X, int Y) const {
   // v(alpha, beta) - e = (l - e)/|l - e| + alpha x + beta y.
   MRay ray;
   ray.o = v.eye;
-  ray.d = unit(forward_ + v.x * alpha + v.y * beta);
+  ray.d = normalized(forward_ + v.x * alpha + v.y * beta);
   return ray;
 }
 
@@ -231,7 +224,7 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
       // t = eta i - (eta c + sqrt(D)) d (the printed sign corrected, MAL-E2).
       MRay refracted;
       refracted.o = x;
-      refracted.d = unit(i * eta - df * (eta * c + std::sqrt(D)));
+      refracted.d = normalized(i * eta - df * (eta * c + std::sqrt(D)));
       ++stats.transmittedRays;
       if (probe)
         *probe += indent + "  transmitted (" + (leaving ? "leaving" : "entering") +

@@ -10,14 +10,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Vec3 normalized(const Vec3& v) {
-  const double len = std::sqrt(dot(v, v));
-  return len > 0.0 ? v * (1.0 / len) : v;
-}
-
 // Clips the running interval [lo, hi] by the half-space n.p <= c; the plane
 // that moves a bound becomes that bound's normal.
-bool clipHalfSpace(const Ray& r, const Vec3& n, double c, double& lo, double& hi, Vec3& nLo, Vec3& nHi) {
+bool clipHalfSpace(const Ray& r, const Vec3& n, double c, double& lo, double& hi, Vec3& nLo,
+                   Vec3& nHi) {
   const double nd = dot(n, r.d), no = dot(n, r.o);
   if (nd == 0.0) return no <= c;  // parallel: inside the plane's half-space or not at all
   const double t = (c - no) / nd;
@@ -45,7 +41,8 @@ bool convex(const Ray& r, const Vec3* normals, const double* offsets, int planes
 
 // Clips [t0, t1] by the slab z0 <= z <= z1 with outward normals -z / +z.
 bool clipSlabZ(const Ray& r, double z0, double z1, double& t0, double& t1, Vec3& n0, Vec3& n1) {
-  return clipHalfSpace(r, {0, 0, -1}, -z0, t0, t1, n0, n1) && clipHalfSpace(r, {0, 0, 1}, z1, t0, t1, n0, n1);
+  return clipHalfSpace(r, {0, 0, -1}, -z0, t0, t1, n0, n1) &&
+         clipHalfSpace(r, {0, 0, 1}, z1, t0, t1, n0, n1);
 }
 
 }  // namespace

@@ -5,15 +5,6 @@
 
 namespace prime {
 
-namespace {
-
-Vec3 unit(const Vec3& v) {
-  const double l = std::sqrt(dot(v, v));
-  return l > 0 ? v * (1.0 / l) : v;
-}
-
-}  // namespace
-
 std::array<HallTerms, 3> hallTermsModern(const HallHue& h, const Rgb& surfColor, const Rgb& iSR,
                                          const Rgb& iST, double sT, const Vec3& point,
                                          const Vec3& view, const Vec3& n, const Vec3& refl,
@@ -24,14 +15,14 @@ std::array<HallTerms, 3> hallTermsModern(const HallHue& h, const Rgb& surfColor,
   for (int c = 0; c < 3; ++c) {
     double a = 0, b = 0, cd = 0, dd = 0;
     for (const HallLight& light : lights) {
-      const Vec3 l = unit(light.pt - point);
-      const Vec3 hj = unit(l + v);
+      const Vec3 l = normalized(light.pt - point);
+      const Vec3 hj = normalized(l + v);
       const double nl = dot(n, l);
       const double iL = light.intensity[c];
       const double nh = std::max(0.0, dot(n, hj));
       a += iL * fsrFromCos1991(surfColor[c], iL, nh) * std::pow(nh, std::max(0.0, h.kRH));
       if (h.indx != 1.0) {  // transmission highlight: H' = (V + indx L)/(indx - 1), along -n
-        const Vec3 ht = unit((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
+        const Vec3 ht = normalized((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
         const double nht = std::max(0.0, -dot(n, ht));
         b += iL * (1.0 - fsrFromCos1991(surfColor[c], iL, nht)) *
              std::pow(nht, std::max(0.0, h.kTH));

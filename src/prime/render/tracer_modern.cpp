@@ -23,10 +23,6 @@ constexpr double gamma(int n) {
 Vec3 absV(const Vec3& v) {
   return {std::abs(v[0]), std::abs(v[1]), std::abs(v[2])};
 }
-Vec3 unit(const Vec3& v) {
-  const double l = std::sqrt(dot(v, v));
-  return l > 0 ? v * (1.0 / l) : v;
-}
 double clamp1(double x) {
   return std::clamp(x, -1.0, 1.0);
 }
@@ -42,7 +38,7 @@ double finiteOr0(double x) {
 Vec3 normalToWorld(const Vec3& n, const Matrix4& inv) {
   Vec3 w{};
   for (int j = 0; j < 3; ++j) w[j] = n[0] * inv[j][0] + n[1] * inv[j][1] + n[2] * inv[j][2];
-  return unit(w);
+  return normalized(w);
 }
 
 // Modern texel lookup: u, v clamped into [0, 1); NaN reads texel 0.
@@ -308,7 +304,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   distance = 0.0;
   through = false;
   const SceneObject& obj = scene_.objects[hit.obj];
-  const Vec3 d = unit(ray.d);
+  const Vec3 d = normalized(ray.d);
   // Snell with the facing normal: entering, eta = 1/indx; a ray that starts
   // inside the object and leaves it here refracts out with eta = indx.
   const double eta = hit.exitsObject ? indx : 1.0 / indx;
@@ -320,7 +316,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   };
   if (!(k >= 0.0))  // total internal reflection: nothing transmitted
     return report(0, {}, "total internal reflection at the surface: nothing transmitted");
-  Ray r{{}, unit(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
+  Ray r{{}, normalized(d * eta + hit.normal * (eta * cosI - std::sqrt(k)))};
   r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
@@ -348,11 +344,11 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     const double k2 = 1.0 - indx * indx * (1.0 - c * c);
     if (k2 < 0.0) {  // total internal reflection: stay inside
       ++stats.totalInternalReflections;
-      r.d = unit(r.d - nOut * (2.0 * c));
+      r.d = normalized(r.d - nOut * (2.0 * c));
       r.o = spawnOrigin(at, r.d);
       continue;
     }
-    r.d = unit(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
+    r.d = normalized(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
     r.o = spawnOrigin(at, r.d);
     through = true;
     return report(step + 1, r, {});
@@ -364,7 +360,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
 Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                           double weight) const {
   stats.countRay(kind);
-  ray.d = unit(ray.d);
+  ray.d = normalized(ray.d);
   if (probe) probe->ray(depth, kind, ray);
   SurfaceHit hit;
   if (!nearestHit(ray, hit, stats, probe, depth)) {
@@ -390,7 +386,7 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, R
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;
-  const Vec3 refl = unit(ray.d - n * (2.0 * dot(ray.d, n)));
+  const Vec3 refl = normalized(ray.d - n * (2.0 * dot(ray.d, n)));
   double sT = 0.0;
   bool through = false;
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
