@@ -31,8 +31,8 @@ Xyz spectrumToXyz(const Spectrum& c);
 std::array<double, 3> xyzToMonitor(const Xyz& xyz, Phosphors phosphors);
 // ToRGB: the above, each channel clipped to [0, 255] and truncated.
 Rgb8 toRgb(const Spectrum& c, Phosphors phosphors);
-// Section 10: (X Y Z) = 15 M (r g b), then D450, D550, D600 from
-// X = 1360 (D450 x450 + D550 x550 + D600 x600) (and Y, Z likewise); every
+// Section 10: (X Y Z) = 15 M (r g b), then D_450, D_550, D_600 from
+// X = 1360 (D_450 x_450 + D_550 x_550 + D_600 x_600) (and Y, Z likewise); every
 // other sample 0.
 Spectrum rgbToSpectrum(const Rgb8& rgb, Phosphors phosphors);
 
