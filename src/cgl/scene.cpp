@@ -1,0 +1,465 @@
+#include "src/cgl/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+#include <system_error>
+
+#include "src/math/matrix.h"
+
+namespace prime::cgl {
+
+Ray Camera::primaryRay(double x, double y) const {
+  const Vec3 d = start + xpath * (x - 256.0) + ypath * (y - 256.0);
+  return {eye, normalized(d)};
+}
+
+namespace {
+
+io::InputLocation fileOnly(const std::string& path) {
+  io::InputLocation where;
+  where.file = path;
+  return where;
+}
+
+Camera makeCamera(const DisplayParameters& display, const std::string& path) {
+  const double sightLength = length(display.sight);
+  if (!(sightLength > 0.0))
+    throw io::InputError(fileOnly(path), "sight", "a non-zero viewing direction",
+                         "the sight is the eye point itself");
+  Camera cam;
+  cam.eye = display.eye;
+  cam.sight = display.sight * (1.0 / sightLength);
+  // Appendix 1 section 6: the scan-line direction is up x sight.
+  const Vec3 right = cross(display.up, cam.sight);
+  if (!(length(right) > 0.0))
+    throw io::InputError(fileOnly(path), "up", "an up vector not parallel to the sight",
+                         "an up vector parallel to the sight (or zero)");
+  cam.right = normalized(right);
+  // CGL-Q40: up orthogonalised against the sight.
+  cam.up = normalized(display.up - cam.sight * dot(display.up, cam.sight));
+  cam.start = cam.sight * display.dist;
+  cam.xpath = cam.right * (display.viewportWidth / 512.0);
+  cam.ypath = cam.up * (display.viewportHeight / 512.0);
+  return cam;
+}
+
+// Row-vector matrices (src/math/matrix.h: p' = p M).
+Matrix4 translation(const Vec3& t) {
+  Matrix4 m = identity4();
+  for (int i = 0; i < 3; ++i) m[3][i] = t[i];
+  return m;
+}
+Matrix4 scaling(const Vec3& s) {
+  Matrix4 m = identity4();
+  for (int i = 0; i < 3; ++i) m[i][i] = s[i];
+  return m;
+}
+// CGL-Q41: `rotate a theta` is the right-handed rotation by -theta about a
+// ("clockwise looking down the axis towards the origin", Appendix 1 section
+// 9; the sign under which Figure 59's floor is seen from above). With
+// phi = -theta and R the column-vector matrix, the row-vector matrix is R^T.
+Matrix4 rotation(char axis, double thetaDegrees) {
+  const double phi = -thetaDegrees * std::numbers::pi / 180.0;
+  const double c = std::cos(phi), s = std::sin(phi);
+  Matrix4 m = identity4();
+  int i = 1, j = 2;  // the plane rotated: x about the axis (y, z), and so on
+  if (axis == 'y') {
+    i = 2;
+    j = 0;
+  } else if (axis == 'z') {
+    i = 0;
+    j = 1;
+  }
+  // Column-vector R: p_i' = c p_i - s p_j, p_j' = s p_i + c p_j; row-vector
+  // m[row = source][column = destination].
+  m[i][i] = c;
+  m[j][i] = -s;
+  m[i][j] = s;
+  m[j][j] = c;
+  return m;
+}
+
+void pad(Aabb& box) {
+  // A little slack so that rounding in an intersection routine can never put
+  // a hit outside its object's box (the box test then could skip it).
+  for (int k = 0; k < 3; ++k) {
+    const double slack = 1e-9 * (1.0 + std::max(std::fabs(box.lo[k]), std::fabs(box.hi[k])));
+    box.lo[k] -= slack;
+    box.hi[k] += slack;
+  }
+}
+
+struct Item {
+  Object object;
+  std::vector<Item> contents;  // a box's, in list order
+};
+
+class Preprocessor {
+ public:
+  Preprocessor(const SceneFile& file, const BuildOptions& options, Scene& scene)
+      : file_(file), options_(options), scene_(scene) {}
+
+  // Appends the objects of the subgraph at `number` in processing order.
+  void process(int number, const Matrix4& m, std::vector<Item>& out, int depth) {
+    if (number == 0) return;
+    if (number < 1 || number > static_cast<int>(file_.nodes.size()))
+      throw io::InputError(fileOnly(file_.path), "node", "a node number of the file",
+                           std::to_string(number));
+    const NodeRecord& node = file_.nodes[static_cast<std::size_t>(number - 1)];
+    if (depth > static_cast<int>(file_.nodes.size()))
+      throw io::InputError(node.where, "down/right", "a DAG without cycles",
+                           "a cycle through node " + std::to_string(number));
+    // Appendix 1 section 9: right pointers before down pointers; a node's
+    // transformation applies to its down subgraph only (CGL-Q42).
+    process(node.right, m, out, depth + 1);
+    switch (node.kind) {
+      case NodeKind::Translate:
+        processDown(node, translation(node.xyz), m, out, depth);
+        break;
+      case NodeKind::Scale:
+        if (node.xyz[0] == 0.0 || node.xyz[1] == 0.0 || node.xyz[2] == 0.0) {
+          scene_.warnings.push_back(io::describe(node.where) + "scale node " +
+                                    std::to_string(node.number) +
+                                    " has a 0.0 component and is ignored (Appendix 1)");
+          process(node.down, m, out, depth + 1);
+        } else {
+          processDown(node, scaling(node.xyz), m, out, depth);
+        }
+        break;
+      case NodeKind::Rotate:
+        processDown(node, rotation(node.axis, node.theta), m, out, depth);
+        break;
+      case NodeKind::Dummy:
+        process(node.down, m, out, depth + 1);
+        break;
+      case NodeKind::Fractal:
+      case NodeKind::Spline:
+        throw io::InputError(
+            node.where,
+            std::string(node.kind == NodeKind::Fractal ? "fractal" : "spline") +
+                " surfaces (node " + std::to_string(node.number) +
+                ") are rendered by part 2 of the CGL port and are not available yet");
+      case NodeKind::Box: {
+        std::vector<Item> inner;
+        process(node.down, m, inner, depth + 1);
+        if (inner.empty()) break;  // nothing to enclose: no box node
+        Item box;
+        box.object.kind = ObjectKind::Box;
+        box.object.surface = -1;
+        box.object.node = node.number;
+        std::reverse(inner.begin(), inner.end());  // prepended: the first processed is last
+        for (const Item& it : inner) box.object.box.add(it.object.box);
+        box.contents = std::move(inner);
+        out.push_back(std::move(box));
+        ++scene_.boxes;
+        count(node);
+        break;
+      }
+      case NodeKind::Sphere:
+      case NodeKind::Cylinder:
+      case NodeKind::Polygon:
+        out.push_back(Item{primitive(node, m), {}});
+        ++scene_.primitives;
+        count(node);
+        // A primitive's down subgraph (not used by the document's files) is
+        // processed with the primitive's own transformation (CGL-Q42).
+        process(node.down, m, out, depth + 1);
+        break;
+    }
+  }
+
+ private:
+  void processDown(const NodeRecord& node, const Matrix4& own, const Matrix4& m,
+                   std::vector<Item>& out, int depth) {
+    Matrix4 child = own;  // p (own) (parent's): the node's own transform first
+    matrixMul(child, m);
+    process(node.down, child, out, depth + 1);
+  }
+
+  void count(const NodeRecord& node) {
+    if (++made_ > options_.maxObjects)
+      throw io::InputError(node.where, "scene nodes",
+                           "at most " + std::to_string(options_.maxObjects) + " object nodes",
+                           "more (shared subtrees instantiated once per path)");
+  }
+
+  int surfaceIndex(const NodeRecord& node) const {
+    if (node.surface < 1 || node.surface > static_cast<int>(file_.surfaces.size()))
+      throw io::InputError(node.where, "surface",
+                           "a surface number 1.." + std::to_string(file_.surfaces.size()),
+                           std::to_string(node.surface));
+    return node.surface - 1;
+  }
+
+  Vec3 vertex(const NodeRecord& node, int n) const {
+    if (n < 1 || n > static_cast<int>(file_.vertices.size()))
+      throw io::InputError(node.where, "vertex",
+                           "a vertex number 1.." + std::to_string(file_.vertices.size()),
+                           std::to_string(n));
+    return file_.vertices[static_cast<std::size_t>(n - 1)];
+  }
+
+  static Vec3 axisVector(char a) {
+    if (a == 'y') return {0.0, 1.0, 0.0};
+    if (a == 'z') return {0.0, 0.0, 1.0};
+    return {1.0, 0.0, 0.0};
+  }
+
+  Object primitive(const NodeRecord& node, const Matrix4& m) const {
+    Object o;
+    o.node = node.number;
+    o.surface = surfaceIndex(node);
+    o.opaque = file_.surfaces[static_cast<std::size_t>(o.surface)].refract == 0.0;
+    switch (node.kind) {
+      case NodeKind::Sphere:
+        // Section 2.1: the centre is transformed, the radius and the texture
+        // axes are not.
+        o.kind = ObjectKind::Sphere;
+        o.c = pointMatrixMul(node.xyz, m);
+        o.r = node.radius;
+        o.r2 = node.radius * node.radius;
+        o.a1 = axisVector(node.textureAxis1);
+        o.a2 = axisVector(node.textureAxis2);
+        o.box.add(o.c - Vec3{o.r, o.r, o.r});
+        o.box.add(o.c + Vec3{o.r, o.r, o.r});
+        break;
+      case NodeKind::Cylinder: {
+        // Section 3.1: the end points are transformed, the radius is not.
+        if (node.vertices.size() != 2)
+          throw io::InputError(node.where, "cylinder", "two vertex numbers",
+                               std::to_string(node.vertices.size()));
+        o.kind = ObjectKind::Cylinder;
+        o.a = pointMatrixMul(vertex(node, node.vertices[0]), m);
+        const Vec3 b = pointMatrixMul(vertex(node, node.vertices[1]), m);
+        o.p = b - o.a;
+        o.pp = dot(o.p, o.p);
+        if (!(o.pp > 0.0))
+          throw io::InputError(node.where, "cylinder", "two distinct end points",
+                               "both end points at the same place");
+        o.r = node.radius;
+        o.r2 = node.radius * node.radius;
+        // Section 3.1: A1 = P x (0,0,1), or P x (0,1,0) when P is parallel
+        // to z; normalised (CGL-Q47).
+        Vec3 a1 = cross(o.p, {0.0, 0.0, 1.0});
+        if (!(length(a1) > 0.0)) a1 = cross(o.p, {0.0, 1.0, 0.0});
+        o.a1 = normalized(a1);
+        for (const Vec3& e : {o.a, b}) {
+          o.box.add(e - Vec3{o.r, o.r, o.r});
+          o.box.add(e + Vec3{o.r, o.r, o.r});
+        }
+        break;
+      }
+      case NodeKind::Polygon: {
+        const int n = static_cast<int>(node.vertices.size());
+        if (n != 3 && n != 4)
+          throw io::InputError(node.where, "polygon",
+                               "3 or 4 vertices (triangles and rectangles only, section 4.1)",
+                               std::to_string(n));
+        o.kind = ObjectKind::Polygon;
+        std::array<Vec3, 4> v{};
+        for (int k = 0; k < n; ++k) {
+          v[k] = pointMatrixMul(vertex(node, node.vertices[static_cast<std::size_t>(k)]), m);
+          o.box.add(v[k]);
+        }
+        // Section 4.1: N_Ek = E2 - alpha E1 with E1 = V1 - V0, E2 = V2 - V0,
+        // the other edges "by permuting the points" (CGL-Q43): edge k runs
+        // from V_k to V_k+1 and is normal towards V_k+2 (indices mod n), so
+        // a rectangle's fourth edge is V3 -> V0 seen from V1.
+        o.edges = n;
+        for (int k = 0; k < n; ++k) {
+          const Vec3& p0 = v[k];
+          const Vec3 e1 = v[(k + 1) % n] - p0;
+          const Vec3 e2 = v[(k + 2) % n] - p0;
+          const double ee = dot(e1, e1);
+          if (!(ee > 0.0))
+            throw io::InputError(node.where, "polygon", "distinct vertices",
+                                 "vertices " + std::to_string(k + 1) + " and " +
+                                     std::to_string((k + 1) % n + 1) + " at the same place");
+          o.en[k] = e2 - e1 * (dot(e1, e2) / ee);
+          o.d[k] = dot(o.en[k], p0);
+        }
+        // N = N_E1 x N_E2 (unit: Table 4's N), the plane point V0.
+        const Vec3 normal = cross(o.en[0], o.en[1]);
+        if (!(length(normal) > 0.0))
+          throw io::InputError(node.where, "polygon", "a polygon with area",
+                               "collinear vertices");
+        o.n = normalized(normal);
+        o.v0 = v[0];
+        o.e1 = v[1] - v[0];
+        o.ne1 = o.en[0];
+        o.umin = o.vmin = std::numeric_limits<double>::infinity();
+        o.umax = o.vmax = -std::numeric_limits<double>::infinity();
+        for (int k = 0; k < n; ++k) {
+          const Vec3 q = v[k] - o.v0;
+          const double u = dot(q, o.e1) / dot(o.e1, o.e1);
+          const double w = dot(q, o.ne1) / dot(o.ne1, o.ne1);
+          o.umin = std::min(o.umin, u);
+          o.umax = std::max(o.umax, u);
+          o.vmin = std::min(o.vmin, w);
+          o.vmax = std::max(o.vmax, w);
+        }
+        break;
+      }
+      default:
+        break;
+    }
+    pad(o.box);
+    return o;
+  }
+
+  const SceneFile& file_;
+  const BuildOptions& options_;
+  Scene& scene_;
+  long made_ = 0;
+};
+
+void flatten(std::vector<Item>& items, std::vector<Object>& out) {
+  for (Item& it : items) {
+    const std::size_t at = out.size();
+    out.push_back(it.object);
+    if (it.object.kind == ObjectKind::Box) {
+      flatten(it.contents, out);
+      out[at].skip = static_cast<int>(out.size());
+      pad(out[at].box);
+    }
+  }
+}
+
+std::string baseName(const std::string& written) {
+  return std::filesystem::path(written).filename().string();
+}
+
+Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
+                    const BuildOptions& options) {
+  const std::string base = baseName(rec.texture);
+  auto convert = [&](const Frame& frame, const std::string& where) {
+    Texture tex;
+    tex.path = where;
+    tex.texels.resize(frame.words.size());
+    for (std::size_t i = 0; i < frame.words.size(); ++i) {
+      const std::uint32_t w = frame.words[i];
+      const Spectrum s =
+          rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
+      for (int k = 0; k < 3; ++k)
+        tex.texels[i][static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
+    }
+    return tex;
+  };
+  for (const auto& [name, frame] : options.textures)
+    if (name == base || name == rec.texture) return convert(frame, "(supplied) " + name);
+  std::vector<std::string> candidates;
+  const std::filesystem::path sceneDir = std::filesystem::path(scenePath).parent_path();
+  candidates.push_back((sceneDir / rec.texture).string());
+  for (const std::string& dir : options.textureDirs) {
+    candidates.push_back((std::filesystem::path(dir) / base).string());
+    candidates.push_back((std::filesystem::path(dir) / (base + ".rle")).string());
+  }
+  for (const std::string& c : candidates) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(c, ec)) return convert(readRleFile(c), c);
+  }
+  std::string looked;
+  for (const std::string& c : candidates) looked += (looked.empty() ? "" : ", ") + c;
+  throw io::InputError(rec.where, "texture", "a run-length-encoded texture map",
+                       "'" + rec.texture + "' not found; looked in: " + looked);
+}
+
+}  // namespace
+
+Scene buildScene(const SceneFile& file, const BuildOptions& options) {
+  Scene scene;
+  scene.path = file.path;
+  scene.camera = makeCamera(file.display, file.path);
+
+  // Surfaces (section 9.4), with their textures (section 10).
+  int lastTexture = -1;
+  for (std::size_t i = 0; i < file.surfaces.size(); ++i) {
+    const SurfaceRecord& rec = file.surfaces[i];
+    if (rec.model == ShadingModel::Cook)
+      throw io::InputError(rec.where,
+                           "cook surfaces (surface " + std::to_string(i + 1) +
+                               ") are rendered by part 2 of the CGL port and are not "
+                               "available yet");
+    Surface s;
+    s.model = rec.model;
+    s.kr = rec.reflect;
+    s.kt = rec.refract;
+    s.index = rec.index;
+    s.kd = rec.diffuse;
+    s.ks = rec.specular;
+    s.e = rec.exponent;
+    s.colour = rec.colour;
+    s.umod = rec.umod;
+    s.vmod = rec.vmod;
+    s.number = static_cast<int>(i + 1);
+    if (rec.textured) {
+      if (rec.textureLast) {
+        // Appendix 1 section 8: `last` is the previous textured surface's map.
+        if (lastTexture < 0)
+          throw io::InputError(rec.where, "texture", "a textured surface before `last`",
+                               "`last` on the first textured surface");
+        s.texture = lastTexture;
+      } else {
+        scene.textures.push_back(loadTexture(rec, file.path, options));
+        s.texture = static_cast<int>(scene.textures.size()) - 1;
+      }
+      lastTexture = s.texture;
+    }
+    scene.surfaces.push_back(s);
+  }
+
+  // Lights (section 9.3): an infinity light's direction is normalised.
+  for (const LightRecord& rec : file.lights) {
+    Light l;
+    l.inScene = rec.kind == LightKind::InScene;
+    if (l.inScene) {
+      l.xyz = rec.xyz;
+    } else {
+      if (!(length(rec.xyz) > 0.0))
+        throw io::InputError(rec.where, "direction", "a non-zero direction to the light",
+                             "0 0 0");
+      l.xyz = normalized(rec.xyz);
+    }
+    l.dw = rec.dw;
+    l.intensity = rec.colour;
+    for (int k = 0; k < kSpectrumSamples; ++k) l.intensityDw[k] = rec.colour[k] * rec.dw;
+    scene.lights.push_back(l);
+  }
+
+  // Ambience (section 9.6): k_a pi I_a as one colour-vector.
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    scene.ambient[k] = file.ambience.ka * std::numbers::pi * file.ambience.colour[k];
+
+  // The object list (sections 1.2 and 7.2).
+  std::vector<Item> items;
+  if (file.numbers.root != 0) {
+    Preprocessor pre(file, options, scene);
+    pre.process(file.numbers.root, identity4(), items, 0);
+  }
+  std::reverse(items.begin(), items.end());  // prepended: the first processed is last
+  flatten(items, scene.objects);
+  return scene;
+}
+
+std::string describeObjects(const Scene& scene) {
+  std::ostringstream out;
+  std::vector<int> ends;  // the skip of every open box
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    while (!ends.empty() && static_cast<int>(i) >= ends.back()) ends.pop_back();
+    const Object& o = scene.objects[i];
+    out << std::string(2 * ends.size(), ' ') << i << ": " << kindName(o.kind) << " (node "
+        << o.node << ")";
+    if (o.kind == ObjectKind::Box)
+      out << ", " << (o.skip - static_cast<int>(i) - 1) << " object nodes inside";
+    else
+      out << ", surface " << (o.surface + 1) << (o.opaque ? "" : ", transparent");
+    out << "\n";
+    if (o.kind == ObjectKind::Box) ends.push_back(o.skip);
+  }
+  return out.str();
+}
+
+}  // namespace prime::cgl

@@ -1,0 +1,338 @@
+#include "src/cgl/tracer.h"
+
+#include <cmath>
+
+namespace prime::cgl {
+
+namespace {
+// Sections 8.2, 8.4, 8.5: "the initial t_min = 10^10".
+constexpr double kTMin0 = 1e10;
+}  // namespace
+
+TraceStats& TraceStats::operator+=(const TraceStats& o) {
+  rays += o.rays;
+  for (int k = 0; k < kPrimitiveKinds; ++k) {
+    tests[k] += o.tests[k];
+    hits[k] += o.hits[k];
+  }
+  boxTests += o.boxTests;
+  boxHits += o.boxHits;
+  for (int k = 0; k < 3; ++k) shadeCalls[k] += o.shadeCalls[k];
+  totalInternalReflections += o.totalInternalReflections;
+  shadowedLights += o.shadowedLights;
+  return *this;
+}
+
+Vec3 reflectDirection(const Vec3& d, const Vec3& n) {
+  Vec3 nn = dot(d, n) > 0.0 ? -n : n;  // D.N < 0
+  const double dn = std::fabs(dot(d, nn));
+  if (!(dn > 0.0)) return d;  // grazing: the ray goes on as it was
+  const Vec3 omega = d * (1.0 / dn);
+  return normalized(omega + nn * 2.0);
+}
+
+bool refractDirection(const Vec3& d, const Vec3& n, double index, Vec3& out) {
+  // CGL-Q45: a ray leaving the object (D.N > 0 before the sign adjustment)
+  // uses 1/index.
+  const bool leaving = dot(d, n) > 0.0;
+  const Vec3 nn = leaving ? -n : n;
+  const double ratio = leaving ? 1.0 / index : index;
+  const double dn = std::fabs(dot(d, nn));
+  if (!(dn > 0.0) || !std::isfinite(ratio)) return false;
+  const Vec3 omega = d * (1.0 / dn);
+  const Vec3 on = omega + nn;
+  const double radicand = ratio * ratio * dot(omega, omega) - dot(on, on);
+  if (!(radicand > 0.0)) return false;  // total internal reflection: no refracted ray
+  const double kf = 1.0 / std::sqrt(radicand);
+  out = normalized(on * kf - nn);
+  return true;
+}
+
+Tracer::Tracer(const Scene& scene, const TraceSettings& settings)
+    : scene_(scene), settings_(settings) {
+  // CGL-Q49: secondary rays that miss, and the depth limit, return the
+  // background as a colour-vector.
+  background_ = rgbToSpectrum(
+      Rgb8{settings.background[0], settings.background[1], settings.background[2]},
+      settings.phosphors);
+}
+
+bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const {
+  const std::vector<Object>& objects = scene_.objects;
+  const int count = static_cast<int>(objects.size());
+  const double eps = settings_.epsilon;
+  double tmin = tMax;
+  bool found = false;
+  const BoxRay boxRay(ray);
+  for (int i = 0; i < count;) {
+    const Object& o = objects[static_cast<std::size_t>(i)];
+    double t = 0, axial = 0;
+    bool h = false;
+    switch (o.kind) {
+      case ObjectKind::Box:
+        ++stats.boxTests;
+        // CGL-Q48: the contents are tested only if the ray meets the box
+        // ahead of it, nearer than the nearest hit so far.
+        if (boxEntry(o, boxRay) < tmin) {
+          ++stats.boxHits;
+          ++i;
+        } else {
+          i = o.skip;
+        }
+        continue;
+      case ObjectKind::Sphere:
+        h = hitSphere(o, ray, eps, tmin, t);
+        break;
+      case ObjectKind::Cylinder:
+        h = hitCylinder(o, ray, eps, tmin, t, axial);
+        break;
+      case ObjectKind::Polygon:
+        h = hitPolygon(o, ray, eps, tmin, t);
+        break;
+    }
+    const auto kind = static_cast<std::size_t>(o.kind);
+    ++stats.tests[kind];
+    if (h) {
+      ++stats.hits[kind];
+      tmin = t;
+      hit = {t, i, axial};
+      found = true;
+    }
+    ++i;
+  }
+  return found;
+}
+
+int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
+  const std::vector<Object>& objects = scene_.objects;
+  const int count = static_cast<int>(objects.size());
+  const double eps = settings_.epsilon;
+  const BoxRay boxRay(ray);
+  for (int i = 0; i < count;) {
+    const Object& o = objects[static_cast<std::size_t>(i)];
+    double t = 0, axial = 0;
+    bool h = false;
+    switch (o.kind) {
+      case ObjectKind::Box:
+        ++stats.boxTests;
+        if (boxEntry(o, boxRay) < tMax) {
+          ++stats.boxHits;
+          ++i;
+        } else {
+          i = o.skip;
+        }
+        continue;
+      case ObjectKind::Sphere:
+        if (o.opaque) h = hitSphere(o, ray, eps, tMax, t);
+        break;
+      case ObjectKind::Cylinder:
+        if (o.opaque) h = hitCylinder(o, ray, eps, tMax, t, axial);
+        break;
+      case ObjectKind::Polygon:
+        if (o.opaque) h = hitPolygon(o, ray, eps, tMax, t);
+        break;
+    }
+    // Section 9.3: objects that are not opaque are ignored by shadow rays.
+    if (o.opaque) {
+      const auto kind = static_cast<std::size_t>(o.kind);
+      ++stats.tests[kind];
+      if (h) {
+        ++stats.hits[kind];
+        return i;
+      }
+    }
+    ++i;
+  }
+  return -1;
+}
+
+Spectrum Tracer::trace(const Ray& ray, int level, RayKind kind, TraceStats& stats,
+                       ProbeReport* probe) const {
+  bool hitSomething = false;
+  return traceRay(ray, level, kind, stats, probe, hitSomething);
+}
+
+Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
+                          ProbeReport* probe, bool& hitSomething) const {
+  stats.rays.countRay(kind);
+  std::size_t probeIndex = 0;
+  if (probe) {
+    probeIndex = probe->rays.size();
+    ProbeRay pr;
+    pr.kind = kind;
+    pr.level = level;
+    pr.origin = ray.o;
+    pr.direction = ray.d;
+    probe->rays.push_back(pr);
+  }
+  Hit hit;
+  hitSomething = intersect(ray, kTMin0, hit, stats);
+  if (!hitSomething) {
+    if (probe) probe->rays[probeIndex].colour = background_;
+    return background_;
+  }
+  ++stats.rays.hits;
+  const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
+  const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
+  const Vec3 point = ray.o + ray.d * hit.t;
+  const Vec3 normal = normalAt(object, point, hit.axial);
+
+  Spectrum reflected = background_, refracted = background_;
+  // Figure 41 with CGL-E42: level >= depth stops the recursion; Shade still
+  // adds k_r and k_t times the background.
+  if (level >= settings_.depth) {
+    if (probe) probe->rays[probeIndex].atDepthLimit = true;
+  } else {
+    if (surface.kr > 0.0) {
+      const Ray r{point, reflectDirection(ray.d, normal)};
+      bool h = false;
+      reflected = traceRay(r, level + 1, RayKind::Reflected, stats, probe, h);
+    }
+    if (surface.kt > 0.0) {
+      Vec3 dir{};
+      if (refractDirection(ray.d, normal, surface.index, dir)) {
+        bool h = false;
+        refracted = traceRay({point, dir}, level + 1, RayKind::Transmitted, stats, probe, h);
+      } else {
+        ++stats.totalInternalReflections;  // CGL-Q45: the background stays
+      }
+    }
+  }
+  return shade(ray, hit, point, normal, reflected, refracted, stats, probe, probeIndex);
+}
+
+Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const Vec3& normal,
+                       const Spectrum& reflected, const Spectrum& refracted, TraceStats& stats,
+                       ProbeReport* probe, std::size_t probeIndex) const {
+  const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
+  const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
+  ++stats.shadeCalls[static_cast<std::size_t>(surface.model)];
+
+  // Section 9.7: "the sign of N is adjusted so that N.V >= 0".
+  const Vec3 v = -ray.d;
+  Vec3 n = normal;
+  if (dot(n, v) < 0.0) n = -n;
+  const double nv = dot(n, v);
+
+  // D_lambda: the surface colour, or the texel's (section 10).
+  Spectrum colour{};
+  double u = 0, w = 0;
+  int ui = 0, vi = 0;
+  if (surface.texture >= 0) {
+    textureUv(object, point, normal, hit.axial, u, w);
+    ui = textureIndex(u, surface.umod);
+    vi = textureIndex(w, surface.vmod);
+    // CGL-Q50: texel = row u_i from the top of the image, column v_i.
+    const Texture& tex = scene_.textures[static_cast<std::size_t>(surface.texture)];
+    const auto& texel = tex.texels[static_cast<std::size_t>(ui) * 512 + static_cast<std::size_t>(vi)];
+    for (int k = 0; k < 3; ++k) colour[Texture::kSamples[k]] = texel[static_cast<std::size_t>(k)];
+  } else {
+    colour = surface.colour;
+  }
+
+  ProbeRay* pr = probe ? &probe->rays[probeIndex] : nullptr;
+  if (pr) {
+    pr->hit = true;
+    pr->object = hit.object;
+    pr->node = object.node;
+    pr->surface = surface.number;
+    pr->objectKind = object.kind;
+    pr->t = hit.t;
+    pr->point = point;
+    pr->normal = n;
+    pr->textured = surface.texture >= 0;
+    pr->u = u;
+    pr->v = w;
+    pr->ui = ui;
+    pr->vi = vi;
+  }
+
+  // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8).
+  Spectrum z{};
+  const double ambience = nv + 0.5;
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    z[k] = ambience * scene_.ambient[k] * colour[k] + surface.kr * reflected[k] +
+           surface.kt * refracted[k];
+
+  const int lights = static_cast<int>(scene_.lights.size());
+  for (int li = 0; li < lights; ++li) {
+    const Light& light = scene_.lights[static_cast<std::size_t>(li)];
+    Vec3 l{};
+    double tLight = kTMin0;
+    if (light.inScene) {
+      // Section 9.3 (CGL-E43): L = l - I, normalised; the shadow ray stops
+      // at the light, t_min = |l - I| (L is a unit vector).
+      const Vec3 toLight = light.xyz - point;
+      tLight = length(toLight);
+      l = normalized(toLight);
+    } else {
+      l = light.xyz;
+    }
+    const double nl = dot(n, l);
+    ProbeLight* pl = nullptr;
+    if (pr) {
+      pr->lights.push_back(ProbeLight{});
+      pl = &pr->lights.back();
+      pl->light = li;
+      pl->l = l;
+      pl->nl = nl;
+    }
+    if (nl < 0.0) {
+      if (pl) pl->skipped = "N.L < 0";
+      continue;
+    }
+    if (settings_.shadows) {
+      stats.rays.countRay(RayKind::Shadow);
+      const int by = shadowed({point, l}, tLight, stats);
+      if (by >= 0) {
+        ++stats.shadowedLights;
+        if (pl) {
+          pl->skipped = "shadowed";
+          pl->shadowedBy = by;
+        }
+        continue;
+      }
+    }
+    const double diffuse = surface.kd * nl;
+    double specular = 0.0;
+    if (surface.model == ShadingModel::Phong && nl > 0.0) {
+      // P = 2N - L/(N.L), normalised; CGL-Q51: no highlight when P.V <= 0
+      // (or N.L = 0, where P is undefined).
+      const Vec3 p = normalized(n * 2.0 - l * (1.0 / nl));
+      const double pv = dot(p, v);
+      if (pv > 0.0) specular = surface.ks * std::pow(pv, surface.e);
+    }
+    if (pl) {
+      pl->diffuse = diffuse;
+      pl->specular = specular;
+    }
+    for (int k = 0; k < kSpectrumSamples; ++k)
+      z[k] += (diffuse * colour[k] + specular) * light.intensityDw[k];
+  }
+  if (pr) pr->colour = z;
+  return z;
+}
+
+Rgb8 Tracer::screenPoint(double x, double y, TraceStats& stats, ProbeReport* probe) const {
+  const Ray ray = scene_.camera.primaryRay(x, y);
+  bool hitSomething = false;
+  const Spectrum cv = traceRay(ray, 0, RayKind::Primary, stats, probe, hitSomething);
+  Rgb8 rgb;
+  if (!hitSomething) {
+    // CGL-Q49: a primary ray that misses gives exactly the background RGB.
+    rgb = Rgb8{settings_.background[0], settings_.background[1], settings_.background[2]};
+  } else {
+    rgb = toRgb(cv, settings_.phosphors);
+  }
+  if (probe) {
+    probe->x = x;
+    probe->y = y;
+    probe->colour = cv;
+    probe->xyz = spectrumToXyz(cv);
+    probe->rgb = rgb;
+    probe->background = !hitSomething;
+  }
+  return rgb;
+}
+
+}  // namespace prime::cgl
