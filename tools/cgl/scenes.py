@@ -268,7 +268,7 @@ def primitives():
                "translate, scale, rotate, sphere, cylinder, polygon (a triangle and",
                "rectangles), box and dummy; shadows from a light at infinity and one in the",
                "scene. A cylinder is open (no end caps, section 3), and no scale changes the",
-               "radius of a sphere or a cylinder: the scaled group on the right keeps its",
+               "radius of a sphere or a cylinder: the scaled group on the left keeps its",
                "spheres' size while their centres move closer."])
     s.param("shadows")
     s.param("aalevel 2")
