@@ -9,16 +9,35 @@
 #include <vector>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/cgl/scene_file.h"
 #include "legacy_io/malone/input.h"
+#include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
 #include "src/cli/malone/commands.h"
 
 namespace {
 
-// `prime trace`, `probe`, `bench` and `export-pov` serve every system: the scene says which.
-// --format names it; otherwise a directory is a PRIME scene and a file is
-// read for what it is (a stream of numbers: Malone's). Returns the
-// subcommand that handles it.
+std::string fileHead(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// `prime trace`, `probe`, `bench` and `export-pov` serve every system: the
+// scene says which. --format names it; otherwise a directory is a PRIME
+// scene and a file is read for what it is: a CGL scene-description file
+// (keywords, `*` comments) or a stream of numbers (Malone's). `prime export`
+// and `prime view` take a CGL picture when the file ends in .rle or .raw (or
+// --format rle|raw), else a PRIME graph file. Returns the subcommand that
+// handles it.
 std::string commandFor(const std::string& command, int argc, char** argv) {
   std::string format, scene;
   for (int i = 2; i < argc; ++i) {
@@ -27,24 +46,36 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
       format = argv[++i];
     } else if (a.rfind("--format=", 0) == 0) {
       format = a.substr(9);
-    } else if (scene.empty() && !a.empty() && a[0] != '-') {
-      scene = a;
+    } else if (!a.empty() && a[0] != '-') {
+      // The first word that names a file or directory (a 1985 call statement
+      // puts numbers before it: `trace -yh 511 scene`), else the first word.
+      if (scene.empty() || (!std::filesystem::exists(scene) && std::filesystem::exists(a)))
+        scene = a;
     }
   }
-  const bool malone =
-      format == "malone" ||
-      (format.empty() && !scene.empty() && std::filesystem::is_regular_file(scene) && [&] {
-        std::ifstream in(scene, std::ios::binary);
-        std::string head(4096, '\0');
-        in.read(head.data(), static_cast<std::streamsize>(head.size()));
-        head.resize(static_cast<std::size_t>(in.gcount()));
-        return prime::malone::looksLikeMalone(head);
-      }());
-  if (!malone) return command;
-  if (command == "trace") return prime::cli::malone::kTraceCommand;
-  if (command == "probe") return prime::cli::malone::kProbeCommand;
-  if (command == "export-pov") return prime::cli::malone::kExportPovCommand;
-  return prime::cli::malone::kBenchCommand;
+  namespace cgl = prime::cli::cgl;
+  if (command == "export" || command == "view") {
+    const std::string ext = lowerExtension(scene);
+    const bool picture =
+        format == "rle" || format == "raw" || (format.empty() && (ext == ".rle" || ext == ".raw"));
+    if (!picture) return command;
+    return command == "export" ? cgl::kExportCommand : cgl::kViewCommand;
+  }
+  const bool file = format.empty() && !scene.empty() && std::filesystem::is_regular_file(scene);
+  const std::string head = file ? fileHead(scene) : std::string();
+  if (format == "cgl" || (file && prime::cgl::looksLikeCgl(head))) {
+    if (command == "trace") return cgl::kTraceCommand;
+    if (command == "probe") return cgl::kProbeCommand;
+    if (command == "export-pov") return cgl::kExportPovCommand;
+    return cgl::kBenchCommand;
+  }
+  if (format == "malone" || (file && prime::malone::looksLikeMalone(head))) {
+    if (command == "trace") return prime::cli::malone::kTraceCommand;
+    if (command == "probe") return prime::cli::malone::kProbeCommand;
+    if (command == "export-pov") return prime::cli::malone::kExportPovCommand;
+    return prime::cli::malone::kBenchCommand;
+  }
+  return command;
 }
 
 // Edit distance, for "did you mean".
@@ -93,12 +124,21 @@ int main(int argc, char** argv) {
     args[1] = helpFlag.data();
   }
   std::string routed;
+  std::vector<std::string> translated;  // a CGL call statement's flags, rewritten
   if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe" ||
-                    std::string(argv[1]) == "bench" || std::string(argv[1]) == "export-pov")) {
+                    std::string(argv[1]) == "bench" || std::string(argv[1]) == "export-pov" ||
+                    std::string(argv[1]) == "export" || std::string(argv[1]) == "view")) {
     routed = commandFor(argv[1], argc, argv);
     args[1] = routed.data();
+    if (routed == prime::cli::cgl::kTraceCommand || routed == prime::cli::cgl::kProbeCommand ||
+        routed == prime::cli::cgl::kBenchCommand) {
+      translated.assign(args.begin(), args.end());
+      prime::cli::cgl::translateCallStatement(translated, 2);
+      args.clear();
+      for (std::string& a : translated) args.push_back(a.data());
+    }
   }
-  CLI::App app{"PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995)"};
+  CLI::App app{"PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)"};
   app.require_subcommand(1);
   prime::cli::Action action;
   prime::cli::addModelCommand(app, action);
@@ -117,8 +157,13 @@ int main(int argc, char** argv) {
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
   prime::cli::malone::addExportPovCommand(app, action);
+  prime::cli::cgl::addTraceCommand(app, action);
+  prime::cli::cgl::addProbeCommand(app, action);
+  prime::cli::cgl::addBenchCommand(app, action);
+  prime::cli::cgl::addExportPovCommand(app, action);
+  prime::cli::cgl::addPictureCommands(app, action);
   app.set_version_flag("--version",
-                       std::string("prime ") + PRIME_VERSION + " (PRIME 1991, Malone 1995)");
+                       std::string("prime ") + PRIME_VERSION + " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::Success& e) {  // --help, --version

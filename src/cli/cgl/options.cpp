@@ -1,0 +1,105 @@
+#include "src/cli/cgl/options.h"
+
+#include <iostream>
+
+#include "legacy_io/common/error.h"
+
+namespace prime::cli::cgl {
+
+void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
+  cmd->add_option("SCENE", o.file, "CGL scene-description file (Appendix 1)")->required();
+  cmd->add_option("--format", o.format, "Scene format (detected from the file): cgl")
+      ->check(CLI::IsMember({"cgl"}));
+  cmd->add_flag("--lenient", o.lenient,
+                "Also read the document's OCR-damaged examples, saying what was repaired");
+  cmd->add_option("--textures", o.textureDirs,
+                  "Directory to look in for texture files by their base name (after the scene's "
+                  "own directory); may be repeated")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--phosphors", o.phosphors,
+                  "XYZ to RGB: the Electrohome ECM 1301 monitor (default) or NTSC (the ntsc "
+                  "compile option)")
+      ->check(CLI::IsMember({"electrohome", "ntsc"}));
+  cmd->add_option("--threads", o.threads, "Render threads (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  if (!withParameters) return;
+  const std::string g = "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
+                        "-xr -d -s -m -b -q -t -a)";
+  cmd->add_option("--yhigh", o.yhigh, "Uppermost scanline rendered, 0..511 (511)")
+      ->check(CLI::Range(0, 511))
+      ->group(g);
+  cmd->add_option("--ylow", o.ylow, "Lowest scanline rendered, 0..511 (0)")
+      ->check(CLI::Range(0, 511))
+      ->group(g);
+  cmd->add_option("--xleft", o.xleft, "Leftmost pixel rendered, 0..511 (0)")
+      ->check(CLI::Range(0, 511))
+      ->group(g);
+  cmd->add_option("--xright", o.xright, "Rightmost pixel rendered, 0..511 (511)")
+      ->check(CLI::Range(0, 511))
+      ->group(g);
+  cmd->add_option("--depth", o.depth, "Ray-tracing depth, 0..10 (0: primary rays only)")
+      ->check(CLI::Range(0, 10))
+      ->group(g);
+  cmd->add_flag("--shadows", o.shadows, "Shadows on")->group(g);
+  cmd->add_flag("--no-shadows", o.noShadows, "Shadows off, whatever the file says")->group(g);
+  cmd->add_option("--memory", o.memory,
+                  "Allocation block in Mbytes, 1..24: reported beside what the scene would "
+                  "have needed, never a limit")
+      ->check(CLI::Range(1, 24))
+      ->group(g);
+  cmd->add_option("--brightness", o.brightness,
+                  "Brightness of the user Background procedure (-Dbackground), 0..1")
+      ->check(CLI::Range(0.0, 1.0))
+      ->group(g);
+  cmd->add_option("--background", o.background, "Uniform background red green blue, 0..255")
+      ->expected(3)
+      ->check(CLI::Range(0, 255))
+      ->group(g);
+  cmd->add_option("--aathreshold", o.aathreshold,
+                  "Anti-aliasing threshold: corners differing by more are subdivided (40.0)")
+      ->check(CLI::Range(0.0, 765.0))
+      ->group(g);
+  cmd->add_option("--aalevel", o.aalevel,
+                  "Anti-aliasing level: 0 none (one ray per pixel), 1 corners only, 2, 4, 8 "
+                  "(one, two, three subdivisions; default 2)")
+      ->check(CLI::IsMember({0, 1, 2, 4, 8}))
+      ->group(g);
+}
+
+prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
+  prime::cgl::ReadOptions read;
+  read.lenient = o.lenient;
+  prime::cgl::SceneFile file = prime::cgl::readSceneFile(o.file, read);
+  if (!quiet)
+    for (const auto& r : file.repairs)
+      std::cerr << "prime: " << io::describe(r.where) << "repaired: " << r.what << "\n";
+  auto& p = file.program;
+  auto set = [](auto& field, bool& given, const auto& value) {
+    if (value) {
+      field = *value;
+      given = true;
+    }
+  };
+  set(p.yhigh, p.given.yhigh, o.yhigh);
+  set(p.ylow, p.given.ylow, o.ylow);
+  set(p.xleft, p.given.xleft, o.xleft);
+  set(p.xright, p.given.xright, o.xright);
+  set(p.depth, p.given.depth, o.depth);
+  set(p.memory, p.given.memory, o.memory);
+  set(p.aalevel, p.given.aalevel, o.aalevel);
+  set(p.brightness, p.given.brightness, o.brightness);
+  set(p.aathreshold, p.given.aathreshold, o.aathreshold);
+  if (o.background.size() == 3) {
+    p.background = {o.background[0], o.background[1], o.background[2]};
+    p.given.background = true;
+  }
+  if (o.shadows) p.shadows = p.given.shadows = true;
+  if (o.noShadows) {
+    p.shadows = false;
+    p.given.shadows = true;
+  }
+  if (o.quiet) p.quiet = p.given.quiet = true;
+  return file;
+}
+
+}  // namespace prime::cli::cgl

@@ -1,0 +1,35 @@
+// The options every CGL command shares: how the scene file is read, where
+// its textures are found, and every program parameter of Appendix 1 section
+// 5 as a flag that overrides the file (as Appendix 2's call statement does).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "legacy_io/cgl/scene_file.h"
+
+namespace prime::cli::cgl {
+
+struct CglOptions {
+  std::string file;
+  std::string format = "cgl";
+  bool lenient = false;
+  std::vector<std::string> textureDirs;
+  std::string phosphors = "electrohome";
+  int threads = 0;
+  // Overrides of the program parameters (unset: the file's, else the default).
+  std::optional<int> yhigh, ylow, xleft, xright, depth, memory, aalevel;
+  std::optional<double> brightness, aathreshold;
+  std::vector<int> background;
+  bool shadows = false, noShadows = false, quiet = false;
+};
+
+// `withParameters`: also the program-parameter overrides (trace, probe, bench).
+void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters = true);
+
+// Reads the scene file (strict, or lenient: then every repair is listed on
+// stderr unless quiet) and applies the overrides. Throws io::InputError.
+prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet);
+
+}  // namespace prime::cli::cgl

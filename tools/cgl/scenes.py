@@ -1,0 +1,421 @@
+#!/usr/bin/env python3
+"""Writes the Waterloo CGL scenes of scenes/cgl/ that this port adds or
+reconstructs (M. A. J. Sweeney, "The Waterloo CGL Ray Tracing Package",
+University of Waterloo CS-85-35, 1985). A CGL scene file spells every colour
+as a 33-sample spectrum (380-700 nm every 10 nm), which nobody should type by
+hand; this script writes them from a few smooth curves and says in each file
+what every record is. The verbatim copies of the document's own examples
+(doc-*.cgl) are typed in by hand and not written here.
+
+With --check it writes nothing and fails when a committed scene differs from
+what it makes (ctest tools.cgl_scenes_are_generated).
+
+    python3 tools/cgl/scenes.py [--check]
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.normpath(os.path.join(HERE, "..", "..", "scenes", "cgl"))
+
+# CIE D6500, as the document prints it for its ambience and its light
+# (Appendix 1, sections 10 and 11): "the colour of daylight on an overcast day".
+D6500 = [50.0, 54.6, 82.8, 91.5, 93.4, 86.7, 104.9, 117.0, 117.8, 114.9,
+         115.9, 108.8, 109.4, 107.8, 104.8, 107.7, 104.4, 104.0, 100.0, 96.3,
+         95.8, 88.7, 90.0, 89.6, 87.7, 83.3, 83.7, 80.0, 80.2, 82.3,
+         78.3, 69.7, 71.6]
+# The document's "flat blue" Lambert surface (Appendix 1, section 8).
+FLAT_BLUE = [0.1273, 0.1337, 0.1432, 0.1528, 0.1751, 0.1910, 0.2069, 0.2228, 0.2133, 0.1910,
+             0.1751, 0.1655, 0.1528, 0.1369, 0.1210, 0.1050, 0.0955, 0.0796, 0.0637, 0.0573,
+             0.0477, 0.0392, 0.0382, 0.0350, 0.0350, 0.0382, 0.0382, 0.0414, 0.0446, 0.0955,
+             0.1273, 0.1592, 0.2228]
+WAVELENGTHS = [380 + 10 * i for i in range(33)]
+
+
+def flat(v):
+    return [v] * 33
+
+
+def bump(centre, width, peak, base=0.02):
+    """A smooth reflectance: `base` everywhere, rising to `peak` around `centre` nm."""
+    return [base + (peak - base) * math.exp(-0.5 * ((w - centre) / width) ** 2) for w in WAVELENGTHS]
+
+
+def edge(at, width, high, low=0.02):
+    """Low below `at` nm, high above it (reds, oranges, yellows)."""
+    return [low + (high - low) / (1 + math.exp(-(w - at) / width)) for w in WAVELENGTHS]
+
+
+RED = edge(600, 12, 0.55)
+ORANGE = edge(570, 12, 0.6)
+GREEN = bump(530, 35, 0.45)
+PALE = flat(0.5)
+GREY = flat(0.3)
+DARK = flat(0.06)  # the checkerboard's "dark gray" perfect reflector
+
+
+def num(v):
+    s = "%.4f" % v
+    return "0.0000" if s == "-0.0000" else s
+
+
+def vector(values, fmt=num):
+    """A colour-vector as the manual writes it: 3 lines of 10 numbers and one of 3."""
+    assert len(values) == 33
+    return [" ".join(fmt(v) for v in values[i:i + 10]) for i in range(0, 33, 10)]
+
+
+def spd(v):
+    return ("%.1f" % v)
+
+
+class Scene:
+    def __init__(self, title, about):
+        self.title, self.about = title, about
+        self.program, self.display, self.vertices = [], [], []
+        self.surfaces, self.lights, self.nodes = [], [], []
+        self.ambience = None
+
+    # Program and display parameters: "count keyword args".
+    def param(self, text):
+        self.program.append(text)
+
+    def view(self, text):
+        self.display.append(text)
+
+    def vertex(self, x, y, z):
+        self.vertices.append((x, y, z))
+        return len(self.vertices)
+
+    def lambert(self, comment, colour, diffuse=7.0, reflect=0.0, refract=0.0, index=0.0):
+        n = len(self.surfaces) + 1
+        self.surfaces.append(["* surface %d: %s" % (n, comment),
+                              "%d lambert normal %s %s %s" % (n, reflect, refract, index),
+                              "%s" % diffuse] + vector(colour))
+        return n
+
+    def phong(self, comment, colour, diffuse, specular, exponent, reflect=0.0, refract=0.0,
+              index=0.0):
+        n = len(self.surfaces) + 1
+        self.surfaces.append(["* surface %d: %s" % (n, comment),
+                              "%d phong normal %s %s %s" % (n, reflect, refract, index),
+                              "%s %s %s" % (diffuse, specular, exponent)] + vector(colour))
+        return n
+
+    def textured(self, comment, model, texture, umod=1.0, vmod=1.0, diffuse=7.0, specular=None,
+                 exponent=None, reflect=0.0, refract=0.0, index=0.0):
+        n = len(self.surfaces) + 1
+        coefficients = "%s" % diffuse if model == "lambert" else "%s %s %s" % (
+            diffuse, specular, exponent)
+        self.surfaces.append(["* surface %d: %s" % (n, comment),
+                              "%d %s textured %s %s %s" % (n, model, reflect, refract, index),
+                              coefficients, "%s %s %s" % (texture, umod, vmod)])
+        return n
+
+    def ambient(self, ka, colour=D6500):
+        self.ambience = ["%.5f" % ka] + vector(colour, spd)
+
+    def light(self, kind, x, y, z, dw, colour=D6500, comment=None):
+        n = len(self.lights) + 1
+        self.lights.append(([("* " + comment)] if comment else []) +
+                           ["%d %s %s %s %s %s" % (n, kind, x, y, z, dw)] + vector(colour, spd))
+        return n
+
+    def node(self, text, comment=None):
+        """`text` is the record after its count: "sphere 00 02 1 0.0 0.0 0.0 0.1 x y"."""
+        n = len(self.nodes) + 1
+        self.nodes.append(([("* " + comment)] if comment else []) + ["%d %s" % (n, text)])
+        return n
+
+    def text(self):
+        out = ["* scene: " + self.title]
+        out += ["* " + l if l else "*" for l in self.about]
+        out += ["* written by tools/cgl/scenes.py; the format: docs/cgl/scene-format.md",
+                "%d %d %d %d %d %d 1" % (len(self.program), len(self.display), len(self.vertices),
+                                        len(self.surfaces), len(self.lights), len(self.nodes))]
+        out.append("* program parameters")
+        out += ["%d %s" % (i + 1, p) for i, p in enumerate(self.program)]
+        out.append("* display parameters")
+        out += ["%d %s" % (i + 1, p) for i, p in enumerate(self.display)]
+        out.append("* vertices")
+        out += ["%d %s %s %s" % ((i + 1,) + tuple("%+.4f" % c for c in v))
+                for i, v in enumerate(self.vertices)]
+        for s in self.surfaces:
+            out += s
+        out.append("* ambience")
+        out += self.ambience
+        out.append("* lights")
+        for l in self.lights:
+            out += l
+        out.append("* scene nodes (count keyword down right ...; 00 = none)")
+        for n in self.nodes:
+            out += n
+        return "\n".join(out) + "\n"
+
+
+def checkerboard():
+    s = Scene("a mirror ball above a green/blue checkerboard",
+              ["The document's example scene (Sweeney 1985, section 1.3, Figure 2, and",
+               "Appendix 1 section 2, Figure 59; Figure 5: 18:30 minutes on the VAX 11/780),",
+               "as Figure 59 prints it with its OCR damage repaired: the comment marks, the",
+               "count of surface 1 ('l'), the reflector's colour-vector (printed 0.06 0.06 0.06,",
+               "read as 0.06 at every sample: 'a dark gray material'), and the texture, which",
+               "is lost: textures/checkerboard.rle is the port's green/blue checkerboard.",
+               "The verbatim copies are doc-figure59.cgl and doc-figure2.cgl."])
+    for p in ["depth 3", "shadows", "xleft 31", "xright 480", "yhigh 286"]:
+        s.param(p)
+    s.view("eye 0.0 0.0 3.5")
+    s.view("sight towards 0.0 0.0 0.0")
+    for v in [(-1, 0, -1), (-1, 0, 1), (1, 0, 1), (1, 0, -1)]:
+        s.vertex(*v)
+    s.textured("the checkerboard texture map", "lambert", "textures/checkerboard.rle", 1.0, 1.0)
+    s.phong("a perfect reflector", DARK, 0.0, 2.5, 25.0, reflect=1.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.6, 1.0, 0.6, 0.0006,
+            comment="to the upper left and behind the observer: sunlight on a cloudy day")
+    s.node("rotate 02 04 x -22.0")
+    s.node("translate 03 00 0.0 -0.8 0.0")
+    s.node("polygon 00 00 1 4 4 3 2 1")
+    s.node("sphere 00 00 2 0.3 -0.18 0.0 0.16 x y")
+    return s
+
+
+def ball():
+    s = Scene("one ball, for the anti-aliasing levels of Figure 45",
+              ["Figure 45 shows 'five identical balls', rendered without anti-aliasing and at",
+               "aalevel 1, 2, 4 and 8 with aathreshold 40.0 (1:01, 1:06, 1:33, 1:55 and 2:33",
+               "minutes on the VAX). The ball itself is not described: this is a shiny red",
+               "Phong ball, its picture tightly bounded as the manual advises. Render it with",
+               "prime trace ball.cgl --aalevel 0|1|2|4|8."])
+    for p in ["xleft 196", "xright 316", "ylow 196", "yhigh 316", "aathreshold 40.0"]:
+        s.param(p)
+    s.phong("shiny red", RED, 7.0, 3.0, 25.0)
+    s.ambient(0.0005)
+    s.light("infinity", 1.0, 1.0, 1.0, 0.0006)
+    s.node("sphere 00 00 1 0.0 0.0 0.0 0.3 x y")
+    return s
+
+
+def illumination():
+    s = Scene("the illumination models and the ambience function (Figure 46)",
+              ["Figure 46: 'The three illumination models supported, and our ambience",
+               "function' (9:04 minutes). Left to right: Lambert, Phong, and a sphere lit by",
+               "the ambience term alone, k_a((N.V) + 0.5) I_a pi D (section 9.6; its k_d is 0",
+               "and no light reaches it). The Cook-Torrance sphere of the figure is added by",
+               "part 2 of the port (Cook-Torrance is not rendered yet). All three spheres",
+               "share the document's 'flat blue' colour-vector (Appendix 1 section 8)."])
+    for p in ["ylow 150", "yhigh 362", "aalevel 2"]:
+        s.param(p)
+    s.lambert("flat blue, Lambert (the document's example)", FLAT_BLUE, 7.0)
+    s.phong("flat blue, Phong", FLAT_BLUE, 7.0, 3.0, 25.0)
+    s.lambert("flat blue, ambience only (diffuse 0)", FLAT_BLUE, 0.0)
+    s.ambient(0.001)
+    s.light("infinity", 1.0, 1.0, 1.0, 0.0006)
+    # World +x is on the viewer's left (left-handed, z out of the screen).
+    s.node("sphere 00 02 1 0.65 0.0 0.0 0.28 x y", "Lambert, on the left")
+    s.node("sphere 00 03 2 0.0 0.0 0.0 0.28 x y", "Phong, in the middle")
+    s.node("sphere 00 00 3 -0.65 0.0 0.0 0.28 x y", "ambience only, on the right")
+    return s
+
+
+CUBE = [(-1, 1, 1), (1, 1, 1), (1, 1, -1), (1, -1, -1), (1, -1, 1), (-1, -1, 1), (-1, -1, -1),
+        (-1, 1, -1)]
+FACES = ["2 3 4 5", "6 7 8 1", "1 8 3 2", "5 4 7 6", "1 2 5 6", "8 7 4 3"]
+
+
+def nine_cubes(boxed):
+    about = ["The DAG example of Appendix 1 section 12 (the line drawing of Figure 62):",
+             "'9 cubes formed by (1) three translations in y of (2) three translations in x",
+             "of (3) a rotation about the x axis of (4) a scaling (about the origin) of (5)",
+             "the six polygons defining a cube.' The printed listing is scrambled and gives",
+             "neither the vertices nor the surface: the node parameters are read in the",
+             "printed order (docs/cgl/scenes.md), the 8 vertices are the corners of the cube",
+             "(-1..1) that make the six printed faces closed rectangles, the surface is the",
+             "port's. Nodes 4 and 7 are shared: 6 faces x 9 paths = 54 polygons."]
+    if boxed:
+        about += ["This copy follows the manual's hint: a super box around the six polygons of",
+                  "each cube (node 8 'box'), so a ray tests 9 boxes, not 54 polygons."]
+    s = Scene("nine cubes" + (", each in a super box" if boxed else ""), about)
+    s.param("shadows")
+    for v in CUBE:
+        s.vertex(*v)
+    s.phong("orange plastic", ORANGE, 7.0, 2.0, 20.0)
+    s.ambient(0.0005)
+    s.light("infinity", 1.0, 1.0, 1.0, 0.0006)
+    s.node("translate 04 02 +0.0 -0.7 +0.0")
+    s.node("translate 04 03 +0.0 +0.0 +0.0")
+    s.node("translate 04 00 +0.0 +0.7 +0.0")
+    s.node("translate 07 05 -0.7 +0.0 +0.0")
+    s.node("translate 07 06 +0.0 +0.0 +0.0")
+    s.node("translate 07 00 +0.7 +0.0 +0.0")
+    s.node("rotate 08 00 x -22.0")
+    first = 9 if not boxed else 10
+    if boxed:
+        s.node("scale 09 00 0.2 0.2 0.2")
+        s.node("box 10 00", "the super box around one cube's six faces")
+    else:
+        s.node("scale 09 00 0.2 0.2 0.2")
+    for i, f in enumerate(FACES):
+        nxt = first + i + 1 if i + 1 < len(FACES) else 0
+        s.node("polygon 00 %02d 1 4 %s" % (nxt, f))
+    return s
+
+
+def primitives():
+    s = Scene("every node type",
+              ["The port's scene with every kind of scene node of Appendix 1 section 13:",
+               "translate, scale, rotate, sphere, cylinder, polygon (a triangle and",
+               "rectangles), box and dummy; shadows from a light at infinity and one in the",
+               "scene. A cylinder is open (no end caps, section 3), and no scale changes the",
+               "radius of a sphere or a cylinder: the scaled group on the left keeps its",
+               "spheres' size while their centres move closer."])
+    s.param("shadows")
+    s.param("aalevel 2")
+    s.view("eye 0.0 0.6 3.5")
+    s.view("sight towards 0.0 -0.1 0.0")
+    floor = [s.vertex(x, -0.5, z) for x, z in [(-1.4, -1.4), (-1.4, 1.2), (1.4, 1.2), (1.4, -1.4)]]
+    tri = [s.vertex(*v) for v in [(-1.0, -0.5, -0.6), (-0.4, -0.5, -0.9), (-0.75, 0.4, -0.8)]]
+    cyl = [s.vertex(0.0, -0.5, 0.0), s.vertex(0.0, 0.3, 0.0)]
+    back = [s.vertex(*v) for v in [(-1.4, -0.5, -1.4), (-1.4, 0.9, -1.4), (1.4, 0.9, -1.4),
+                                   (1.4, -0.5, -1.4)]]
+    s.lambert("pale floor", PALE, 5.0)
+    s.phong("red plastic", RED, 7.0, 2.5, 30.0)
+    s.phong("green plastic", GREEN, 7.0, 2.5, 30.0)
+    s.lambert("flat blue (the document's)", FLAT_BLUE, 7.0)
+    s.ambient(0.0005)
+    s.light("infinity", 1.0, 1.5, 1.2, 0.0005)
+    s.light("inscene", -0.6, 0.9, 0.8, 0.0004, comment="a light in the scene, left front")
+    s.node("dummy 00 02 this dummy does nothing but follow its right link", "the root")
+    s.node("polygon 00 03 1 4 %d %d %d %d" % tuple(floor), "the floor (a rectangle)")
+    s.node("polygon 00 04 4 4 %d %d %d %d" % tuple(back), "the back wall")
+    s.node("box 05 00", "a super box around the rest")
+    s.node("polygon 00 06 3 3 %d %d %d" % tuple(tri), "a green triangle, back right (world -x)")
+    s.node("cylinder 00 07 2 0.12 %d %d" % tuple(cyl), "an open red cylinder in the middle")
+    s.node("translate 08 09 0.0 0.42 0.0", "a ball on top of the cylinder")
+    s.node("sphere 00 00 3 0.0 0.0 0.0 0.12 x y")
+    s.node("translate 10 00 0.75 -0.2 0.35", "a rotated, scaled group on the left (world +x is on the left)")
+    s.node("rotate 11 00 y 30.0")
+    s.node("scale 12 00 1.0 0.5 1.0")
+    s.node("sphere 00 13 2 0.0 -0.3 0.0 0.15 x y", "centre scaled to y = -0.15: radius kept")
+    s.node("sphere 00 00 3 0.35 -0.3 0.0 0.1 x y")
+    return s
+
+
+def glass():
+    s = Scene("glass and a mirror over the checkerboard",
+              ["Reflection and refraction (sections 8.4 and 8.5): a transparent Phong sphere",
+               "(refract 0.8, index 1.2, as the manual's 'transparent phong' example) and a",
+               "perfect reflector over the checkerboard, depth 4, shadows on: the transparent",
+               "sphere casts no shadow (section 9.3), the mirror does."])
+    for p in ["depth 4", "shadows", "aalevel 2"]:
+        s.param(p)
+    s.view("eye 0.0 0.4 3.5")
+    s.view("sight towards 0.0 -0.3 0.0")
+    for v in [(-1.5, 0, -1.5), (-1.5, 0, 1.5), (1.5, 0, 1.5), (1.5, 0, -1.5)]:
+        s.vertex(*v)
+    s.textured("the checkerboard", "lambert", "textures/checkerboard.rle", 3.0, 3.0)
+    s.phong("clear glass, slightly green", bump(530, 80, 0.1, 0.04), 1.0, 3.0, 60.0, refract=0.8,
+            index=1.2)
+    s.phong("a perfect reflector", DARK, 0.0, 2.5, 25.0, reflect=1.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.6, 1.0, 0.6, 0.0006)
+    s.node("translate 02 03 0.0 -0.6 0.0")
+    s.node("polygon 00 00 1 4 4 3 2 1", "the floor")
+    s.node("sphere 00 04 2 -0.25 -0.25 0.45 0.35 x y", "glass, front right")
+    s.node("sphere 00 00 3 0.55 -0.3 -0.4 0.3 x y", "mirror, back left")
+    return s
+
+
+def textures():
+    s = Scene("texture maps on a sphere, a cylinder and polygons",
+              ["Texture mapping (section 10) on the three primitives that take it: a",
+               "sphere (u from the named axes, section 2.3), an open cylinder (u along the",
+               "axis, section 3.3) and a rectangle and a triangle (section 4.3), with umod and",
+               "vmod repeats and the `last` keyword (the previous texture again). The textures",
+               "are the port's (textures/checkerboard.rle and textures/rings.rle); the",
+               "document's checkerboard and mandrill are lost."])
+    s.param("shadows")
+    s.param("aalevel 2")
+    s.view("eye 0.0 0.5 3.5")
+    s.view("sight towards 0.0 0.0 0.0")
+    floor = [s.vertex(x, -0.5, z) for x, z in [(-1.3, -1.3), (-1.3, 1.0), (1.3, 1.0), (1.3, -1.3)]]
+    cyl = [s.vertex(0.55, -0.5, -0.2), s.vertex(0.55, 0.45, -0.2)]
+    tri = [s.vertex(*v) for v in [(-0.2, -0.5, -1.0), (0.3, 0.6, -1.0), (0.8, -0.5, -1.0)]]
+    s.textured("checkerboard floor, 2 x 2 repeats", "lambert", "textures/checkerboard.rle", 2.0, 2.0)
+    s.textured("rings on a Phong sphere", "phong", "textures/rings.rle", 1.0, 1.0, 7.0, 2.0, 30.0)
+    s.textured("the previous texture again ('last'), 3 x 1", "lambert", "last", 3.0, 1.0)
+    s.textured("checkerboard, once", "lambert", "textures/checkerboard.rle", 1.0, 1.0)
+    s.ambient(0.0005)
+    s.light("infinity", 1.0, 1.2, 1.0, 0.0006)
+    s.node("polygon 00 02 1 4 %d %d %d %d" % tuple(floor), "the floor")
+    s.node("sphere 00 03 2 -0.5 -0.1 0.2 0.38 x y", "a textured sphere, right (world -x)")
+    s.node("cylinder 00 04 3 0.25 %d %d" % tuple(cyl), "a textured open cylinder, left (world +x)")
+    s.node("polygon 00 00 4 3 %d %d %d" % tuple(tri), "a textured triangle at the back")
+    return s
+
+
+def lamp():
+    s = Scene("a light inside a glass globe",
+              ["Section 9.3 and Appendix 1 section 11: lights are never visible, and",
+               "transparent objects cast no shadows, 'so that a light source can be put",
+               "inside a transparent sphere'. An in-scene light sits inside a glass globe",
+               "over a floor; an opaque ball and a cylinder cast shadows away from it, and the",
+               "shadow rays stop at the light's distance."])
+    for p in ["shadows", "depth 2", "aalevel 2"]:
+        s.param(p)
+    s.view("eye 0.0 1.0 3.5")
+    s.view("sight towards 0.0 -0.2 0.0")
+    floor = [s.vertex(x, -0.5, z) for x, z in [(-1.5, -1.5), (-1.5, 1.5), (1.5, 1.5), (1.5, -1.5)]]
+    cyl = [s.vertex(0.6, -0.5, 0.3), s.vertex(0.6, 0.1, 0.3)]
+    s.lambert("pale floor", PALE, 6.0)
+    s.phong("a faint glass globe", flat(0.05), 0.5, 2.0, 40.0, refract=0.9, index=1.05)
+    s.phong("red plastic", RED, 7.0, 2.0, 30.0)
+    s.ambient(0.0003)
+    s.light("inscene", 0.0, 0.35, 0.0, 0.0007, comment="the lamp, inside the globe")
+    s.node("polygon 00 02 1 4 %d %d %d %d" % tuple(floor), "the floor")
+    s.node("sphere 00 03 2 0.0 0.35 0.0 0.15 x y", "the globe around the lamp")
+    s.node("sphere 00 04 3 -0.55 -0.25 0.35 0.25 x y", "an opaque ball")
+    s.node("cylinder 00 00 3 0.1 %d %d" % tuple(cyl), "an open cylinder")
+    return s
+
+
+SCENES = {
+    "checkerboard.cgl": checkerboard,
+    "ball.cgl": ball,
+    "illumination-models.cgl": illumination,
+    "nine-cubes.cgl": lambda: nine_cubes(False),
+    "nine-cubes-boxed.cgl": lambda: nine_cubes(True),
+    "primitives.cgl": primitives,
+    "glass.cgl": glass,
+    "textures.cgl": textures,
+    "lamp.cgl": lamp,
+}
+
+
+def main(argv):
+    check = "--check" in argv[1:]
+    stale = []
+    for name, make in SCENES.items():
+        text = make().text()
+        path = os.path.join(OUT, name)
+        if check:
+            try:
+                with open(path) as f:
+                    if f.read() != text:
+                        stale.append(name)
+            except OSError:
+                stale.append(name)
+        else:
+            os.makedirs(OUT, exist_ok=True)
+            with open(path, "w") as f:
+                f.write(text)
+    if stale:
+        print("scenes/cgl: not what tools/cgl/scenes.py writes: " + ", ".join(stale) +
+              " (run python3 tools/cgl/scenes.py)")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
