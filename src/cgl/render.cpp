@@ -120,8 +120,7 @@ class CornerTable {
     auto spread = [](int p, int q, int r, int s) {
       return std::max({p, q, r, s}) - std::min({p, q, r, s});
     };
-    return spread(a.r, b.r, c.r, d.r) + spread(a.g, b.g, c.g, d.g) +
-           spread(a.b, b.b, c.b, d.b);
+    return spread(a.r, b.r, c.r, d.r) + spread(a.g, b.g, c.g, d.g) + spread(a.b, b.b, c.b, d.b);
   }
 
   const Tracer& tracer_;
@@ -190,7 +189,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
       rowCallbacks);
   for (const TraceStats& s : perThread) result.stats += s;
   if (settings.recordCorners) {
-    for (auto& t : tables) result.corners.insert(result.corners.end(), t.corners.begin(), t.corners.end());
+    for (auto& t : tables)
+      result.corners.insert(result.corners.end(), t.corners.begin(), t.corners.end());
     for (auto& c : plainCorners) result.corners.insert(result.corners.end(), c.begin(), c.end());
   }
   return result;

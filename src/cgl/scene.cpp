@@ -138,10 +138,9 @@ class Preprocessor {
       case NodeKind::Fractal:
       case NodeKind::Spline:
         throw io::InputError(
-            node.where,
-            std::string(node.kind == NodeKind::Fractal ? "fractal" : "spline") +
-                " surfaces (node " + std::to_string(node.number) +
-                ") are rendered by part 2 of the CGL port and are not available yet");
+            node.where, std::string(node.kind == NodeKind::Fractal ? "fractal" : "spline") +
+                            " surfaces (node " + std::to_string(node.number) +
+                            ") are rendered by part 2 of the CGL port and are not available yet");
       case NodeKind::Box: {
         std::vector<Item> inner;
         process(node.down, m, inner, depth + 1);
@@ -284,8 +283,7 @@ class Preprocessor {
         // N = N_E1 x N_E2 (unit: Table 4's N), the plane point V0.
         const Vec3 normal = cross(o.en[0], o.en[1]);
         if (!(length(normal) > 0.0))
-          throw io::InputError(node.where, "polygon", "a polygon with area",
-                               "collinear vertices");
+          throw io::InputError(node.where, "polygon", "a polygon with area", "collinear vertices");
         o.n = normalized(normal);
         o.v0 = v[0];
         o.e1 = v[1] - v[0];
@@ -341,8 +339,7 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     tex.texels.resize(frame.words.size());
     for (std::size_t i = 0; i < frame.words.size(); ++i) {
       const std::uint32_t w = frame.words[i];
-      const Spectrum s =
-          rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
+      const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
       for (int k = 0; k < 3; ++k)
         tex.texels[i][static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
     }
@@ -379,10 +376,9 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   for (std::size_t i = 0; i < file.surfaces.size(); ++i) {
     const SurfaceRecord& rec = file.surfaces[i];
     if (rec.model == ShadingModel::Cook)
-      throw io::InputError(rec.where,
-                           "cook surfaces (surface " + std::to_string(i + 1) +
-                               ") are rendered by part 2 of the CGL port and are not "
-                               "available yet");
+      throw io::InputError(rec.where, "cook surfaces (surface " + std::to_string(i + 1) +
+                                          ") are rendered by part 2 of the CGL port and are not "
+                                          "available yet");
     Surface s;
     s.model = rec.model;
     s.kr = rec.reflect;
@@ -419,8 +415,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
       l.xyz = rec.xyz;
     } else {
       if (!(length(rec.xyz) > 0.0))
-        throw io::InputError(rec.where, "direction", "a non-zero direction to the light",
-                             "0 0 0");
+        throw io::InputError(rec.where, "direction", "a non-zero direction to the light", "0 0 0");
       l.xyz = normalized(rec.xyz);
     }
     l.dw = rec.dw;
@@ -450,8 +445,8 @@ std::string describeObjects(const Scene& scene) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     while (!ends.empty() && static_cast<int>(i) >= ends.back()) ends.pop_back();
     const Object& o = scene.objects[i];
-    out << std::string(2 * ends.size(), ' ') << i << ": " << kindName(o.kind) << " (node "
-        << o.node << ")";
+    out << std::string(2 * ends.size(), ' ') << i << ": " << kindName(o.kind) << " (node " << o.node
+        << ")";
     if (o.kind == ObjectKind::Box)
       out << ", " << (o.skip - static_cast<int>(i) - 1) << " object nodes inside";
     else

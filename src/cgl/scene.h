@@ -57,8 +57,8 @@ struct Surface {
 
 struct Light {
   bool inScene = false;
-  Vec3 xyz{};             // infinity: the unit direction to the light; inscene: its position
-  Spectrum intensity{};   // I_lambda
+  Vec3 xyz{};              // infinity: the unit direction to the light; inscene: its position
+  Spectrum intensity{};    // I_lambda
   Spectrum intensityDw{};  // I_lambda dw
   double dw = 0;
 };
@@ -72,7 +72,7 @@ struct Scene {
   std::vector<Surface> surfaces;
   std::vector<Texture> textures;
   std::vector<Light> lights;
-  Spectrum ambient{};  // k_a pi I_a lambda (section 9.6: "one colour-vector")
+  Spectrum ambient{};                 // k_a pi I_a lambda (section 9.6: "one colour-vector")
   std::vector<std::string> warnings;  // ignored scale nodes (Appendix 1 section 9)
   int primitives = 0, boxes = 0;      // counts of object nodes by kind
 };

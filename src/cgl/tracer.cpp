@@ -52,9 +52,9 @@ Tracer::Tracer(const Scene& scene, const TraceSettings& settings)
     : scene_(scene), settings_(settings) {
   // CGL-Q49: secondary rays that miss, and the depth limit, return the
   // background as a colour-vector.
-  background_ = rgbToSpectrum(
-      Rgb8{settings.background[0], settings.background[1], settings.background[2]},
-      settings.phosphors);
+  background_ =
+      rgbToSpectrum(Rgb8{settings.background[0], settings.background[1], settings.background[2]},
+                    settings.phosphors);
 }
 
 bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const {
@@ -224,7 +224,8 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     vi = textureIndex(w, surface.vmod);
     // CGL-Q50: texel = row u_i from the top of the image, column v_i.
     const Texture& tex = scene_.textures[static_cast<std::size_t>(surface.texture)];
-    const auto& texel = tex.texels[static_cast<std::size_t>(ui) * 512 + static_cast<std::size_t>(vi)];
+    const auto& texel =
+        tex.texels[static_cast<std::size_t>(ui) * 512 + static_cast<std::size_t>(vi)];
     for (int k = 0; k < 3; ++k) colour[Texture::kSamples[k]] = texel[static_cast<std::size_t>(k)];
   } else {
     colour = surface.colour;

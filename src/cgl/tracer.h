@@ -44,9 +44,9 @@ struct TraceStats {
 // The probe's record of one ray (kind, level, origin, direction) and what it
 // met.
 struct ProbeLight {
-  int light = 0;       // 0-based
-  Vec3 l{};            // the unit vector to the light
-  double nl = 0;       // N.L
+  int light = 0;        // 0-based
+  Vec3 l{};             // the unit vector to the light
+  double nl = 0;        // N.L
   std::string skipped;  // "" = used; else why ("N.L < 0", "shadowed")
   int shadowedBy = -1;  // object index of the first opaque object found in the way
   double diffuse = 0;   // k_d (N.L) (multiplies D I dw)
@@ -104,8 +104,8 @@ class Tracer {
   int shadowed(const Ray& ray, double tMax, TraceStats& stats) const;
 
  private:
-  Spectrum traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
-                    ProbeReport* probe, bool& hitSomething) const;
+  Spectrum traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats, ProbeReport* probe,
+                    bool& hitSomething) const;
   Spectrum shade(const Ray& ray, const Hit& hit, const Vec3& point, const Vec3& normal,
                  const Spectrum& reflected, const Spectrum& refracted, TraceStats& stats,
                  ProbeReport* probe, std::size_t probeIndex) const;
