@@ -9,7 +9,7 @@
 // storage open; the port's choices (docs/cgl/deviations.md): the count is the
 // number of pixels (1..255; 0 is refused: CGL-Q23), words are little-endian
 // (the VAX's order) with no header (CGL-Q24), scanlines from the top (511)
-// down as they were rendered, and both files always hold the whole padded
+// down (left to right within each), and both files always hold the whole padded
 // 512 x 512 frame (CGL-Q25). docs/cgl/picture-files.md has an example.
 #pragma once
 #include <cstdint>
