@@ -1,6 +1,8 @@
 // The CGL package's pictures (legacy_io/cgl/frame.h; Sweeney 1985, Appendix 1
 // "output" and Appendix 3 `encode`): RLE and raw round trips, hand-built
-// bytes, every error with its byte offset, the files.
+// bytes, every error with its byte offset, the files; the texture maps that
+// stand in for the document's lost ones (scenes/cgl/textures, made by
+// tools/cgl/textures.py; CGL-D21) decode with the texels the generator promises.
 #include "legacy_io/cgl/frame.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "legacy_io/common/bytes.h"
 #include "legacy_io/common/error.h"
 
 namespace prime::cgl {
@@ -306,6 +309,44 @@ TEST_F(CglFrameFiles, ReadingRefusesMissingHugeAndOddFiles) {
     EXPECT_EQ(e.where().file, bad);
     EXPECT_EQ(e.where().byte, 0u);
   }
+}
+
+const std::string kTextures = std::string(CGL_SCENES) + "/textures/";
+
+TEST(CglTextures, CheckerboardTexels) {
+  const std::vector<std::uint8_t> bytes = io::readFileBytes(kTextures + "checkerboard.rle");
+  EXPECT_EQ(bytes.size(), 512u * 8 * 4);  // 8 runs of 64 per scanline
+  const Frame f = decodeRle(bytes, "checkerboard.rle");
+  const std::uint32_t green = packPixel(0, 160, 0), blue = packPixel(0, 0, 200);
+  // Image row y from the top is scanline 511 - y; square (y / 64 + x / 64)
+  // even is green, so the top left square is green.
+  EXPECT_EQ(f.at(511, 0), green);
+  EXPECT_EQ(f.at(511, 63), green);
+  EXPECT_EQ(f.at(511, 64), blue);
+  EXPECT_EQ(f.at(448, 0), green);  // image row 63
+  EXPECT_EQ(f.at(447, 0), blue);   // image row 64
+  EXPECT_EQ(f.at(447, 64), green);
+  EXPECT_EQ(f.at(0, 511), green);  // image row 511, column 511: square (7, 7)
+  EXPECT_EQ(f.at(0, 0), blue);     // square (7, 0)
+  // The generator's encoder is the package's: the same bytes back.
+  EXPECT_EQ(encodeRle(f), bytes);
+}
+
+TEST(CglTextures, RingsTexels) {
+  const Frame f = readRleFile(kTextures + "rings.rle");
+  // The top left corner: twice its offset from the centre (255.5, 255.5) is
+  // (-511, 511), on the diagonal, in the green octant; isqrt(2 * 511^2) / 32 =
+  // 722 / 32 = ring 22, even, so bright green (30, 170, 40).
+  EXPECT_EQ(f.at(511, 0), packPixel(30, 170, 40));
+  // Right of the centre, just above it: offsets (1, 1) * 2 - 1 = (1, 1), on the
+  // diagonal: octant 1 (orange), ring 0, bright.
+  EXPECT_EQ(f.at(256, 256), packPixel(230, 130, 20));
+  // Just right of the centre, just above, but further right: x = 300 gives
+  // dx = 89, dy = 1: octant 0 (red), ring isqrt(7922) / 32 = 89 / 32 = 2, bright.
+  EXPECT_EQ(f.at(256, 300), packPixel(220, 30, 30));
+  // x = 280: dx = 49, ring 49 / 32 = 1, dark: (220, 30, 30) * 9 / 20.
+  EXPECT_EQ(f.at(256, 280), packPixel(99, 13, 13));
+  EXPECT_EQ(encodeRle(f), io::readFileBytes(kTextures + "rings.rle"));
 }
 
 }  // namespace
