@@ -462,7 +462,7 @@ TEST(CglSceneFile, VertexErrors) {
   p.vertices = {"1 0 0 0", "vertices", "2 0 0 1"};
   expectError(readError(p.text()), 6, "vertex 2", "a record",
               "--lenient reads a bare 'vertices' line as a comment");
-  p.vertices = {"1 0 0 0", "* vertices\n2 0 0 1"};
+  p.vertices = {"1 0 0 0", "* vertices\n2 0 0 1", "3 1 0 1", "4 1 0 -1"};
   EXPECT_NO_THROW(readScene(p.text(), "t.cgl"));
 }
 
