@@ -27,7 +27,7 @@ struct RenderSettings {
   ProgramParameters program;  // as the file gave them, with the command line's overrides
   Phosphors phosphors = Phosphors::Electrohome;
   int threads = 0;        // 0: all cores
-  double epsilon = 1e-9;  // TraceSettings::epsilon (CGL-Q44)
+  double epsilon = 1e-6;  // TraceSettings::epsilon (CGL-Q44)
   // Record every primary ray's screen point (for tests of the corner table):
   // RenderResult::corners.
   bool recordCorners = false;

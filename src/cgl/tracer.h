@@ -29,7 +29,7 @@ struct TraceSettings {
   // The self-intersection guard: hits at t <= epsilon are rejected. The
   // document rejects only t <= 0 (section 2.2); CGL-Q44 says why the port
   // uses a small epsilon (set 0 for the document's rule).
-  double epsilon = 1e-9;
+  double epsilon = 1e-6;
 };
 
 struct TraceStats {
