@@ -137,6 +137,7 @@ class Preprocessor {
         break;
       case NodeKind::Fractal:
       case NodeKind::Spline:
+        // CGL-D42: part 2 of the port.
         throw io::InputError(
             node.where, std::string(node.kind == NodeKind::Fractal ? "fractal" : "spline") +
                             " surfaces (node " + std::to_string(node.number) +
@@ -345,6 +346,8 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     }
     return tex;
   };
+  // CGL-D41: supplied maps, the path as written (relative to the scene's
+  // directory), then the base name in each texture directory.
   for (const auto& [name, frame] : options.textures)
     if (name == base || name == rec.texture) return convert(frame, "(supplied) " + name);
   std::vector<std::string> candidates;
@@ -375,7 +378,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   int lastTexture = -1;
   for (std::size_t i = 0; i < file.surfaces.size(); ++i) {
     const SurfaceRecord& rec = file.surfaces[i];
-    if (rec.model == ShadingModel::Cook)
+    if (rec.model == ShadingModel::Cook)  // CGL-D42: part 2 of the port
       throw io::InputError(rec.where, "cook surfaces (surface " + std::to_string(i + 1) +
                                           ") are rendered by part 2 of the CGL port and are not "
                                           "available yet");

@@ -248,6 +248,71 @@ TEST(CglRefraction, ThroughAGlassBallAndTotalInternalReflection) {
   for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_DOUBLE_EQ(zt[k], bg[k]);
 }
 
+TEST(CglShade, TextureTexelIsRowFromTheTopColumnFromTheLeft) {
+  // The floor (vertices 1 2 3 4: V0 = (-1,0,-1), E1 = (0,0,2), N_E1 =
+  // (2,0,0)) textured: u = (z + 1)/2, v = (x + 1)/2. Straight down onto
+  // (0.5, 0, -0.5): u = 0.25, v = 0.75, u_i = 128, v_i = 384 (CGL-Q50: row
+  // 128 from the top, column 384 from the left). The map is red in its top
+  // right quarter (rows 0-255, columns 256-511) and grey elsewhere, so rows
+  // counted from the bottom would give grey.
+  SurfaceRecord floor = test::lambert(2.0, 0.0);
+  floor.textured = true;
+  floor.texture = "quarters";
+  SceneFile f = floorScene(floor);
+  Frame map;
+  for (int row = 0; row < Frame::kSize; ++row)
+    for (int col = 0; col < Frame::kSize; ++col)
+      map.words[static_cast<std::size_t>(row) * Frame::kSize + col] =
+          row < 256 && col >= 256 ? packPixel(200, 0, 0) : packPixel(90, 90, 90);
+  BuildOptions options;
+  options.textures.emplace_back("quarters", map);
+  const Scene s = buildScene(f, options);
+  TraceStats stats;
+  ProbeReport probe;
+  const Spectrum z =
+      Tracer(s, {}).trace({{0.5, 3, -0.5}, {0, -1, 0}}, 0, RayKind::Primary, stats, &probe);
+  ASSERT_TRUE(probe.rays.at(0).textured);
+  EXPECT_EQ(probe.rays[0].ui, 128);
+  EXPECT_EQ(probe.rays[0].vi, 384);
+  // Z = k_d (N.L) D I dw = 2 * 1 * D * 100 * 0.01 = 2 D, D the red texel's
+  // spectrum: only its 450, 550 and 600 nm samples (indices 7, 17, 22).
+  const Spectrum red = rgbToSpectrum(Rgb8{200, 0, 0}, Phosphors::Electrohome);
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    const bool kept = k == 7 || k == 17 || k == 22;
+    EXPECT_NEAR(z[k], kept ? 2.0 * red[k] : 0.0, 1e-12) << "sample " << k;
+  }
+  EXPECT_NE(red[22], 0.0);
+}
+
+TEST(CglTracer, SuperBoxSkipsItsContents) {
+  // A box around two spheres at x = 0 and 1 (radius 0.5), and a sphere at
+  // x = 5. A ray at x = 5 misses the box: 1 box test, 0 box hits, and only
+  // the third sphere tested; a ray at x = 0 enters it: all three tested.
+  SceneFile f = test::emptyScene();
+  f.surfaces.push_back(test::lambert(1, 1));
+  f.nodes.push_back(test::node(1, NodeKind::Box, 2, 4));
+  f.nodes.push_back(test::sphere(2, 3, 1, {0, 0, 0}, 0.5));
+  f.nodes.push_back(test::sphere(3, 0, 1, {1, 0, 0}, 0.5));
+  f.nodes.push_back(test::sphere(4, 0, 1, {5, 0, 0}, 0.5));
+  f.numbers.root = 1;
+  const Scene s = buildScene(f);
+  const Tracer tracer(s, {});
+  TraceStats outside;
+  Tracer::Hit hit;
+  ASSERT_TRUE(tracer.intersect({{5, 0, 5}, {0, 0, -1}}, 1e10, hit, outside));
+  EXPECT_EQ(hit.object, 3);
+  EXPECT_EQ(outside.boxTests, 1u);
+  EXPECT_EQ(outside.boxHits, 0u);
+  EXPECT_EQ(outside.tests[0], 1u);
+  TraceStats inside;
+  ASSERT_TRUE(tracer.intersect({{0, 0, 5}, {0, 0, -1}}, 1e10, hit, inside));
+  EXPECT_EQ(hit.object, 1);
+  EXPECT_DOUBLE_EQ(hit.t, 4.5);
+  EXPECT_EQ(inside.boxHits, 1u);
+  EXPECT_EQ(inside.tests[0], 3u);
+  EXPECT_EQ(inside.hits[0], 1u);
+}
+
 TEST(CglTracer, PrimaryMissIsTheBackgroundExactly) {
   // CGL-Q49: a primary ray that meets nothing gives the background RGB as
   // given, not ToRGB of its spectrum (which need not round-trip).
