@@ -691,8 +691,8 @@ void Reader::vertex(int n) {
 // Lenient only (CGL-E10): the ambience descriptor is not introduced by a
 // keyword, so a short colour-vector in the last surface could run on into it.
 // It is found by counting back from the first light (or, with no lights, the
-// first scene node): its last 33 numbers are the ambience vector and the one
-// before them k_a. Returns the k_a line (colour-vectors stop before it).
+// first scene node): its 33 numbers come last and the one before them is k_a.
+// Returns the k_a line (colour-vectors of surfaces stop before it).
 std::size_t Reader::findAmbienceBoundary() const {
   std::size_t stop = lines_.size();
   for (std::size_t j = next_; j < lines_.size(); ++j) {
@@ -705,7 +705,12 @@ std::size_t Reader::findAmbienceBoundary() const {
       break;
     }
   }
+  // The nearest line before `stop` holding one number with at least 33
+  // numbers after it is k_a (parameter lines of scene nodes printed before
+  // their header may stand between the ambience and `stop`); failing that,
+  // the line of the 34th number counted back.
   int numbers = 0;
+  std::size_t fallback = std::numeric_limits<std::size_t>::max();
   for (std::size_t j = stop; j-- > next_;) {
     const Line& l = lines_[j];
     if (l.comment) continue;
@@ -714,10 +719,12 @@ std::size_t Reader::findAmbienceBoundary() const {
       if (!isReal(t.text)) break;
       ++here;
     }
+    if (here == 1 && numbers >= kSpectrumSamples) return j;
     numbers += here;
-    if (numbers >= kSpectrumSamples + 1) return j;
+    if (numbers >= kSpectrumSamples + 1 && fallback == std::numeric_limits<std::size_t>::max())
+      fallback = j;
   }
-  return std::numeric_limits<std::size_t>::max();
+  return fallback;
 }
 
 Spectrum Reader::colourVector(const std::string& what, Section section) {

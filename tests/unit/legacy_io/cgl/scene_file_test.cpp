@@ -891,6 +891,26 @@ TEST(CglSceneFile, LenientPhongRedLostSampleInTheFirstRow) {
   EXPECT_TRUE(hasNote(f.repairs, lineOf(t, "\\* surface"), "'\\*' as the comment mark"));
 }
 
+TEST(CglSceneFile, LenientFindsTheAmbienceBeforeLinesOfTheFirstNode) {
+  // No lights, a 3-number grey in the last surface, and the first node's
+  // parameters printed before its header: the ambience is the one-number
+  // line nearest the first node with 33 numbers after it (CGL-E10).
+  Parts p;
+  p.surfaces = {"1 lambert normal 0.0 0.0 0.0\n7.0\n0.06 0.06 0.06\n"};
+  p.lights.clear();
+  p.nodes = {"+0.0 -0.7 +0.0\n1 translate 02 00\n2 polygon 00 00 1 4 1 2 3 4"};
+  std::string t = p.text();
+  t.replace(t.find("1 1 4 1 0 1 1"), 13, "1 1 4 1 0 2 1");
+  const SceneFile f = readScene(t, "t.cgl", ReadOptions{true});
+  for (double v : f.surfaces[0].colour) EXPECT_EQ(v, 0.06);
+  EXPECT_EQ(f.ambience.ka, 0.0005);
+  EXPECT_EQ(f.ambience.colour[32], 50.0);
+  EXPECT_EQ(f.nodes[0].xyz, (Vec3{0.0, -0.7, 0.0}));
+  EXPECT_TRUE(hasNote(f.repairs, lineOf(t, "+0.0 -0.7"), "printed before the header of scene "
+                                                          "node 1 (translate)"))
+      << listed(f.repairs);
+}
+
 TEST(CglSceneFile, LenientStillRefusesWhatItCannotRepair) {
   Parts p;
   p.nodes = {"1 polygon 00 00 1 5 1 2 3 4 1"};
