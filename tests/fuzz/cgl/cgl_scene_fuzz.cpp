@@ -70,8 +70,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           check(d.surface >= 1 && d.surface <= n.surfaces, "a surface out of range");
         for (int v : d.vertices) check(v >= 1 && v <= n.vertices, "a vertex out of range");
         if (d.kind == NodeKind::Spline)
-          check(d.controls.size() == static_cast<std::size_t>(d.nu) * static_cast<std::size_t>(d.nv),
-                "spline control count");
+          check(
+              d.controls.size() == static_cast<std::size_t>(d.nu) * static_cast<std::size_t>(d.nv),
+              "spline control count");
       }
     } catch (const io::InputError& e) {
       check(e.where().file == "fuzz.cgl", "an error without the file");
