@@ -484,6 +484,11 @@ TEST(CglSceneFile, SurfaceErrors) {
   std::string t = p.text();
   expectError(readError(t), lineOf(t, "3 lambert"), "surface 2 (lambert normal), field count",
               "the surface number 2", "'3'");
+  p.surfaces = {"l lambert normal 0.0 0.0 0.0\n7.0\n" + flat(0.5)};
+  t = p.text();
+  expectError(readError(t), lineOf(t, "l lambert"), "surface 1, field count",
+              "'1 (lambert|phong|cook)", "the letter l for the digit 1? --lenient reads it as 1");
+  EXPECT_EQ(readScene(t, "t.cgl", ReadOptions{true}).surfaces.size(), 1u);
   p.surfaces = {"1 gouraud normal 0.0 0.0 0.0\n7.0\n" + flat(0.5)};
   t = p.text();
   expectError(readError(t), lineOf(t, "gouraud"), "field model", "lambert, phong or cook",
