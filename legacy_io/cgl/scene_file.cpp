@@ -1,6 +1,6 @@
 // The CGL scene-description file reader (Sweeney 1985, Appendix 1). The
 // choices the manual leaves open and the repairs of the lenient reader are in
-// docs/cgl/deviations.md (ids CGL-E1..E10, CGL-Q1..Q15, CGL-D1..D3), the
+// docs/cgl/deviations.md (ids CGL-E1 to CGL-E10, CGL-Q1 to CGL-Q15, CGL-D1 to CGL-D3), the
 // format for users in docs/cgl/scene-format.md.
 #include "legacy_io/cgl/scene_file.h"
 
@@ -21,11 +21,11 @@ namespace prime::cgl {
 namespace {
 
 constexpr std::uintmax_t kMaxBytes = std::uintmax_t{64} << 20;  // CGL-D2
-constexpr std::string_view kBullet = "\xE2\x80\xA2";             // U+2022, the OCR's '*' (CGL-E1)
+constexpr std::string_view kBullet = "\xE2\x80\xA2";            // U+2022, the OCR's '*' (CGL-E1)
 
 const std::vector<std::string>& programKeywords() {
   static const std::vector<std::string> k = {
-      "output", "yhigh",  "ylow",       "xleft", "xright",      "depth",  "shadows",
+      "output", "yhigh",      "ylow",       "xleft", "xright",      "depth",  "shadows",
       "memory", "brightness", "background", "quiet", "aathreshold", "aalevel"};
   return k;
 }
@@ -42,8 +42,8 @@ const std::vector<std::string>& lightKeywords() {
   return k;
 }
 const std::vector<std::string>& nodeKeywords() {
-  static const std::vector<std::string> k = {"translate", "scale",   "rotate",  "sphere", "cylinder",
-                                             "polygon",   "fractal", "spline",  "box",    "dummy"};
+  static const std::vector<std::string> k = {"translate", "scale",   "rotate", "sphere", "cylinder",
+                                             "polygon",   "fractal", "spline", "box",    "dummy"};
   return k;
 }
 bool among(const std::vector<std::string>& list, std::string_view w) {
@@ -224,10 +224,10 @@ class Reader {
       std::int64_t v = 0;
       const auto res = std::from_chars(w.data(), w.data() + w.size(), v);
       if (w.empty() || res.ec != std::errc() || res.ptr != w.data() + w.size()) {
-        if (w == "l" || (w.find('l') != std::string_view::npos &&
-                         std::all_of(w.begin(), w.end(), [](char c) {
-                           return (c >= '0' && c <= '9') || c == 'l';
-                         })))
+        if (w == "l" ||
+            (w.find('l') != std::string_view::npos && std::all_of(w.begin(), w.end(), [](char c) {
+               return (c >= '0' && c <= '9') || c == 'l';
+             })))
           fail(t, field, expected,
                shown(t.text) + " (the letter l for the digit 1? --lenient reads it as 1)");
         fail(t, field, expected, shown(t.text));
@@ -241,7 +241,8 @@ class Reader {
       const Token& t = take("count", expected);
       std::string w = t.text;
       if (r_.lenient_ && !allDigits(w) && w.find('l') != std::string::npos &&
-          std::all_of(w.begin(), w.end(), [](char c) { return (c >= '0' && c <= '9') || c == 'l'; })) {
+          std::all_of(w.begin(), w.end(),
+                      [](char c) { return (c >= '0' && c <= '9') || c == 'l'; })) {
         std::replace(w.begin(), w.end(), 'l', '1');
         r_.repair(r_.lines_[line_].number, "read the letter 'l' of the count " + shown(t.text) +
                                                " as the digit 1: " + w + " (CGL-E4)");
@@ -263,19 +264,17 @@ class Reader {
       if (!among(valid, t.text)) fail(t, field, expected, shown(t.text) + hint);
       return t.text;
     }
-    char axis(const std::string& field) {
-      return keyword(field, {"x", "y", "z"})[0];
-    }
+    char axis(const std::string& field) { return keyword(field, {"x", "y", "z"})[0]; }
 
    private:
     bool advance() {
       if (section_ == Section::Nodes && !r_.orphans_.empty()) {
         const std::size_t o = r_.orphans_.front();
         r_.orphans_.pop_front();
-        r_.repair(r_.lines_[o].number,
-                  "took the line " + shown(r_.lines_[o].raw) + ", printed before the header of " +
-                      name_ + " (line " + std::to_string(r_.lines_[line_].number) +
-                      "), as that record's missing fields (CGL-E8)");
+        r_.repair(r_.lines_[o].number, "took the line " + shown(r_.lines_[o].raw) +
+                                           ", printed before the header of " + name_ + " (line " +
+                                           std::to_string(r_.lines_[line_].number) +
+                                           "), as that record's missing fields (CGL-E8)");
         line_ = o;
         tok_ = 0;
         return true;
@@ -321,8 +320,8 @@ class Reader {
       int column = 1;
       std::size_t i = 0;
       while (i < l.raw.size()) {
-        while (i < l.raw.size() && (l.raw[i] == ' ' || l.raw[i] == '\t' || l.raw[i] == '\f' ||
-                                    l.raw[i] == '\v'))
+        while (i < l.raw.size() &&
+               (l.raw[i] == ' ' || l.raw[i] == '\t' || l.raw[i] == '\f' || l.raw[i] == '\v'))
           ++i, ++column;
         if (i >= l.raw.size()) break;
         Token t;
@@ -351,10 +350,10 @@ class Reader {
       return;
     }
     if (!lenient_) return;
-    if (std::string_view(first).starts_with(kBullet) || std::string_view(first).starts_with("\\*")) {
+    if (std::string_view(first).starts_with(kBullet) ||
+        std::string_view(first).starts_with("\\*")) {
       l.comment = true;
-      repair(l.number, std::string("read '") +
-                           (first[0] == '\\' ? "\\*" : std::string(kBullet)) +
+      repair(l.number, std::string("read '") + (first[0] == '\\' ? "\\*" : std::string(kBullet)) +
                            "' as the comment mark '*' (CGL-E1)");
       return;
     }
@@ -378,8 +377,8 @@ class Reader {
       std::string now;
       for (const auto& t : l.tokens) now += (now.empty() ? "" : " ") + t.text;
       repair(l.number, "joined " + std::to_string(joins) + " lone sign" + (joins > 1 ? "s" : "") +
-                           " to the number after " + (joins > 1 ? "each" : "it") + ": " + shown(now) +
-                  " (CGL-E5)");
+                           " to the number after " + (joins > 1 ? "each" : "it") + ": " +
+                           shown(now) + " (CGL-E5)");
     }
   }
 
@@ -400,7 +399,8 @@ class Reader {
   bool isCount(const std::string& w) const {
     if (allDigits(w)) return true;
     return lenient_ && w.find('l') != std::string::npos &&
-           std::all_of(w.begin(), w.end(), [](char c) { return (c >= '0' && c <= '9') || c == 'l'; });
+           std::all_of(w.begin(), w.end(),
+                       [](char c) { return (c >= '0' && c <= '9') || c == 'l'; });
   }
 
   void repair(int line, std::string what) {
@@ -430,7 +430,8 @@ class Reader {
     if (l.tokens.empty()) return "";
     const std::string& f = l.tokens[0].text;
     if (std::string_view(f).starts_with(kBullet) || std::string_view(f).starts_with("\\*"))
-      return " (a comment begins with '*'; --lenient also reads '\xE2\x80\xA2' and '\\*' as comment "
+      return " (a comment begins with '*'; --lenient also reads '\xE2\x80\xA2' and '\\*' as "
+             "comment "
              "marks)";
     if (l.tokens.size() == 1 && f == "vertices")
       return " (a comment begins with '*'; --lenient reads a bare 'vertices' line as a comment)";
@@ -453,9 +454,9 @@ class Reader {
     io::InputLocation w{display_, l.number};
     w.column = l.tokens.empty() ? 1 : l.tokens[0].column;
     const std::size_t start = l.raw.find_first_not_of(" \t\f\v");
-    throw io::InputError(w, what, expected,
-                         shown(start == std::string::npos ? l.raw : l.raw.substr(start)) +
-                             hintFor(l));
+    throw io::InputError(
+        w, what, expected,
+        shown(start == std::string::npos ? l.raw : l.raw.substr(start)) + hintFor(l));
   }
 
   // ---- sections -------------------------------------------------------
@@ -521,16 +522,15 @@ void Reader::numbersOfThings() {
   const std::string e = "a count 0 or more";
   n.programParameters = static_cast<int>(
       r.integer("number-of-program-parameters", 0, 1000000, e + " (7 integers open the file)"));
-  n.displayParameters =
-      static_cast<int>(r.integer("number-of-display-parameters", 0, 1000000, e));
+  n.displayParameters = static_cast<int>(r.integer("number-of-display-parameters", 0, 1000000, e));
   n.vertices = static_cast<int>(r.integer("number-of-vertices", 0, 100000000, e));
   n.surfaces = static_cast<int>(r.integer("number-of-surface-descriptors", 0, 100000000, e));
   n.lights = static_cast<int>(r.integer("number-of-light-sources", 0, 100000000, e));
   n.nodes = static_cast<int>(r.integer("number-of-scene-nodes", 1, 100000000,
                                        "a count 1 or more (a scene has at least its root; "
                                        "CGL-Q10)"));
-  n.root = static_cast<int>(r.integer("DAG-root-node", 1, n.nodes,
-                                      "a scene-node number 1-" + std::to_string(n.nodes)));
+  n.root = static_cast<int>(
+      r.integer("DAG-root-node", 1, n.nodes, "a scene-node number 1-" + std::to_string(n.nodes)));
   done(r);
 }
 
@@ -552,8 +552,8 @@ void Reader::programParameter(int k) {
   auto& g = p.given;
   auto once = [&](bool& given) {
     if (given)
-      warn(lineAt(j), "program parameter '" + kw +
-                          "' given again: the later value is used (CGL-Q4)");
+      warn(lineAt(j),
+           "program parameter '" + kw + "' given again: the later value is used (CGL-Q4)");
     given = true;
   };
   const std::string pixel = "an integer 0-511 (Table 8)";
@@ -582,9 +582,10 @@ void Reader::programParameter(int k) {
     once(g.memory);
     p.memory = static_cast<int>(r.integer("memory", 1, 4096, "an integer, Mbytes, 1 or more"));
     if (p.memory > 24)
-      warn(r.at(r.last()), "memory " + std::to_string(p.memory) +
-                        " Mbytes is above Table 8's 1-24 (the VAX's address space); a figure only "
-                        "in this port (CGL-Q3)");
+      warn(r.at(r.last()),
+           "memory " + std::to_string(p.memory) +
+               " Mbytes is above Table 8's 1-24 (the VAX's address space); a figure only "
+               "in this port (CGL-Q3)");
   } else if (kw == "brightness") {
     once(g.brightness);
     p.brightness = r.realIn("brightness", 0.0, 1.0, "a real number 0.0-1.0 (Table 8)");
@@ -603,8 +604,8 @@ void Reader::programParameter(int k) {
     const double v = r.realIn("aathreshold", std::numeric_limits<double>::min(),
                               std::numeric_limits<double>::max(), e);
     if (v < 5.0 || v > 100.0)
-      warn(lineAt(j), "aathreshold " + std::to_string(v) +
-                          " is outside Table 8's 5.0-100.0 (CGL-Q2)");
+      warn(lineAt(j),
+           "aathreshold " + std::to_string(v) + " is outside Table 8's 5.0-100.0 (CGL-Q2)");
     p.aathreshold = v;
   } else if (kw == "aalevel") {
     once(g.aalevel);
@@ -651,8 +652,7 @@ void Reader::displayParameter(int k) {
     const Vec3 v = xyz(how == "towards" ? "point" : "direction");
     d.sight = how == "towards" ? v - d.eye : v;
     if (d.sight == Vec3{0, 0, 0})
-      throw io::InputError(lineAt(j), name + ", field sight",
-                           "a direction other than (0, 0, 0)",
+      throw io::InputError(lineAt(j), name + ", field sight", "a direction other than (0, 0, 0)",
                            how == "towards" ? "the eye point itself" : "(0, 0, 0)");
     if (how == "towards") sightTowardsLine_ = j;
   } else if (kw == "up") {
@@ -691,8 +691,8 @@ void Reader::vertex(int n) {
 // Lenient only (CGL-E10): the ambience descriptor is not introduced by a
 // keyword, so a short colour-vector in the last surface could run on into it.
 // It is found by counting back from the first light (or, with no lights, the
-// first scene node): its last 33 numbers are the ambience vector and the one
-// before them k_a. Returns the k_a line (colour-vectors stop before it).
+// first scene node): its 33 numbers come last and the one before them is k_a.
+// Returns the k_a line (colour-vectors of surfaces stop before it).
 std::size_t Reader::findAmbienceBoundary() const {
   std::size_t stop = lines_.size();
   for (std::size_t j = next_; j < lines_.size(); ++j) {
@@ -705,7 +705,12 @@ std::size_t Reader::findAmbienceBoundary() const {
       break;
     }
   }
+  // The nearest line before `stop` holding one number with at least 33
+  // numbers after it is k_a (parameter lines of scene nodes printed before
+  // their header may stand between the ambience and `stop`); failing that,
+  // the line of the 34th number counted back.
   int numbers = 0;
+  std::size_t fallback = std::numeric_limits<std::size_t>::max();
   for (std::size_t j = stop; j-- > next_;) {
     const Line& l = lines_[j];
     if (l.comment) continue;
@@ -714,10 +719,12 @@ std::size_t Reader::findAmbienceBoundary() const {
       if (!isReal(t.text)) break;
       ++here;
     }
+    if (here == 1 && numbers >= kSpectrumSamples) return j;
     numbers += here;
-    if (numbers >= kSpectrumSamples + 1) return j;
+    if (numbers >= kSpectrumSamples + 1 && fallback == std::numeric_limits<std::size_t>::max())
+      fallback = j;
   }
-  return std::numeric_limits<std::size_t>::max();
+  return fallback;
 }
 
 Spectrum Reader::colourVector(const std::string& what, Section section) {
@@ -738,12 +745,14 @@ Spectrum Reader::colourVector(const std::string& what, Section section) {
       for (int c = 0; c < rows[row]; ++c, ++k) {
         const std::string field = "colour-vector sample " + std::to_string(k + 1) + " (" +
                                   std::to_string(380 + 10 * k) + " nm)";
-        const std::string e = "a real number (a colour-vector is 33 numbers, written 10, 10, 10 "
-                              "and 3 to a line)";
+        const std::string e =
+            "a real number (a colour-vector is 33 numbers, written 10, 10, 10 "
+            "and 3 to a line)";
         if (c >= static_cast<int>(l.tokens.size()))
-          throw io::InputError(lineAt(j), what + ", field " + field, e,
-                               "end of line after " + std::to_string(c) + " numbers" +
-                                   (l.tokens.empty() ? "" : " (--lenient pads a short colour-vector)"));
+          throw io::InputError(
+              lineAt(j), what + ", field " + field, e,
+              "end of line after " + std::to_string(c) + " numbers" +
+                  (l.tokens.empty() ? "" : " (--lenient pads a short colour-vector)"));
         const Token& t = l.tokens[static_cast<std::size_t>(c)];
         io::InputLocation w = lineAt(j);
         w.column = t.column;
@@ -804,7 +813,8 @@ Spectrum Reader::colourVector(const std::string& what, Section section) {
     // three: each short row lost values at its end (CGL-E3).
     int shortfall = 0;
     if (perLine.size() == 4 && perLine[3] == 3) {
-      for (int r = 0; r < 3; ++r) shortfall += std::max(0, 10 - perLine[static_cast<std::size_t>(r)]);
+      for (int r = 0; r < 3; ++r)
+        shortfall += std::max(0, 10 - perLine[static_cast<std::size_t>(r)]);
     }
     if (perLine.size() == 4 && perLine[3] == 3 && shortfall == missing &&
         std::all_of(perLine.begin(), perLine.begin() + 3, [](int c) { return c <= 10; })) {
@@ -814,8 +824,8 @@ Spectrum Reader::colourVector(const std::string& what, Section section) {
         for (int i = 0; i < c; ++i) out.push_back(values[k++]);
         for (int i = c; i < rows[r]; ++i) out.push_back(out.back());
         if (c < rows[r])
-          how += (how.empty() ? "" : "; ") + std::string("row ") + std::to_string(r + 1) +
-                 " has " + std::to_string(c) + " of " + std::to_string(rows[r]) +
+          how += (how.empty() ? "" : "; ") + std::string("row ") + std::to_string(r + 1) + " has " +
+                 std::to_string(c) + " of " + std::to_string(rows[r]) +
                  " numbers: its last value repeated at its end";
       }
       how += " (CGL-E3)";
@@ -831,12 +841,12 @@ Spectrum Reader::colourVector(const std::string& what, Section section) {
     repair(lines_[first].number, what + ": colour-vector of " + std::to_string(values.size()) +
                                      " numbers, not 33; padded: " + how);
   }
-  if (values.size() == kSpectrumSamples && !(perLine.size() == 4 && perLine[0] == 10 &&
-                                             perLine[1] == 10 && perLine[2] == 10)) {
+  if (values.size() == kSpectrumSamples &&
+      !(perLine.size() == 4 && perLine[0] == 10 && perLine[1] == 10 && perLine[2] == 10)) {
     std::copy(values.begin(), values.end(), s.begin());
-    repair(lines_[first].number,
-           what + ": colour-vector read over " + std::to_string(perLine.size()) +
-               " lines, not the 10/10/10/3 layout (CGL-E10)");
+    repair(lines_[first].number, what + ": colour-vector read over " +
+                                     std::to_string(perLine.size()) +
+                                     " lines, not the 10/10/10/3 layout (CGL-E10)");
   } else if (values.size() == kSpectrumSamples) {
     std::copy(values.begin(), values.end(), s.begin());
   }
@@ -851,8 +861,9 @@ void Reader::surface(int n) {
   if (l.tokens.size() >= 3) name += " (" + l.tokens[1].text + " " + l.tokens[2].text + ")";
   if (!isCount(l.tokens[0].text))
     notARecord(j, base + ", field count",
-               "'" + std::to_string(n) + " (lambert|phong|cook) (textured|normal) reflect refract "
-                                         "index'");
+               "'" + std::to_string(n) +
+                   " (lambert|phong|cook) (textured|normal) reflect refract "
+                   "index'");
   Record r(*this, j, name, Section::Surfaces);
   r.count("the surface number " + std::to_string(n) +
               " (surfaces are numbered consecutively from 1; the first record counts " +
@@ -899,8 +910,9 @@ void Reader::surface(int n) {
         (cl.tokens[0].text[0] == '/' || cl.tokens[0].text == "last" ||
          (cl.tokens.size() >= 3 && isReal(cl.tokens[1].text) && isReal(cl.tokens[2].text)))) {
       s.diffuse = 7.0;
-      repair(cl.number, name + ": no diffuse line before the texture line; diffuse 7.0 assumed, "
-                               "the value of the document's Figure 59 (CGL-E9)");
+      repair(cl.number, name +
+                            ": no diffuse line before the texture line; diffuse 7.0 assumed, "
+                            "the value of the document's Figure 59 (CGL-E9)");
     } else {
       Record c(*this, k, name, Section::Surfaces);
       const std::string lo = "a real number 0.0 or more";
@@ -984,8 +996,9 @@ void Reader::ambience() {
   a.ka = r.realIn("k_a", 0.0, std::numeric_limits<double>::max(),
                   "a real number 0.0 or more (the ambient-reflection constant, advised 0.0-0.001)");
   if (a.ka > 0.001)
-    warn(a.where, "ambience k_a is above the 0.0-0.001 the manual advises (Appendix 1 section "
-                  "10; CGL-Q3)");
+    warn(a.where,
+         "ambience k_a is above the 0.0-0.001 the manual advises (Appendix 1 section "
+         "10; CGL-Q3)");
   done(r);
   a.colour = colourVector("ambience descriptor", Section::Ambience);
 }
@@ -1017,8 +1030,9 @@ void Reader::light(int n) {
   L.dw = r.realIn("dw", 0.0, std::numeric_limits<double>::max(),
                   "a real number 0.0 or more (the solid angle, advised 0.0001-0.005)");
   if (L.dw < 0.0001 || L.dw > 0.005)
-    warn(L.where, name + ": dw outside the 0.0001-0.005 the manual calls useful (Appendix 1 "
-                         "section 11; CGL-Q15)");
+    warn(L.where, name +
+                      ": dw outside the 0.0001-0.005 the manual calls useful (Appendix 1 "
+                      "section 11; CGL-Q15)");
   done(r);
   L.colour = colourVector(name, Section::Lights);
   scene_.lights.push_back(L);
@@ -1063,11 +1077,11 @@ void Reader::node(int n) {
   const double tiny = std::numeric_limits<double>::min();
   // A reference into a table: 1..size, refused outright when the table is empty.
   auto reference = [&](const std::string& field, const char* table, int size) {
-    const std::string e = size == 0 ? std::string("a ") + table + " number (the file has none)"
-                                    : std::string("a ") + table + " number 1-" +
-                                          std::to_string(size);
-    const int v = static_cast<int>(r.integer(field, std::numeric_limits<int>::min(),
-                                             std::numeric_limits<int>::max(), e));
+    const std::string e = size == 0
+                              ? std::string("a ") + table + " number (the file has none)"
+                              : std::string("a ") + table + " number 1-" + std::to_string(size);
+    const int v = static_cast<int>(
+        r.integer(field, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), e));
     if (v < 1 || v > size) r.fail(r.last(), field, e, shown(r.last().text));
     return v;
   };
@@ -1082,8 +1096,9 @@ void Reader::node(int n) {
     d.xyz[2] = r.real("z");
     if (d.kind == NodeKind::Scale && (d.xyz[0] == 0.0 || d.xyz[1] == 0.0 || d.xyz[2] == 0.0)) {
       d.ignored = true;
-      warn(d.where, name + ": a scale factor is 0.0: warning, node ignored (Appendix 1 section "
-                           "13; CGL-Q7)");
+      warn(d.where, name +
+                        ": a scale factor is 0.0: warning, node ignored (Appendix 1 section "
+                        "13; CGL-Q7)");
     }
   } else if (kw == "rotate") {
     d.kind = NodeKind::Rotate;
@@ -1116,8 +1131,7 @@ void Reader::node(int n) {
     d.kind = NodeKind::Polygon;
     d.surface = surface();
     const int count = static_cast<int>(r.integer(
-        "n", 3, 4,
-        "3 or 4 (\"only triangles and rectangles\", Appendix 1 section 13; CGL-Q8)"));
+        "n", 3, 4, "3 or 4 (\"only triangles and rectangles\", Appendix 1 section 13; CGL-Q8)"));
     for (int v = 1; v <= count; ++v) d.vertices.push_back(vertexRef("v" + std::to_string(v)));
   } else if (kw == "fractal") {
     d.kind = NodeKind::Fractal;
@@ -1125,8 +1139,9 @@ void Reader::node(int n) {
     d.divisions = static_cast<int>(
         r.integer("divisions", 1, 10, "an integer 1-10 (the manual: 1-9; CGL-Q9)"));
     if (d.divisions == 10)
-      warn(d.where, name + ": 10 divisions, above the manual's 1-9 (Figure 18 claims 10; "
-                           "CGL-Q9)");
+      warn(d.where, name +
+                        ": 10 divisions, above the manual's 1-9 (Figure 18 claims 10; "
+                        "CGL-Q9)");
     d.h = r.real("h", "a real number (advised 0.5-1.5)");
     if (d.h < 0.5 || d.h > 1.5)
       warn(d.where, name + ": h outside the 0.5-1.5 the manual advises (CGL-Q3)");
@@ -1300,8 +1315,7 @@ bool looksLikeCgl(const std::string& text) {
       return true;
     if (first[0] == '*' || std::string_view(first).starts_with(kBullet)) continue;
     if (!(words >> second)) continue;
-    const bool count =
-        allDigits(first) || first == "l";  // the OCR's 'l lambert' (CGL-E4)
+    const bool count = allDigits(first) || first == "l";  // the OCR's 'l lambert' (CGL-E4)
     if (count && anyKeyword(second)) return true;
   }
   return false;

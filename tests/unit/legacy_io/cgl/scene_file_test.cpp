@@ -31,7 +31,8 @@ std::string flat(double v) {
 // Samples 1..33 as k / 100 (sample k is k/100), in the manual's layout.
 std::string ramp() {
   std::ostringstream s;
-  for (int k = 1; k <= 33; ++k) s << k / 100.0 << (k == 10 || k == 20 || k == 30 || k == 33 ? "\n" : " ");
+  for (int k = 1; k <= 33; ++k)
+    s << k / 100.0 << (k == 10 || k == 20 || k == 30 || k == 33 ? "\n" : " ");
   return s.str();
 }
 
@@ -49,8 +50,8 @@ struct Parts {
   std::string text() const {
     std::ostringstream s;
     s << "* a test scene\n"
-      << program.size() << " " << display.size() << " " << vertices.size() << " "
-      << surfaces.size() << " " << lights.size() << " " << nodes.size() << " " << root << "\n";
+      << program.size() << " " << display.size() << " " << vertices.size() << " " << surfaces.size()
+      << " " << lights.size() << " " << nodes.size() << " " << root << "\n";
     for (const auto* section : {&program, &display, &vertices, &surfaces})
       for (const auto& r : *section) s << r << (r.ends_with("\n") ? "" : "\n");
     s << ambience;
@@ -114,19 +115,26 @@ std::string cookSurface(int n) {
 
 TEST(CglSceneFile, CompleteSceneEveryField) {
   Parts p;
-  p.program = {"1 output /tmp/out.rle", "2 yhigh 286",  "3 ylow 02",        "4 xleft 31",
-               "5 xright 480",          "6 depth 3",    "7 shadows",        "8 memory 6",
-               "9 brightness 0.8",      "10 background 10 20 255 ignored",  "11 quiet",
-               "12 aathreshold 40.0",   "13 aalevel 4"};
+  p.program = {"1 output /tmp/out.rle",
+               "2 yhigh 286",
+               "3 ylow 02",
+               "4 xleft 31",
+               "5 xright 480",
+               "6 depth 3",
+               "7 shadows",
+               "8 memory 6",
+               "9 brightness 0.8",
+               "10 background 10 20 255 ignored",
+               "11 quiet",
+               "12 aathreshold 40.0",
+               "13 aalevel 4"};
   // Counts of parameters need not be consecutive ("restrictions are relaxed").
-  p.display = {"1 eye 1.0 2.0 3.0", "7 sight towards 0.0 0.0 0.0", "3 up 0.0 0.0 1.0",
-               "3 dist 2.0", "9 viewport 1.5 2.5"};
-  p.surfaces = {
-      "1 lambert normal 0.0 0.0 0.0\n7.0\n" + ramp(),
-      "2 lambert textured 0.1 0.0 1.0\n5.0\n/u/majsweeney/textures/checkerboard 1 2\n",
-      "3 phong normal 0.6 0.0 0.0\n7.0 3.0 25.0 trailing words\n" + flat(1.2),
-      "4 phong textured 0.0 0.8 1.2\n7.0 1.0 15.0\nlast 2.0 0.5\n",
-      cookSurface(5)};
+  p.display = {"1 eye 1.0 2.0 3.0", "7 sight towards 0.0 0.0 0.0", "3 up 0.0 0.0 1.0", "3 dist 2.0",
+               "9 viewport 1.5 2.5"};
+  p.surfaces = {"1 lambert normal 0.0 0.0 0.0\n7.0\n" + ramp(),
+                "2 lambert textured 0.1 0.0 1.0\n5.0\n/u/majsweeney/textures/checkerboard 1 2\n",
+                "3 phong normal 0.6 0.0 0.0\n7.0 3.0 25.0 trailing words\n" + flat(1.2),
+                "4 phong textured 0.0 0.8 1.2\n7.0 1.0 15.0\nlast 2.0 0.5\n", cookSurface(5)};
   p.lights = {"1 infinity 0.6 1.0 0.6 0.0006\n" + flat(100.0),
               "2 inscene +0.1 -0.0 .5 0.001\n" + ramp()};
   p.nodes = {"1 rotate 02 00 x -22.0",
@@ -167,10 +175,9 @@ TEST(CglSceneFile, CompleteSceneEveryField) {
   EXPECT_TRUE(g.quiet);
   EXPECT_EQ(g.aathreshold, 40.0);
   EXPECT_EQ(g.aalevel, 4);
-  EXPECT_TRUE(g.given.output && g.given.yhigh && g.given.ylow && g.given.xleft &&
-              g.given.xright && g.given.depth && g.given.shadows && g.given.memory &&
-              g.given.brightness && g.given.background && g.given.quiet && g.given.aathreshold &&
-              g.given.aalevel);
+  EXPECT_TRUE(g.given.output && g.given.yhigh && g.given.ylow && g.given.xleft && g.given.xright &&
+              g.given.depth && g.given.shadows && g.given.memory && g.given.brightness &&
+              g.given.background && g.given.quiet && g.given.aathreshold && g.given.aalevel);
   // brightness and background together: read, with a warning (CGL-Q14).
   EXPECT_TRUE(hasNote(f.warnings, 2, "both brightness and background")) << listed(f.warnings);
 
@@ -293,12 +300,13 @@ TEST(CglSceneFile, DocumentSplineTube) {
   // Appendix 1 section 13's spline node, verbatim: the u count restarts at 1
   // in each of the 5 groups of 4 (CGL-Q6).
   Parts p;
-  p.nodes = {"1 spline 00 00 1 4 closed 5 double 8 0.6\n"
-             "1 -0.2 0.8 -0.2\n2 -0.2 0.8 0.2\n3 0.2 0.8 0.2\n4 0.2 0.8 -0.2\n"
-             "1 -0.3 0.6 -0.3\n2 -0.3 0.6 0.3\n3 0.3 0.6 0.3\n4 0.3 0.6 -0.3\n"
-             "1 -0.4 0.4 -0.4\n2 -0.4 0.4 0.4\n3 0.4 0.4 0.4\n4 0.4 0.4 -0.4\n"
-             "1 -0.3 0.2 -0.3\n2 -0.3 0.2 0.3\n3 0.3 0.2 0.3\n4 0.3 0.2 -0.3\n"
-             "1 -0.2 0.0 -0.2\n2 -0.2 0.0 0.2\n3 0.2 0.0 0.2\n4 0.2 0.0 -0.2\n"};
+  p.nodes = {
+      "1 spline 00 00 1 4 closed 5 double 8 0.6\n"
+      "1 -0.2 0.8 -0.2\n2 -0.2 0.8 0.2\n3 0.2 0.8 0.2\n4 0.2 0.8 -0.2\n"
+      "1 -0.3 0.6 -0.3\n2 -0.3 0.6 0.3\n3 0.3 0.6 0.3\n4 0.3 0.6 -0.3\n"
+      "1 -0.4 0.4 -0.4\n2 -0.4 0.4 0.4\n3 0.4 0.4 0.4\n4 0.4 0.4 -0.4\n"
+      "1 -0.3 0.2 -0.3\n2 -0.3 0.2 0.3\n3 0.3 0.2 0.3\n4 0.3 0.2 -0.3\n"
+      "1 -0.2 0.0 -0.2\n2 -0.2 0.0 0.2\n3 0.2 0.0 0.2\n4 0.2 0.0 -0.2\n"};
   const SceneFile f = readScene(p.text(), "t.cgl");
   const auto& s = f.nodes[0];
   EXPECT_EQ(s.nu, 4);
@@ -314,8 +322,7 @@ TEST(CglSceneFile, DocumentSplineTube) {
   const auto at = text.find("1 -0.3 0.6 -0.3");
   text.replace(at, 1, "5");
   expectError(readError(text), lineOf(text, "5 -0.3 0.6 -0.3"),
-              "control vertex 1 of group 2 of 5, field count", "the u count 1 (it restarts",
-              "'5'");
+              "control vertex 1 of group 2 of 5, field count", "the u count 1 (it restarts", "'5'");
 }
 
 TEST(CglSceneFile, DocumentCookCopperShape) {
@@ -331,9 +338,10 @@ TEST(CglSceneFile, DocumentCookCopperShape) {
       "0.1720 0.1890 0.2050 0.2200 0.2350 0.2500 0.2650 0.3000 0.3350 0.4120\n"
       "0.4900 0.5520 0.6150 0.6420 0.6700 0.6830 0.6970 0.7110 0.7250 0.7320\n"
       "0.7400 0.7480 0.7550\n";
-  std::string s = "* surface reflective copper\n1 cook normal 0.8 0.0 0.0\n0.0\n"
-                  "* normal reflectance vs wavelength\n" +
-                  normal + "1.0 0.3\n* fresnel reflectance vs wavelength & angle\n";
+  std::string s =
+      "* surface reflective copper\n1 cook normal 0.8 0.0 0.0\n0.0\n"
+      "* normal reflectance vs wavelength\n" +
+      normal + "1.0 0.3\n* fresnel reflectance vs wavelength & angle\n";
   for (int a = 0; a < 66; ++a) s += fresnel;
   Parts p;
   p.surfaces = {s};
@@ -359,10 +367,8 @@ TEST(CglSceneFile, DocumentCookCopperShape) {
 TEST(CglSceneFile, NumbersOfThingsErrors) {
   expectError(readError("* c\n5 2 4 2 1 4\n"), 2, "DAG-root-node", "a scene-node number",
               "end of line");
-  expectError(readError("1 2 x 4 5 6 7\n"), 1, "number-of-vertices", "a count 0 or more",
-              "'x'");
-  expectError(readError("0 0 0 0 0 0 0\n"), 1, "number-of-scene-nodes", "at least its root",
-              "'0'");
+  expectError(readError("1 2 x 4 5 6 7\n"), 1, "number-of-vertices", "a count 0 or more", "'x'");
+  expectError(readError("0 0 0 0 0 0 0\n"), 1, "number-of-scene-nodes", "at least its root", "'0'");
   expectError(readError("0 0 0 0 0 2 3\n"), 1, "DAG-root-node", "1-2", "'3'");
   expectError(readError("* only a comment\n"), 1, "numbers-of-things", "a record", "end of file");
 }
@@ -438,8 +444,13 @@ TEST(CglSceneFile, DisplayParameterErrors) {
 TEST(CglSceneFile, NumberSyntax) {
   Parts p;
   const std::vector<std::pair<std::string, std::string>> bad = {
-      {"nan", "'nan'"}, {"inf", "'inf'"},   {"0x1p3", "'0x1p3'"}, {"1.0.0", "'1.0.0'"},
-      {"1e", "'1e'"},   {"abc", "'abc'"},   {"1e999", "out of range"},
+      {"nan", "'nan'"},
+      {"inf", "'inf'"},
+      {"0x1p3", "'0x1p3'"},
+      {"1.0.0", "'1.0.0'"},
+      {"1e", "'1e'"},
+      {"abc", "'abc'"},
+      {"1e999", "out of range"},
       {"+", "a sign apart from its number"}};
   for (const auto& [word, found] : bad) {
     p.vertices = {"1 -1 0 -1", "2 -1 " + word + " 1", "3 1 0 1", "4 1 0 -1"};
@@ -473,14 +484,19 @@ TEST(CglSceneFile, SurfaceErrors) {
   std::string t = p.text();
   expectError(readError(t), lineOf(t, "3 lambert"), "surface 2 (lambert normal), field count",
               "the surface number 2", "'3'");
+  p.surfaces = {"l lambert normal 0.0 0.0 0.0\n7.0\n" + flat(0.5)};
+  t = p.text();
+  expectError(readError(t), lineOf(t, "l lambert"), "surface 1, field count",
+              "'1 (lambert|phong|cook)", "the letter l for the digit 1? --lenient reads it as 1");
+  EXPECT_EQ(readScene(t, "t.cgl", ReadOptions{true}).surfaces.size(), 1u);
   p.surfaces = {"1 gouraud normal 0.0 0.0 0.0\n7.0\n" + flat(0.5)};
   t = p.text();
   expectError(readError(t), lineOf(t, "gouraud"), "field model", "lambert, phong or cook",
               "'gouraud'");
   p.surfaces = {"1 cook textured 0.0 0.0 0.0\n0.0\n" + flat(0.5)};
   t = p.text();
-  expectError(readError(t), lineOf(t, "cook"), "field textured|normal",
-              "no textured Cook form", "'textured'");
+  expectError(readError(t), lineOf(t, "cook"), "field textured|normal", "no textured Cook form",
+              "'textured'");
   p.surfaces = {"1 phong normal -0.1 0.0 0.0\n7.0 1 20\n" + flat(0.5)};
   t = p.text();
   expectError(readError(t), lineOf(t, "phong"), "field reflect", "0.0-1.0", "'-0.1'");
@@ -503,8 +519,8 @@ TEST(CglSceneFile, SurfaceErrors) {
   expectError(readError(t), lineOf(t, "-7.0"), "field diffuse", "0.0 or more", "'-7.0'");
   p.surfaces = {"1 lambert textured 0.0 0.0 0.0\n7.0\nlast 1 1\n"};
   t = p.text();
-  expectError(readError(t), lineOf(t, "last"), "field pathname|last",
-              "an earlier textured surface", "'last'");
+  expectError(readError(t), lineOf(t, "last"), "field pathname|last", "an earlier textured surface",
+              "'last'");
   p.surfaces = {"1 lambert textured 0.0 0.0 0.0\n7.0\n/tex 0 1\n"};
   t = p.text();
   expectError(readError(t), lineOf(t, "/tex"), "field umod", "above 0.0", "'0'");
@@ -519,13 +535,12 @@ TEST(CglSceneFile, SurfaceErrors) {
   EXPECT_NO_THROW(readScene(p.text(), "t.cgl"));
   p.surfaces = {"1 lambert normal 0.0 0.0 0.0\n7.0\n0.5 0.5 0.5\n" + flat(0.5)};
   t = p.text();
-  expectError(readError(t), lineOf(t, "0.5 0.5 0.5\n") , "colour-vector sample 4 (410 nm)",
+  expectError(readError(t), lineOf(t, "0.5 0.5 0.5\n"), "colour-vector sample 4 (410 nm)",
               "33 numbers, written 10, 10, 10 and 3",
               "end of line after 3 numbers (--lenient pads");
   p.surfaces = {"1 lambert normal 0.0 0.0 0.0\n7.0\n-0.5 " + flat(0.5).substr(4)};
   t = p.text();
-  expectError(readError(t), lineOf(t, "-0.5 "), "colour-vector sample 1", "0.0 or more",
-              "'-0.5'");
+  expectError(readError(t), lineOf(t, "-0.5 "), "colour-vector sample 1", "0.0 or more", "'-0.5'");
   // Advice is a warning (CGL-Q3): Phong exponent 5 outside 10-100.
   p.surfaces = {"1 phong normal 0.0 0.0 0.0\n7.0 1.0 5.0\n" + flat(0.5)};
   const SceneFile f = readScene(p.text(), "t.cgl");
@@ -568,20 +583,18 @@ TEST(CglSceneFile, NodeErrors) {
     const std::string t = p.text();
     expectError(readError(t), lineOf(t, lineText), field, expected, found);
   };
-  nodeError({"1 polygon 00 00 1 5 1 2 3 4 1"}, "1 polygon",
-            "scene node 1 (polygon), field n", "3 or 4", "'5'");
+  nodeError({"1 polygon 00 00 1 5 1 2 3 4 1"}, "1 polygon", "scene node 1 (polygon), field n",
+            "3 or 4", "'5'");
   nodeError({"1 polygon 00 00 3 4 1 2 3 4"}, "1 polygon", "field surface-index",
             "a surface number 1-1", "'3'");
-  nodeError({"1 polygon 00 00 1 4 1 2 3 9"}, "1 polygon", "field v4", "a vertex number 1-4",
-            "'9'");
+  nodeError({"1 polygon 00 00 1 4 1 2 3 9"}, "1 polygon", "field v4", "a vertex number 1-4", "'9'");
   nodeError({"1 cylinder 00 00 1 0.1 2 2"}, "1 cylinder", "field v2", "other than v1", "'2'");
   nodeError({"1 sphere 00 00 1 0 0 0 -1 x y"}, "1 sphere", "field radius", "above 0.0", "'-1'");
   nodeError({"1 sphere 00 00 1 0 0 0 1 x w"}, "1 sphere", "field texture axis 2", "x, y or z",
             "'w'");
   nodeError({"1 sphere 00 00 1 0 0 0 1 y y"}, "1 sphere", "field texture axis 2",
             "other than texture axis 1", "'y'");
-  nodeError({"1 rotate 02 00 w 10", "2 dummy 00 00"}, "1 rotate", "field axis", "x, y or z",
-            "'w'");
+  nodeError({"1 rotate 02 00 w 10", "2 dummy 00 00"}, "1 rotate", "field axis", "x, y or z", "'w'");
   nodeError({"1 translate 03 00 0 0 0", "2 dummy 00 00"}, "1 translate", "field down",
             "a scene-node number 0-2", "'03'");
   nodeError({"1 translate 02 00 0 0 0", "3 dummy 00 00"}, "3 dummy",
@@ -591,8 +604,8 @@ TEST(CglSceneFile, NodeErrors) {
             "'transform'");
   nodeError({"1 fractal 00 00 1 0 1.3 0.5 9772 constrained"}, "1 fractal", "field divisions",
             "1-10", "'0'");
-  nodeError({"1 fractal 00 00 1 5 1.3 0.5 9772 loose"}, "1 fractal",
-            "field constrained|free", "constrained or free", "'loose'");
+  nodeError({"1 fractal 00 00 1 5 1.3 0.5 9772 loose"}, "1 fractal", "field constrained|free",
+            "constrained or free", "'loose'");
   nodeError({"1 spline 00 00 1 4 open 5 double 8 0.6"}, "1 spline", "field u end condition",
             "single, double, triple or closed", "'open'");
   nodeError({"1 translate 00 00 0.0 -0.8"}, "1 translate", "field z", "a real number",
@@ -667,7 +680,7 @@ TEST(CglSceneFile, NineCubesSharesSubtrees) {
       "14 polygon 00 00 1 4 8 7 4 3\n";
   Parts p;
   p.vertices = {"1 -1 -1 1", "2 -1 -1 -1", "3 1 -1 -1", "4 1 1 -1",
-                "5 -1 1 -1", "6 -1 1 1",  "7 1 1 1",   "8 1 -1 1"};
+                "5 -1 1 -1", "6 -1 1 1",   "7 1 1 1",   "8 1 -1 1"};
   p.nodes = {reconstructed};
   std::string t = p.text();
   t.replace(t.find("1 1 8 1 1 1 1"), 13, "1 1 8 1 1 14 1");
@@ -776,8 +789,8 @@ void expectCheckerboard(const SceneFile& f) {
   EXPECT_EQ(f.surfaces[1].exponent, 25.0);
   for (double v : f.surfaces[1].colour) EXPECT_EQ(v, 0.06);  // "dark gray" (CGL-E2)
   EXPECT_EQ(f.ambience.ka, 0.0005);
-  EXPECT_EQ(f.ambience.colour[0], 50.0);    // CIE D6500, 380 nm
-  EXPECT_EQ(f.ambience.colour[32], 71.6);   // 700 nm
+  EXPECT_EQ(f.ambience.colour[0], 50.0);   // CIE D6500, 380 nm
+  EXPECT_EQ(f.ambience.colour[32], 71.6);  // 700 nm
   ASSERT_EQ(f.lights.size(), 1u);
   EXPECT_EQ(f.lights[0].xyz, (Vec3{0.6, 1.0, 0.6}));
   EXPECT_EQ(f.lights[0].dw, 0.0006);
@@ -823,8 +836,9 @@ TEST(CglSceneFile, Figure59LenientRepairs) {
   SCOPED_TRACE(listed(r));
   EXPECT_TRUE(hasNote(r, 20, "bare word 'vertices'"));
   EXPECT_TRUE(hasNote(r, 26, "read the letter 'l' of the count 'l' as the digit 1"));
-  EXPECT_TRUE(hasNote(r, 32, "surface 2 (phong normal): colour-vector of 3 numbers, not 33; "
-                             "padded: the last value (0.06) repeated"));
+  EXPECT_TRUE(hasNote(r, 32,
+                      "surface 2 (phong normal): colour-vector of 3 numbers, not 33; "
+                      "padded: the last value (0.06) repeated"));
   EXPECT_TRUE(hasNote(r, 33, "as the comment mark '*'"));
   EXPECT_TRUE(hasNote(r, 47, "continued scene node 1 (rotate) (header on line 46"));
   EXPECT_TRUE(hasNote(r, 49, "continued scene node 2 (translate)"));
@@ -868,13 +882,14 @@ TEST(CglSceneFile, LenientPhongRedLostSampleInTheFirstRow) {
   // 9. The lenient reader repeats that row's last value at its end (CGL-E3),
   // keeping rows 2-4 where the printed layout puts them.
   Parts p;
-  p.surfaces = {"\\* surface: reflective phong red\n"
-                "1 phong normal 0.6 0.0 0.0\n"
-                "7.0 3.0 25.0\n"
-                "0.0127 0.0095 0.0064 0.0032 0.0000 0.0000 0.0000 0.0000 0.0000\n"
-                "0.0000 0.0000 0.0000 0.0000 0.0000 0.0000 0.0000 0.0127 0.0159 0.0286\n"
-                "0.0477 0.0637 0.0987 0.1273 0.1592 0.1910 0.2228 1.2000 1.2000 1.2000\n"
-                "1.2000 1.2000 1.2000\n"};
+  p.surfaces = {
+      "\\* surface: reflective phong red\n"
+      "1 phong normal 0.6 0.0 0.0\n"
+      "7.0 3.0 25.0\n"
+      "0.0127 0.0095 0.0064 0.0032 0.0000 0.0000 0.0000 0.0000 0.0000\n"
+      "0.0000 0.0000 0.0000 0.0000 0.0000 0.0000 0.0000 0.0127 0.0159 0.0286\n"
+      "0.0477 0.0637 0.0987 0.1273 0.1592 0.1910 0.2228 1.2000 1.2000 1.2000\n"
+      "1.2000 1.2000 1.2000\n"};
   const std::string t = p.text();
   EXPECT_THROW(readScene(t, "t.cgl"), io::InputError);
   const SceneFile f = readScene(t, "t.cgl", ReadOptions{true});
@@ -891,17 +906,54 @@ TEST(CglSceneFile, LenientPhongRedLostSampleInTheFirstRow) {
   EXPECT_TRUE(hasNote(f.repairs, lineOf(t, "\\* surface"), "'\\*' as the comment mark"));
 }
 
+TEST(CglSceneFile, LenientFindsTheAmbienceBeforeLinesOfTheFirstNode) {
+  // No lights, a 3-number grey in the last surface, and the first node's
+  // parameters printed before its header: the ambience is the one-number
+  // line nearest the first node with 33 numbers after it (CGL-E10).
+  Parts p;
+  p.surfaces = {"1 lambert normal 0.0 0.0 0.0\n7.0\n0.06 0.06 0.06\n"};
+  p.lights.clear();
+  p.nodes = {"+0.0 -0.7 +0.0\n1 translate 02 00\n2 polygon 00 00 1 4 1 2 3 4"};
+  std::string t = p.text();
+  t.replace(t.find("1 1 4 1 0 1 1"), 13, "1 1 4 1 0 2 1");
+  const SceneFile f = readScene(t, "t.cgl", ReadOptions{true});
+  for (double v : f.surfaces[0].colour) EXPECT_EQ(v, 0.06);
+  EXPECT_EQ(f.ambience.ka, 0.0005);
+  EXPECT_EQ(f.ambience.colour[32], 50.0);
+  EXPECT_EQ(f.nodes[0].xyz, (Vec3{0.0, -0.7, 0.0}));
+  EXPECT_TRUE(hasNote(f.repairs, lineOf(t, "+0.0 -0.7"),
+                      "printed before the header of scene "
+                      "node 1 (translate)"))
+      << listed(f.repairs);
+}
+
 TEST(CglSceneFile, LenientStillRefusesWhatItCannotRepair) {
   Parts p;
   p.nodes = {"1 polygon 00 00 1 5 1 2 3 4 1"};
   const std::string t = p.text();
-  expectError(readError(t, ReadOptions{true}), lineOf(t, "1 polygon"), "field n", "3 or 4",
-              "'5'");
+  expectError(readError(t, ReadOptions{true}), lineOf(t, "1 polygon"), "field n", "3 or 4", "'5'");
   // A parameter line that no header takes.
   p.nodes = {"1 polygon 00 00 1 4 1 2 3 4\n0.0 1.0 2.0"};
   const std::string u = p.text();
   expectError(readError(u, ReadOptions{true}), lineOf(u, "0.0 1.0 2.0"), "end of the scene",
               "end of file", "'0.0 1.0 2.0'");
+}
+
+TEST(CglSceneFile, FormatDocumentExampleReads) {
+  // docs/cgl/scene-format.md ends with "A complete small scene": it reads
+  // strictly, without warnings, and says what the page says it does.
+  std::ifstream in(kScenes + "/../../docs/cgl/scene-format.md", std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string doc = s.str();
+  const auto at = doc.find("```\n", doc.find("## A complete small scene")) + 4;
+  const std::string text = doc.substr(at, doc.find("```", at) - at);
+  const SceneFile f = readScene(text, "doc.cgl");
+  EXPECT_TRUE(f.warnings.empty()) << listed(f.warnings);
+  EXPECT_EQ(f.nodes.size(), 3u);
+  EXPECT_EQ(f.nodes[0].right, 3);
+  EXPECT_EQ(f.surfaces[1].reflect, 1.0);
+  EXPECT_TRUE(looksLikeCgl(text));
 }
 
 // ---------------------------------------------------------------------------
