@@ -99,8 +99,8 @@ struct BuildOptions {
 // looked).
 Scene buildScene(const SceneFile& file, const BuildOptions& options = {});
 
-// The object list as the program printed it "for inspection" (section 3.11
-// of Appendix 1's hints): one line per object node, boxes indented.
+// The object list, which the program printed for inspection (Appendix 1,
+// scene nodes): one line per object node, a box's contents indented.
 std::string describeObjects(const Scene& scene);
 
 }  // namespace prime::cgl
