@@ -6,11 +6,11 @@
 // frame buffer image). Texture maps are RLE files too (section 10).
 //
 // The manual leaves the count convention, the byte order and the window's
-// storage open; the port's choices (docs/cgl/deviations.md, CGL-Q entries):
-// the count is the number of pixels (1..255; 0 is refused), words are
-// little-endian (the VAX's order), no header, scanlines from the top (511)
-// down as they were rendered, and both files always hold the whole padded
-// 512 x 512 frame.
+// storage open; the port's choices (docs/cgl/deviations.md): the count is the
+// number of pixels (1..255; 0 is refused: CGL-Q23), words are little-endian
+// (the VAX's order) with no header (CGL-Q24), scanlines from the top (511)
+// down (left to right within each), and both files always hold the whole padded
+// 512 x 512 frame (CGL-Q25). docs/cgl/picture-files.md has an example.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -53,12 +53,14 @@ inline int blueOf(std::uint32_t w) {
 // of a scanline, a truncated word, too few or too many scanlines).
 std::vector<std::uint8_t> encodeRle(const Frame& frame);
 Frame decodeRle(const std::vector<std::uint8_t>& bytes, const std::string& display);
-// Raw: 512 * 512 little-endian words, top scanline first (exactly 1 MiB).
+// Raw: 512 * 512 little-endian words, top scanline first (exactly 1 MiB); the
+// words are kept whole, the unused top byte too. encodeRle drops that byte.
 std::vector<std::uint8_t> encodeRaw(const Frame& frame);
 Frame decodeRaw(const std::vector<std::uint8_t>& bytes, const std::string& display);
 
 // Files: written atomically through legacy_io/common/output_file.h; read with
-// a size cap. Throw io::InputError (reading) or std::runtime_error (writing).
+// a size cap (RLE 4 MiB, raw exactly 1 MiB; a larger file is refused unread).
+// Throw io::InputError (reading) or std::runtime_error (writing).
 void writeRleFile(const std::string& path, const Frame& frame);
 void writeRawFile(const std::string& path, const Frame& frame);
 Frame readRleFile(const std::string& path);
