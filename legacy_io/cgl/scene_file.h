@@ -84,6 +84,8 @@ struct SurfaceRecord {
   Spectrum colour{};                                 // D_lambda (Cook: normal reflectance)
   // Textured Lambert/Phong: the RLE image file as written (`last` = the
   // previous textured surface's texture), and the repeat counts.
+  // For `last`, texture is the earlier surface's path (resolved by the
+  // reader) and textureLast is true.
   std::string texture;
   bool textureLast = false;
   double umod = 1.0, vmod = 1.0;
@@ -142,6 +144,11 @@ struct NodeRecord {
   EndCondition uEnd = EndCondition::Single, vEnd = EndCondition::Single;
   double overlap = 0.0;
   std::vector<Vec3> controls;
+  // A scale node with a 0.0 component: the manual's "warning, node ignored"
+  // (Appendix 1 section 13). The reader keeps the node (its down and right
+  // links still count) and records a warning; the builder treats it as the
+  // identity, as a dummy node.
+  bool ignored = false;
   io::InputLocation where;  // the node's header line
 };
 
@@ -162,6 +169,10 @@ struct SceneFile {
   std::vector<LightRecord> lights;
   std::vector<NodeRecord> nodes;  // node n is nodes[n - 1]
   std::vector<Repair> repairs;    // lenient only; empty when strict
+  // Non-fatal messages, strict or lenient: a value outside the range the
+  // manual advises (a "typical" range), a scale node ignored, a parameter
+  // given twice, a node the root cannot reach (docs/cgl/scene-format.md).
+  std::vector<Repair> warnings;
 };
 
 struct ReadOptions {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "legacy_io/common/error.h"
 #include "legacy_io/cgl/scene_file.h"
+#include "legacy_io/common/error.h"
 #include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
@@ -138,7 +138,8 @@ int main(int argc, char** argv) {
       for (std::string& a : translated) args.push_back(a.data());
     }
   }
-  CLI::App app{"PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)"};
+  CLI::App app{
+      "PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)"};
   app.require_subcommand(1);
   prime::cli::Action action;
   prime::cli::addModelCommand(app, action);
@@ -162,8 +163,8 @@ int main(int argc, char** argv) {
   prime::cli::cgl::addBenchCommand(app, action);
   prime::cli::cgl::addExportPovCommand(app, action);
   prime::cli::cgl::addPictureCommands(app, action);
-  app.set_version_flag("--version",
-                       std::string("prime ") + PRIME_VERSION + " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
+  app.set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
+                                        " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   try {
     app.parse(static_cast<int>(args.size()), args.data());
   } catch (const CLI::Success& e) {  // --help, --version

@@ -27,16 +27,16 @@ bool isInteger(const std::string& s) {
 
 void translateCallStatement(std::vector<std::string>& args, std::size_t first) {
   static const std::map<std::string, std::string> kFlags = {
-      {"-o", "--rle"},    {"-yh", "--yhigh"},  {"-yl", "--ylow"},  {"-xl", "--xleft"},
-      {"-xr", "--xright"}, {"-d", "--depth"},  {"-s", "--shadows"}, {"-S", "--shadows"},
-      {"-m", "--memory"}, {"-q", "--quiet"},   {"-t", "--aathreshold"}, {"-a", "--aalevel"}};
+      {"-o", "--rle"},     {"-yh", "--yhigh"}, {"-yl", "--ylow"},       {"-xl", "--xleft"},
+      {"-xr", "--xright"}, {"-d", "--depth"},  {"-s", "--shadows"},     {"-S", "--shadows"},
+      {"-m", "--memory"},  {"-q", "--quiet"},  {"-t", "--aathreshold"}, {"-a", "--aalevel"}};
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string a = args[i];
     if (a == "--") break;
     if (a == "-b") {
       // Three integers: the uniform background colour; else the brightness.
-      const bool rgb = i + 3 < args.size() && isInteger(args[i + 1]) &&
-                       isInteger(args[i + 2]) && isInteger(args[i + 3]);
+      const bool rgb = i + 3 < args.size() && isInteger(args[i + 1]) && isInteger(args[i + 2]) &&
+                       isInteger(args[i + 3]);
       args[i] = rgb ? "--background" : "--brightness";
       continue;
     }

@@ -23,8 +23,9 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
   cmd->add_option("--threads", o.threads, "Render threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
   if (!withParameters) return;
-  const std::string g = "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
-                        "-xr -d -s -m -b -q -t -a)";
+  const std::string g =
+      "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
+      "-xr -d -s -m -b -q -t -a)";
   cmd->add_option("--yhigh", o.yhigh, "Uppermost scanline rendered, 0..511 (511)")
       ->check(CLI::Range(0, 511))
       ->group(g);
@@ -100,6 +101,25 @@ prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
   }
   if (o.quiet) p.quiet = p.given.quiet = true;
   return file;
+}
+
+prime::cgl::Phosphors phosphorsOf(const CglOptions& o) {
+  return o.phosphors == "ntsc" ? prime::cgl::Phosphors::Ntsc : prime::cgl::Phosphors::Electrohome;
+}
+
+prime::cgl::Scene buildCgl(const CglOptions& o, const prime::cgl::SceneFile& file) {
+  prime::cgl::BuildOptions build;
+  build.textureDirs = o.textureDirs;
+  build.phosphors = phosphorsOf(o);
+  return prime::cgl::buildScene(file, build);
+}
+
+prime::cgl::RenderSettings renderSettings(const CglOptions& o, const prime::cgl::SceneFile& file) {
+  prime::cgl::RenderSettings settings;
+  settings.program = file.program;
+  settings.phosphors = phosphorsOf(o);
+  settings.threads = o.threads;
+  return settings;
 }
 
 }  // namespace prime::cli::cgl

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "legacy_io/cgl/scene_file.h"
+#include "src/cgl/render.h"
+#include "src/cgl/scene.h"
 
 namespace prime::cli::cgl {
 
@@ -31,5 +33,12 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters = true);
 // Reads the scene file (strict, or lenient: then every repair is listed on
 // stderr unless quiet) and applies the overrides. Throws io::InputError.
 prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet);
+
+// Preprocess: the scene with its textures (the scene's directory, then
+// --textures), under the chosen phosphors.
+prime::cgl::Scene buildCgl(const CglOptions& o, const prime::cgl::SceneFile& file);
+
+// The render settings: the (overridden) program parameters, phosphors, threads.
+prime::cgl::RenderSettings renderSettings(const CglOptions& o, const prime::cgl::SceneFile& file);
 
 }  // namespace prime::cli::cgl
