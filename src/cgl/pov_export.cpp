@@ -337,7 +337,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     if (!matrix.empty()) {
       const PovImage& img = out.images[static_cast<std::size_t>(imageOf[sf.texture])];
       scale = img.scale;
-      pigment = "pigment { image_map { png \"" + img.file + "\"" +
+      // gamma 1.0: the bytes are linear (POV-Ray 3.7 would decode a PNG as
+      // sRGB under assumed_gamma 1.0).
+      pigment = "pigment { image_map { png \"" + img.file + "\" gamma 1.0" +
                 (transparent ? " transmit all " + povNumber(sf.kt) : std::string()) + " } " +
                 matrix + " }";
     } else {

@@ -263,7 +263,8 @@ TEST(CglPovExport, TextureMatrixGivesTheTracersTexel) {
     ASSERT_EQ(e.images.size(), 1u);
     EXPECT_EQ(e.images[0].file, "scene-texture1.png");
     const std::string line = objectLine(e);
-    EXPECT_NE(line.find("image_map { png \"scene-texture1.png\" }"), std::string::npos) << line;
+    EXPECT_NE(line.find("image_map { png \"scene-texture1.png\" gamma 1.0 }"), std::string::npos)
+        << line;
     const Object& obj = s.objects[0];
     int agree = 0, tried = 0;
     // Points on the surface away from texel edges (checked below).
