@@ -364,7 +364,10 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
   std::string looked;
   for (const std::string& c : candidates) looked += (looked.empty() ? "" : ", ") + c;
   throw io::InputError(rec.where, "texture", "a run-length-encoded texture map",
-                       "'" + rec.texture + "' not found; looked in: " + looked);
+                       "'" + rec.texture + "' not found; looked in: " + looked +
+                           (options.textureDirs.empty()
+                                ? " (prime's --textures DIR looks for the base name in DIR too)"
+                                : ""));
 }
 
 }  // namespace
