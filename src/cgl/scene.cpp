@@ -121,7 +121,7 @@ class Preprocessor {
         break;
       case NodeKind::Scale:
         if (node.xyz[0] == 0.0 || node.xyz[1] == 0.0 || node.xyz[2] == 0.0) {
-          scene_.warnings.push_back(io::describe(node.where) + "scale node " +
+          scene_.warnings.push_back(io::describe(node.where) + ": scale node " +
                                     std::to_string(node.number) +
                                     " has a 0.0 component and is ignored (Appendix 1)");
           process(node.down, m, out, depth + 1);

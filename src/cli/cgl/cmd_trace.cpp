@@ -53,7 +53,6 @@ void printReport(const prime::cgl::SceneFile& file, const prime::cgl::Scene& sce
   std::printf("\n");
   std::printf("object list (%d primitives, %d super boxes; tested in this order):\n%s",
               scene.primitives, scene.boxes, prime::cgl::describeObjects(scene).c_str());
-  for (const auto& w : scene.warnings) std::printf("warning: %s\n", w.c_str());
 }
 
 void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {

@@ -1,5 +1,6 @@
 #include "src/cli/cgl/options.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "legacy_io/common/error.h"
@@ -71,9 +72,18 @@ prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
   prime::cgl::ReadOptions read;
   read.lenient = o.lenient;
   prime::cgl::SceneFile file = prime::cgl::readSceneFile(o.file, read);
-  if (!quiet)
-    for (const auto& r : file.repairs)
-      std::cerr << "prime: " << io::describe(r.where) << "repaired: " << r.what << "\n";
+  if (!quiet) {
+    // In the order of the file, whatever order the reader found them in.
+    std::vector<const prime::cgl::Repair*> repairs;
+    for (const auto& r : file.repairs) repairs.push_back(&r);
+    std::stable_sort(repairs.begin(), repairs.end(), [](const auto* a, const auto* b) {
+      return a->where.line.value_or(0) < b->where.line.value_or(0);
+    });
+    for (const auto* r : repairs)
+      std::cerr << "prime: " << io::describe(r->where) << ": repaired: " << r->what << "\n";
+    for (const auto& w : file.warnings)
+      std::cerr << "prime: " << io::describe(w.where) << ": warning: " << w.what << "\n";
+  }
   auto& p = file.program;
   auto set = [](auto& field, bool& given, const auto& value) {
     if (value) {
