@@ -19,6 +19,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   boxHits += o.boxHits;
   for (int k = 0; k < 3; ++k) shadeCalls[k] += o.shadeCalls[k];
   totalInternalReflections += o.totalInternalReflections;
+  fractal += o.fractal;
   shadowedLights += o.shadowedLights;
   return *this;
 }
@@ -67,6 +68,7 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
   for (int i = 0; i < count;) {
     const Object& o = objects[static_cast<std::size_t>(i)];
     double t = 0, axial = 0;
+    int facet = -1;
     bool h = false;
     switch (o.kind) {
       case ObjectKind::Box:
@@ -89,13 +91,17 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
       case ObjectKind::Polygon:
         h = hitPolygon(o, ray, eps, tmin, t);
         break;
+      case ObjectKind::Fractal:
+        h = hitFractal(scene_.fractals[static_cast<std::size_t>(o.fractal)], boxRay, eps, tmin, t,
+                       facet, stats.fractal);
+        break;
     }
     const auto kind = static_cast<std::size_t>(o.kind);
     ++stats.tests[kind];
     if (h) {
       ++stats.hits[kind];
       tmin = t;
-      hit = {t, i, axial};
+      hit = {t, i, axial, facet};
       found = true;
     }
     ++i;
@@ -130,6 +136,13 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
         break;
       case ObjectKind::Polygon:
         if (o.opaque) h = hitPolygon(o, ray, eps, tMax, t);
+        break;
+      case ObjectKind::Fractal:
+        if (o.opaque) {
+          int facet = -1;
+          h = hitFractal(scene_.fractals[static_cast<std::size_t>(o.fractal)], boxRay, eps, tMax, t,
+                         facet, stats.fractal);
+        }
         break;
     }
     // Section 9.3: objects that are not opaque are ignored by shadow rays.
@@ -175,7 +188,10 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
   const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
   const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
   const Vec3 point = ray.o + ray.d * hit.t;
-  const Vec3 normal = normalAt(object, point, hit.axial);
+  const Vec3 normal =
+      object.kind == ObjectKind::Fractal
+          ? facetNormal(scene_.fractals[static_cast<std::size_t>(object.fractal)], hit.facet)
+          : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;
   // Figure 41 with CGL-E42: level >= depth stops the recursion; Shade still
@@ -238,6 +254,7 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     pr->node = object.node;
     pr->surface = surface.number;
     pr->objectKind = object.kind;
+    pr->facet = hit.facet;
     pr->t = hit.t;
     pr->point = point;
     pr->normal = n;

@@ -38,6 +38,7 @@ struct TraceStats {
   std::uint64_t boxTests = 0, boxHits = 0;
   std::array<std::uint64_t, 3> shadeCalls{};  // by ShadingModel: Lambert, Phong, Cook
   std::uint64_t totalInternalReflections = 0, shadowedLights = 0;
+  FractalWork fractal;  // the fractal trees' box and facet tests (section 5.5)
   TraceStats& operator+=(const TraceStats& o);
 };
 
@@ -59,6 +60,7 @@ struct ProbeRay {
   bool hit = false;
   int object = -1, node = 0, surface = 0;  // object index, scene node, 1-based surface
   ObjectKind objectKind = ObjectKind::Sphere;
+  int facet = -1;  // a fractal's facet (leaf order), else -1
   double t = 0;
   Vec3 point{}, normal{};  // the normal after facing the viewer
   bool textured = false;
@@ -96,6 +98,7 @@ class Tracer {
     double t = 0;
     int object = -1;
     double axial = 0;  // a cylinder's u_i
+    int facet = -1;    // a fractal's facet
   };
   // Intersect (section 8.1): the nearest hit with t in (epsilon, tMax).
   bool intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
