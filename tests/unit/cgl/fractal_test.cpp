@@ -13,6 +13,7 @@
 #include <map>
 #include <utility>
 
+#include "src/cgl/pov_export.h"
 #include "src/cgl/render.h"
 #include "src/cgl/scene.h"
 #include "tests/unit/cgl/scene_text.h"
@@ -393,6 +394,35 @@ TEST(CglFractal, TheProbeNamesTheFacet) {
   EXPECT_EQ(r.rays[0].objectKind, ObjectKind::Fractal);
   EXPECT_GE(r.rays[0].facet, 0);
   EXPECT_LT(r.rays[0].facet, 64);
+}
+
+TEST(CglFractal, ThePovRayMeshAndTextureMap) {
+  const Matrix4 m = translate({0.25, 0.5, -0.125});
+  const FractalSurface f = buildFractal(params(3, false), m);
+  const std::string mesh = povFractalMesh(f);
+  std::size_t triangles = 0;
+  for (std::size_t at = mesh.find("triangle {"); at != std::string::npos;
+       at = mesh.find("triangle {", at + 1))
+    ++triangles;
+  EXPECT_EQ(triangles, 64u);
+  EXPECT_EQ(mesh.rfind("mesh {", 0), 0u);
+  // The first facet's corners, exactly (povNumber is round-trip).
+  const auto c = corners(f.facets[0]);
+  EXPECT_NE(mesh.find("triangle { " + povVector(c[0]) + ", " + povVector(c[1]) + ", " +
+                      povVector(c[2]) + " }"),
+            std::string::npos);
+  // The affine texture map gives section 5.7's (u, v) anywhere.
+  Vec3 au{}, av{};
+  double bu = 0, bv = 0;
+  fractalUvMap(f.v0, f.e1, f.ne1, f.umin, f.umax, f.vmin, f.vmax, au, bu, av, bv);
+  TestRays r;
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 p{r.in(-1, 1), r.in(-1, 1), r.in(-1, 1)};
+    double u = 0, v = 0;
+    fractalTextureUv(f.v0, f.e1, f.ne1, f.umin, f.umax, f.vmin, f.vmax, p, u, v);
+    EXPECT_NEAR(dot(au, p) + bu, u, 1e-12);
+    EXPECT_NEAR(dot(av, p) + bv, v, 1e-12);
+  }
 }
 
 }  // namespace
