@@ -14,7 +14,7 @@
 // generator (SplitMix64 and Marsaglia's polar method) and the few
 // transcendental functions it needs (log, exp2) are written out here in +,
 // -, *, / and sqrt, which IEEE 754 rounds the same on every machine
-// (CGL-D120). The choices the document leaves open are CGL-Q120..Q125
+// (CGL-D120). The choices the document leaves open are CGL-Q120 to CGL-Q127
 // (docs/cgl/deviations.md).
 #pragma once
 #include <cstddef>
