@@ -230,9 +230,10 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   // the top: scanline yhigh is row 511 - yhigh), and the anti-aliasing.
   std::string& args = out.povArgs;
   args = "+W512 +H512";
-  if (prog.xleft != 0 || prog.xright != 511 || prog.ylow != 0 || prog.yhigh != 511)
-    args += " +SC" + fraction(prog.xleft) + " +EC" + fraction(prog.xright + 1) + " +SR" +
-            fraction(511 - prog.yhigh) + " +ER" + fraction(512 - prog.ylow);
+  if (prog.xleft != 0 || prog.xright != 511)
+    args += " +SC" + fraction(prog.xleft) + " +EC" + fraction(prog.xright + 1);
+  if (prog.ylow != 0 || prog.yhigh != 511)
+    args += " +SR" + fraction(511 - prog.yhigh) + " +ER" + fraction(512 - prog.ylow);
   if (prog.aalevel == 0) {
     args += " -A";
   } else {

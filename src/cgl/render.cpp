@@ -62,7 +62,7 @@ class CornerTable {
         have_(static_cast<std::size_t>(columns_) * (kSub + 1), 0) {}
 
   void startScanline(int y) {
-    if (y == scanline_ - 1) {
+    if (y + 1 == scanline_) {
       // The old lower edge (row kSub) is the new upper edge (row 0).
       std::copy_n(colour_.begin() + static_cast<std::ptrdiff_t>(kSub) * columns_, columns_,
                   colour_.begin());

@@ -108,7 +108,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
         std::printf("%-34s %7d %2d %2d %7.1f %8.1f", r.scene.c_str(), r.pixels, r.aalevel, r.depth,
                     r.readMs, r.buildMs);
         for (std::size_t k = 0; k < threads->size(); ++k)
-          std::printf(" %8.3f %8.3f", r.cpu[k], r.wall[k]);
+          std::printf(" %8.4f %8.4f", r.cpu[k], r.wall[k]);
         std::printf(" %10llu %10.3g %11llu %9.3g %10llu %10llu %10llu %10llu",
                     static_cast<unsigned long long>(s.rays.rays()),
                     c > 0 ? static_cast<double>(s.rays.rays()) / c : 0.0,

@@ -6,6 +6,7 @@
 // damaged copies must read with --lenient as the repaired scene, Appendix 2's
 // call statement must work, and a bad scene must exit 1 and write nothing.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -190,6 +191,20 @@ TEST(CglReplay, ABadSceneExitsOneAndWritesNothing) {
   EXPECT_NE(r.output.find("surface"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
+}
+
+// A FIFO or a device given as the scene is refused at once, by type (it
+// used to block, or to be read until memory ran out).
+TEST(CglReplay, AFifoOrADeviceIsRefusedAtOnce) {
+  TempDir dir;
+  ASSERT_EQ(::mkfifo((dir / "scene.cgl").c_str(), 0600), 0);
+  const auto r = runPrime("trace --format cgl " + (dir / "scene.cgl") + " --no-window -q");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("is a FIFO (named pipe), not a CGL scene file"), std::string::npos)
+      << r.output;
+  const auto z = runPrime("trace --format cgl /dev/zero --no-window -q");
+  EXPECT_EQ(z.status, 1) << z.output;
+  EXPECT_NE(z.output.find("/dev/zero: is a character device"), std::string::npos) << z.output;
 }
 
 TEST(CglReplay, AMissingTextureNamesEveryPlaceLooked) {
