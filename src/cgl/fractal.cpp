@@ -379,14 +379,21 @@ void fractalUvMap(const Vec3& v0, const Vec3& e1, const Vec3& ne1, double umin, 
 }
 
 std::string povFractalMesh(const FractalSurface& f) {
-  std::string s = "mesh {\n";
-  s.reserve(f.facets.size() * 160);
+  // mesh2 with three vertices per facet and no sharing: POV-Ray 3.7 parses
+  // `mesh { triangle { ... } }` with a vertex search that takes 165 s for
+  // 10 divisions, this in 5 s.
+  const std::size_t n = f.facets.size();
+  std::string s = "mesh2 {\n  vertex_vectors { " + std::to_string(3 * n);
+  s.reserve(n * 200);
   for (const FractalFacet& ff : f.facets) {
     const Vec3 b = ff.a + ff.u;
-    s += "  triangle { " + povVector(ff.a) + ", " + povVector(b) + ", " + povVector(b + ff.v) +
-         " }\n";
+    s += ",\n    " + povVector(ff.a) + ", " + povVector(b) + ", " + povVector(b + ff.v);
   }
-  return s + "}";
+  s += "\n  }\n  face_indices { " + std::to_string(n);
+  for (std::size_t k = 0; k < n; ++k)
+    s += ",\n    <" + std::to_string(3 * k) + ", " + std::to_string(3 * k + 1) + ", " +
+         std::to_string(3 * k + 2) + ">";
+  return s + "\n  }\n}";
 }
 
 }  // namespace prime::cgl

@@ -146,9 +146,9 @@ void fractalTextureUv(const Vec3& v0, const Vec3& e1, const Vec3& ne1, double um
 void fractalUvMap(const Vec3& v0, const Vec3& e1, const Vec3& ne1, double umin, double umax,
                   double vmin, double vmax, Vec3& au, double& bu, Vec3& av, double& bv);
 
-// The surface as a POV-Ray 3.7 `mesh { triangle { A, A + U, A + U + V } ...
-// }` of its facets in leaf order (CGL-D121); the corners are the facet's
-// exactly as the port intersects it.
+// The surface as a POV-Ray 3.7 `mesh2` of its facets in leaf order, facet k
+// the vertices 3k, 3k + 1, 3k + 2 = A, A + U, A + U + V (CGL-D121): the
+// corners the port intersects.
 std::string povFractalMesh(const FractalSurface& f);
 
 }  // namespace prime::cgl

@@ -400,16 +400,12 @@ TEST(CglFractal, ThePovRayMeshAndTextureMap) {
   const Matrix4 m = translate({0.25, 0.5, -0.125});
   const FractalSurface f = buildFractal(params(3, false), m);
   const std::string mesh = povFractalMesh(f);
-  std::size_t triangles = 0;
-  for (std::size_t at = mesh.find("triangle {"); at != std::string::npos;
-       at = mesh.find("triangle {", at + 1))
-    ++triangles;
-  EXPECT_EQ(triangles, 64u);
-  EXPECT_EQ(mesh.rfind("mesh {", 0), 0u);
-  // The first facet's corners, exactly (povNumber is round-trip).
-  const auto c = corners(f.facets[0]);
-  EXPECT_NE(mesh.find("triangle { " + povVector(c[0]) + ", " + povVector(c[1]) + ", " +
-                      povVector(c[2]) + " }"),
+  EXPECT_EQ(mesh.rfind("mesh2 {\n  vertex_vectors { 192,\n", 0), 0u) << mesh.substr(0, 80);
+  EXPECT_NE(mesh.find("face_indices { 64,\n    <0, 1, 2>,\n    <3, 4, 5>,"), std::string::npos);
+  EXPECT_NE(mesh.find("<189, 190, 191>\n  }\n}"), std::string::npos);
+  // The last facet's corners, exactly (povNumber is round-trip).
+  const auto c = corners(f.facets[63]);
+  EXPECT_NE(mesh.find(povVector(c[0]) + ", " + povVector(c[1]) + ", " + povVector(c[2]) + "\n"),
             std::string::npos);
   // The affine texture map gives section 5.7's (u, v) anywhere.
   Vec3 au{}, av{};
