@@ -27,7 +27,8 @@ struct Row {
 };
 
 std::uint64_t tests(const prime::cgl::TraceStats& s) {
-  return s.tests[0] + s.tests[1] + s.tests[2] + s.boxTests;
+  return s.tests[0] + s.tests[1] + s.tests[2] + s.boxTests +
+         s.tests[static_cast<std::size_t>(prime::cgl::ObjectKind::Fractal)];
 }
 
 }  // namespace
