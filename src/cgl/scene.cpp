@@ -136,9 +136,8 @@ class Preprocessor {
         process(node.down, m, out, depth + 1);
         break;
       case NodeKind::Fractal:
-        out.push_back(Item{fractal(node, m), {}});
+        out.push_back(Item{fractal(node, m), {}});  // counted by its facets (CGL-Q128)
         ++scene_.primitives;
-        count(node);
         process(node.down, m, out, depth + 1);  // as a primitive's (CGL-Q42)
         break;
       case NodeKind::Spline:
@@ -325,6 +324,15 @@ class Preprocessor {
     o.opaque = surface.refract == 0.0;
     if (node.divisions < 1 || node.divisions > 10)  // the reader's range (CGL-Q9)
       throw io::InputError(node.where, "divisions", "1..10", std::to_string(node.divisions));
+    // CGL-Q128: every facet counts against BuildOptions::maxObjects, so that
+    // a shared fractal node instantiated on many paths cannot exhaust memory.
+    const long facets = 1L << (2 * node.divisions);
+    if (made_ + facets > options_.maxObjects)
+      throw io::InputError(node.where, "fractal",
+                           "at most " + std::to_string(options_.maxObjects) +
+                               " object nodes and fractal facets in the scene",
+                           "more (this surface has " + std::to_string(facets) + " facets)");
+    made_ += facets;
     FractalParams p;
     p.divisions = node.divisions;
     p.h = node.h;

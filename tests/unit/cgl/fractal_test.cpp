@@ -381,6 +381,28 @@ TEST(CglFractal, TheSamePictureForAnyThreadCount) {
   // The same scene built again: the same bytes.
   const RenderResult again = render(buildScene(file, options), settings);
   EXPECT_TRUE(one.frame.words == again.frame.words);
+  // Without its super box (the root is the fractal node): the same bytes.
+  SceneFile bare = file;
+  bare.numbers.root = 2;
+  const RenderResult unboxed = render(buildScene(bare, options), settings);
+  EXPECT_TRUE(one.frame.words == unboxed.frame.words);
+}
+
+TEST(CglFractal, FacetsCountAgainstTheObjectLimit) {
+  // CGL-Q128: 4^6 = 4096 facets (the fractal's object node counts as its
+  // facets) and one box node.
+  const SceneFile file = fractalScene(6, false);
+  BuildOptions options;
+  options.maxObjects = 4097;
+  EXPECT_NO_THROW(buildScene(file, options));
+  options.maxObjects = 4095;
+  try {
+    buildScene(file, options);
+    FAIL() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where().line, 1002);
+    EXPECT_NE(std::string(e.what()).find("4096 facets"), std::string::npos) << e.what();
+  }
 }
 
 TEST(CglFractal, TheProbeNamesTheFacet) {
