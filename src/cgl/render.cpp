@@ -144,7 +144,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   RenderResult result;
   result.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.image.assign(Frame::kSize, Frame::kSize);
+  // The doubles are for a live window only: 6 MiB written for nothing
+  // otherwise (most of a small render's page faults).
+  const bool keepImage = static_cast<bool>(callbacks.rowDone);
+  if (keepImage) result.image.assign(Frame::kSize, Frame::kSize);
 
   const int rows = p.yhigh - p.ylow + 1;
   const int threads = threadCount(settings.threads, rows);
@@ -182,7 +185,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
             c = tables[static_cast<std::size_t>(thread)].pixel(x, stats);
           }
           result.frame.at(y, x) = packPixel(c.r, c.g, c.b);
-          result.image.at(imageRow, x) = Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
+          if (keepImage) result.image.at(imageRow, x) = Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
         }
         return stats.rays.rays() - before;
       },

@@ -34,8 +34,11 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-  Frame frame;     // the 512 x 512 words; outside the window black
-  RgbImage image;  // the same picture as doubles 0..1 (byte / 255), row 0 at the top
+  Frame frame;  // the 512 x 512 words; outside the window black
+  // The same picture as doubles 0..1 (byte / 255), row 0 at the top, kept
+  // only when RenderCallbacks::rowDone is set (a live window); else empty:
+  // toRgbImage(frame) makes it.
+  RgbImage image;
   TraceStats stats;
   RowsRun run;
   double setupSeconds = 0;  // the tracer's set-up (the background's spectrum)
