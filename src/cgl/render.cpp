@@ -15,6 +15,7 @@ TraceSettings traceSettings(const RenderSettings& settings) {
   t.background = settings.program.background;
   t.phosphors = settings.phosphors;
   t.epsilon = settings.epsilon;
+  t.linearSearch = settings.linearSearch;
   return t;
 }
 
@@ -200,7 +201,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
 }
 
 ProbeReport probe(const Scene& scene, const RenderSettings& settings, double x, double y) {
-  const Tracer tracer(scene, traceSettings(settings));
+  // The probe walks the object list as printed: its "shadowed by" names the
+  // first opaque object of the list in the way.
+  TraceSettings ts = traceSettings(settings);
+  ts.linearSearch = true;
+  const Tracer tracer(scene, ts);
   ProbeReport report;
   TraceStats stats;
   tracer.screenPoint(x, y, stats, &report);

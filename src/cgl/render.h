@@ -28,6 +28,9 @@ struct RenderSettings {
   Phosphors phosphors = Phosphors::Electrohome;
   int threads = 0;        // 0: all cores
   double epsilon = 1e-6;  // TraceSettings::epsilon (CGL-Q44)
+  // The document's object list for every ray (TraceSettings::linearSearch):
+  // the same pixels as the BVH, and the operation counts of Table 5's program.
+  bool linearSearch = false;
   // Record every primary ray's screen point (for tests of the corner table):
   // RenderResult::corners.
   bool recordCorners = false;
