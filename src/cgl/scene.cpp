@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 
 #include "src/math/matrix.h"
 
@@ -388,11 +389,19 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     Texture tex;
     tex.path = where;
     tex.texels.resize(frame.words.size());
+    // A texel's spectrum depends on its colour only: each colour is converted
+    // once (a map holds few colours; the same numbers as converting every texel).
+    std::unordered_map<std::uint32_t, std::array<double, 3>> converted;
     for (std::size_t i = 0; i < frame.words.size(); ++i) {
-      const std::uint32_t w = frame.words[i];
-      const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
-      for (int k = 0; k < 3; ++k)
-        tex.texels[i][static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
+      const std::uint32_t w = frame.words[i] & 0xffffffu;
+      auto it = converted.find(w);
+      if (it == converted.end()) {
+        const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
+        std::array<double, 3> three{};
+        for (int k = 0; k < 3; ++k) three[static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
+        it = converted.emplace(w, three).first;
+      }
+      tex.texels[i] = it->second;
     }
     return tex;
   };

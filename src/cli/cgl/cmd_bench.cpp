@@ -56,6 +56,8 @@ void addBenchCommand(CLI::App& app, Action& action) {
   cmd->add_option("--textures", base->textureDirs,
                   "Directory to look in for texture files (after each scene's own directory)")
       ->check(CLI::ExistingDirectory);
+  cmd->add_flag("--linear-search", base->linearSearch,
+                "Test the object list in order for every ray, as the package did (CGL-D43)");
   cmd->add_option("--csv", *csv, "Also write the table as CSV");
   cmd->callback([=, &action] {
     action = [=] {

@@ -87,9 +87,10 @@ TEST(CglExportPov, EveryShippedSceneExportsAndPovRayRendersIt) {
 TEST(CglBench, PrintsARowAndWritesTheCsv) {
   const fs::path dir = tempDir();
   const fs::path csv = dir / "bench.csv";
-  const auto r = runPrime("bench " + (kScenes / "ball.cgl").string() + " " +
-                          (kScenes / "nine-cubes-boxed.cgl").string() +
-                          " --runs 1 --threads 1 --aalevel 0 --csv " + csv.string());
+  const auto r =
+      runPrime("bench " + (kScenes / "ball.cgl").string() + " " +
+               (kScenes / "nine-cubes-boxed.cgl").string() +
+               " --runs 1 --threads 1 --aalevel 0 --linear-search --csv " + csv.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("# prime bench (Waterloo CGL)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("ball.cgl"), std::string::npos);

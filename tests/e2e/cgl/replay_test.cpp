@@ -101,6 +101,13 @@ TEST_P(CglReplay, RendersTheGoldenPicture) {
   const auto e = runPrime("export " + (dir / "out.rle") + " " + (dir / "back.png") + " -q");
   ASSERT_EQ(e.status, 0) << e.output;
   EXPECT_EQ(compare(readPng(dir / "back.png"), got), "") << scene;
+  // The document's object list for every ray (--linear-search) and the BVH
+  // find the same hits: the same bytes (CGL-D43).
+  const auto l =
+      runPrime("trace " + scenePath(scene) + " --no-window -q --threads 2 --linear-search --rle " +
+               (dir / "list.rle"));
+  ASSERT_EQ(l.status, 0) << l.output;
+  EXPECT_EQ(bytesOf(dir / "out.rle"), bytesOf(dir / "list.rle")) << scene;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CglReplay, ::testing::ValuesIn(scenes()), [](const auto& info) {
