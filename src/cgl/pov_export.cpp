@@ -73,6 +73,7 @@ UvMap uvMap(const Object& o) {
       break;
     }
     case ObjectKind::Box:
+    case ObjectKind::Spline:
       break;
   }
   return m;
@@ -194,6 +195,7 @@ std::string povGeometry(const Object& o) {
       return s + " }";
     }
     case ObjectKind::Box:
+    case ObjectKind::Spline:
       break;
   }
   return "";

@@ -14,6 +14,8 @@ const char* kindName(ObjectKind kind) {
       return "polygon";
     case ObjectKind::Box:
       return "box";
+    case ObjectKind::Spline:
+      return "spline";
   }
   return "?";
 }
@@ -83,6 +85,7 @@ Vec3 normalAt(const Object& o, const Vec3& point, double axial) {
     case ObjectKind::Polygon:
       return o.n;
     case ObjectKind::Box:
+    case ObjectKind::Spline:  // splineNormal (src/cgl/spline.h), from the hit's parameters
       break;
   }
   return {0.0, 0.0, 0.0};
@@ -108,6 +111,7 @@ void textureUv(const Object& o, const Vec3& point, const Vec3& normal, double ax
       return;
     }
     case ObjectKind::Box:
+    case ObjectKind::Spline:  // splineTexture (src/cgl/spline.h), from the hit's parameters
       break;
   }
   u = v = 0.0;

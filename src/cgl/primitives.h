@@ -18,7 +18,13 @@
 
 namespace prime::cgl {
 
-enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Polygon, Box };
+enum class ObjectKind : std::uint8_t {
+  Sphere,
+  Cylinder,
+  Polygon,
+  Box,
+  Spline,  // a B-spline surface: Scene::splines[Object::spline] (src/cgl/spline.h)
+};
 inline constexpr int kPrimitiveKinds = 3;  // Sphere, Cylinder, Polygon (Box apart)
 
 const char* kindName(ObjectKind kind);
@@ -49,7 +55,8 @@ struct Object {
   std::array<double, 4> d{};
   int edges = 0;
   double umin = 0, umax = 0, vmin = 0, vmax = 0;
-  int skip = 0;  // Box: index of the first object after its contents
+  int skip = 0;     // Box: index of the first object after its contents
+  int spline = -1;  // Spline: index into Scene::splines
 };
 
 // Intersections. On a hit within (tMin, tMax) return true and set t (and for

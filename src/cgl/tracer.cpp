@@ -20,6 +20,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   for (int k = 0; k < 3; ++k) shadeCalls[k] += o.shadeCalls[k];
   totalInternalReflections += o.totalInternalReflections;
   shadowedLights += o.shadowedLights;
+  spline += o.spline;
   return *this;
 }
 
@@ -80,6 +81,17 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
           i = o.skip;
         }
         continue;
+      case ObjectKind::Spline: {
+        SplineHit sh;
+        if (intersectSpline(scene_.splines[static_cast<std::size_t>(o.spline)], ray, eps, tmin, sh,
+                            stats.spline)) {
+          tmin = sh.t;
+          hit = {sh.t, i, 0.0, sh};
+          found = true;
+        }
+        ++i;
+        continue;
+      }
       case ObjectKind::Sphere:
         h = hitSphere(o, ray, eps, tmin, t);
         break;
@@ -95,7 +107,7 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
     if (h) {
       ++stats.hits[kind];
       tmin = t;
-      hit = {t, i, axial};
+      hit = {t, i, axial, {}};
       found = true;
     }
     ++i;
@@ -122,6 +134,14 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
           i = o.skip;
         }
         continue;
+      case ObjectKind::Spline: {
+        SplineHit sh;
+        if (o.opaque && intersectSpline(scene_.splines[static_cast<std::size_t>(o.spline)], ray,
+                                        eps, tMax, sh, stats.spline))
+          return i;
+        ++i;
+        continue;
+      }
       case ObjectKind::Sphere:
         if (o.opaque) h = hitSphere(o, ray, eps, tMax, t);
         break;
@@ -175,7 +195,10 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
   const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
   const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
   const Vec3 point = ray.o + ray.d * hit.t;
-  const Vec3 normal = normalAt(object, point, hit.axial);
+  const Vec3 normal = object.kind == ObjectKind::Spline
+                          ? splineNormal(scene_.splines[static_cast<std::size_t>(object.spline)],
+                                         hit.spline.u, hit.spline.v)
+                          : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;
   // Figure 41 with CGL-E42: level >= depth stops the recursion; Shade still
@@ -219,7 +242,11 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
   double u = 0, w = 0;
   int ui = 0, vi = 0;
   if (surface.texture >= 0) {
-    textureUv(object, point, normal, hit.axial, u, w);
+    if (object.kind == ObjectKind::Spline)  // section 6.9
+      splineTexture(scene_.splines[static_cast<std::size_t>(object.spline)], hit.spline.u,
+                    hit.spline.v, u, w);
+    else
+      textureUv(object, point, normal, hit.axial, u, w);
     ui = textureIndex(u, surface.umod);
     vi = textureIndex(w, surface.vmod);
     // CGL-Q50: texel = row u_i from the top of the image, column v_i.
@@ -246,6 +273,13 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     pr->v = w;
     pr->ui = ui;
     pr->vi = vi;
+    if (object.kind == ObjectKind::Spline) {
+      pr->splineU = hit.spline.u;
+      pr->splineV = hit.spline.v;
+      pr->newtonU0 = hit.spline.u0;
+      pr->newtonV0 = hit.spline.v0;
+      pr->newtonIterations = hit.spline.iterations;
+    }
   }
 
   // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8).
