@@ -432,7 +432,7 @@ thread_local std::vector<Active> tActive;
 }  // namespace
 
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters) {
+                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
   ++counters.calls;
   if (s.nodes.empty()) return false;
   std::vector<Active>& active = tActive;
@@ -457,6 +457,7 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
     const SplineNode& n = s.nodes[static_cast<std::size_t>(a.node)];
     if (n.count == 0) {
       ++counters.newtonCalls;
+      if (record) record->push_back({n.u0, n.v0});
       const NewtonResult r = newton(s, planes, ray, n.u0, n.v0, options);
       counters.iterations += static_cast<std::uint64_t>(r.iterations);
       if (r.hit && r.t > tMin && r.t < best) {
@@ -549,6 +550,7 @@ void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& 
   if (p) ++count.pathHits;
   if (r && !p) ++count.holes;
   if (p && !r) ++count.extra;
+  if (p && r && path.t > ref.t + 1e-6 * (1.0 + ref.t)) ++count.farther;
 }
 
 }  // namespace prime::cgl

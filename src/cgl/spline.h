@@ -132,8 +132,14 @@ struct SplineHit {
 // Section 6.7: the nearest hit with t in (tMin, tMax) by the sorted active
 // list. The list is a per-thread scratch sized once for the largest tree
 // seen by the thread (no allocation per ray).
+// `record`, when given (the Table 6 report only), receives every Newton
+// start tried, to time Newton apart from the boxes.
+struct NewtonStart {
+  double u0 = 0, v0 = 0;
+};
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters);
+                     SplineHit& hit, SplineCounters& counters,
+                     std::vector<NewtonStart>* record = nullptr);
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by
 // the convex hull of its 16 refined vertices (so the boxes contain the
@@ -146,9 +152,11 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
 Vec3 splineNormal(const SplineSurface& s, double u, double v);
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv);
 
-// Holes: rays the reference hits but the Newton path does not.
+// Holes: rays the reference hits but the Newton path does not; `extra`:
+// the path hits, the reference not; `farther`: both hit, the path's hit
+// farther than the reference's (a nearer sheet missed).
 struct HoleCount {
-  std::uint64_t rays = 0, referenceHits = 0, pathHits = 0, holes = 0, extra = 0;
+  std::uint64_t rays = 0, referenceHits = 0, pathHits = 0, holes = 0, extra = 0, farther = 0;
 };
 void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& count);
 

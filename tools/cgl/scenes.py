@@ -410,7 +410,6 @@ def spline_bump(end):
                "columns (Table 3: 64 original, 1849 refined vertices at divisions 8); overlap 0.5.",
                "The control vertices are not printed: these are the port's. The end condition",
                "only restricts the parameter range (6.4.1)."])
-    s.param("shadows")
     s.view("eye 0.0 2.2 2.6")
     s.view("sight towards 0.0 0.05 0.0")
     s.phong("a pale green plastic", GREEN, 7.0, 2.0, 20.0)

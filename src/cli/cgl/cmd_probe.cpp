@@ -53,6 +53,12 @@ void printReport(const prime::cgl::ProbeReport& r, const prime::cgl::Scene& scen
         indent.c_str(), ray.object, prime::cgl::kindName(ray.objectKind), ray.node, ray.surface,
         ray.t, ray.point[0], ray.point[1], ray.point[2], ray.normal[0], ray.normal[1],
         ray.normal[2]);
+    if (ray.objectKind == prime::cgl::ObjectKind::Spline)
+      std::printf(
+          "%s  spline (u-bar, v-bar) = (%.9g, %.9g): Newton from the leaf's start (%.6g, "
+          "%.6g), %d iteration(s)\n",
+          indent.c_str(), ray.splineU, ray.splineV, ray.newtonU0, ray.newtonV0,
+          ray.newtonIterations);
     if (ray.textured)
       std::printf("%s  texture u %.6f v %.6f: texel row %d, column %d\n", indent.c_str(), ray.u,
                   ray.v, ray.ui, ray.vi);
