@@ -176,6 +176,19 @@ std::array<Vec3, 4> polygonCorners(const Object& o) {
   return v;
 }
 
+// A B-spline surface (section 6) as POV-Ray 3.7 bicubic patches, each
+// uniform B-spline patch converted exactly to Bezier form (bezierPatches).
+// The texture of a spline is not mapped (its mean colour is used).
+std::string povSpline(const SplineSurface& sp) {
+  std::string s = "union {";
+  for (const auto& patch : bezierPatches(sp)) {
+    s += "\n  bicubic_patch { type 1 flatness 0.001 u_steps 4 v_steps 4";
+    for (int k = 0; k < 16; ++k) s += (k % 4 == 0 ? "\n   " : ",") + povVector(patch[k]);
+    s += " }";
+  }
+  return s + "\n}";
+}
+
 std::string povGeometry(const Object& o) {
   switch (o.kind) {
     case ObjectKind::Sphere:
@@ -322,7 +335,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
       continue;
     }
     const Surface& sf = scene.surfaces[static_cast<std::size_t>(o.surface)];
-    const std::string geometry = povGeometry(o);
+    const std::string geometry = o.kind == ObjectKind::Spline
+                                     ? povSpline(scene.splines[static_cast<std::size_t>(o.spline)])
+                                     : povGeometry(o);
     // CGL adds k_t T to the whole colour; POV-Ray's transmit t scales the
     // diffuse and ambient terms by 1 - t, which the finish divides out (for
     // k_t < 1; k_t >= 1 keeps POV-Ray's none). The reflected and transmitted
@@ -333,7 +348,8 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     double scale = 1.0;
     std::string pigment;
     std::string matrix;
-    if (sf.texture >= 0 && imageOf[static_cast<std::size_t>(sf.texture)] >= 0)
+    if (sf.texture >= 0 && imageOf[static_cast<std::size_t>(sf.texture)] >= 0 &&
+        o.kind != ObjectKind::Spline)
       matrix = textureMatrix(o, sf);
     const std::string transmit = transparent ? " transmit " + povNumber(sf.kt) : "";
     if (!matrix.empty()) {

@@ -361,7 +361,7 @@ RayPlanes documentRayPlanes(const Ray& ray) {
   p.n2 = cross(p.n1, ray.d);
   p.a1 = dot(p.n1, ray.o);
   p.a2 = dot(p.n2, ray.o);
-  p.ok = true;  // degenerate (N1 = 0) when O = 0 or O || D: Newton's Jacobian is then singular
+  p.ok = true;  // degenerate (N_1 = 0) when O = 0 or O || D: Newton's Jacobian is then singular
   return p;
 }
 
@@ -397,7 +397,7 @@ NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& 
       res.t = dot(od, ray.d) / dot(ray.d, ray.d);  // CGL-E141
       return res;
     }
-    // ... or |E1| + |E2| increased.
+    // ... or |E_1| + |E_2| increased.
     if (next > err) return res;
     err = next;
   }
@@ -538,6 +538,36 @@ Vec3 splineNormal(const SplineSurface& s, double u, double v) {
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv) {
   tu = std::clamp((u - s.umin) / (s.umax - s.umin), 0.0, 1.0);
   tv = std::clamp((v - s.vmin) / (s.vmax - s.vmin), 0.0, 1.0);
+}
+
+std::vector<std::array<Vec3, 16>> bezierPatches(const SplineSurface& s) {
+  // Uniform cubic B-spline segment -> Bezier: P_0 = (U_0 + 4U_1 + U_2)/6,
+  // P_1 = (2U_1 + U_2)/3, P_2 = (U_1 + 2U_2)/3, P_3 = (U_1 + 4U_2 + U_3)/6.
+  static constexpr double k[4][4] = {{1.0 / 6, 4.0 / 6, 1.0 / 6, 0.0},
+                                     {0.0, 2.0 / 3, 1.0 / 3, 0.0},
+                                     {0.0, 1.0 / 3, 2.0 / 3, 0.0},
+                                     {0.0, 1.0 / 6, 4.0 / 6, 1.0 / 6}};
+  std::vector<std::array<Vec3, 16>> out;
+  const int i0 = static_cast<int>(std::lround(s.umin)), i1 = static_cast<int>(std::lround(s.umax));
+  const int j0 = static_cast<int>(std::lround(s.vmin)), j1 = static_cast<int>(std::lround(s.vmax));
+  for (int j = j0; j < j1; ++j)
+    for (int i = i0; i < i1; ++i) {
+      // The segment [i, i + 1) x [j, j + 1) uses U_{i-3..i, j-3..j}.
+      std::array<Vec3, 16> patch{};
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a) {
+          Vec3 p{0, 0, 0};
+          for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+              const double w = k[a][x] * k[b][y];
+              if (w != 0.0)
+                p = p + s.u[static_cast<std::size_t>((i + 1 + x) + (j + 1 + y) * s.mu)] * w;
+            }
+          patch[static_cast<std::size_t>(b * 4 + a)] = p;
+        }
+      out.push_back(patch);
+    }
+  return out;
 }
 
 void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& count) {

@@ -12,6 +12,7 @@
 // text is damaged or silent are CGL-E140.., CGL-Q140.. in
 // docs/cgl/deviations.md.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -74,7 +75,7 @@ struct SplineSurface {
   std::vector<Vec3> w;
   std::vector<SplineNode> nodes;  // nodes[0] is the root
   int leaves = 0;
-  double tolerance = 0;  // |E1| + |E2| for success, scene units (CGL-Q143)
+  double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
   Aabb hull;             // the control vertices' box: contains every surface point
   double refineSeconds = 0, treeSeconds = 0;
   std::size_t bytes() const;
@@ -100,14 +101,14 @@ struct RayPlanes {
   double a1 = 0, a2 = 0;
   bool ok = false;
 };
-// The port's planes (CGL-Q142): N1 = normalise(D x e) with e the axis of D's
-// smallest component, N2 = normalise(N1 x D); E_k is then a distance.
+// The port's planes (CGL-Q142): N_1 = normalise(D x e) with e the axis of D's
+// smallest component, N_2 = normalise(N_1 x D); E_k is then a distance.
 RayPlanes rayPlanes(const Ray& ray);
-// The document's planes: N1 = O x D, N2 = N1 x D, not normalised.
+// The document's planes: N_1 = O x D, N_2 = N_1 x D, not normalised.
 RayPlanes documentRayPlanes(const Ray& ray);
 
 struct NewtonOptions {
-  double tolerance = 0;    // |E1| + |E2| < tolerance is success
+  double tolerance = 0;    // |E_1| + |E_2| < tolerance is success
   int maxIterations = 16;  // CGL-Q144
 };
 struct NewtonResult {
@@ -151,6 +152,12 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
 // vanishes at a tripled edge, CGL-Q146); texture u, v in [0, 1].
 Vec3 splineNormal(const SplineSurface& s, double u, double v);
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv);
+
+// The surface over its parameter range as bicubic Bezier patches, exactly:
+// each knot-interval pair's 4 x 4 B-spline vertices times the uniform
+// B-spline-to-Bezier matrix in u and in v (for POV-Ray's bicubic_patch).
+// Patch k's control points are patches[k][row * 4 + column], row along v.
+std::vector<std::array<Vec3, 16>> bezierPatches(const SplineSurface& s);
 
 // Holes: rays the reference hits but the Newton path does not; `extra`:
 // the path hits, the reference not; `farther`: both hit, the path's hit

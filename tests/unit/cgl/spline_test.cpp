@@ -247,7 +247,7 @@ TEST(CglSplineNewton, ConvergesOnTheDenseReferencesHit) {
 }
 
 TEST(CglSplineNewton, DocumentPlanesDegenerateThePortsDoNot) {
-  // CGL-Q142: N1 = O x D vanishes for an eye at the origin (and E_k scale
+  // CGL-Q142: N_1 = O x D vanishes for an eye at the origin (and E_k scale
   // with |O|), so every ray from there fails; the port's planes do not.
   std::vector<Vec3> c = grid(4, 4, bumpHeight);
   for (Vec3& v : c) v = v + Vec3{-1.5, -3.0, -1.5};  // below the origin
@@ -263,7 +263,7 @@ TEST(CglSplineNewton, DocumentPlanesDegenerateThePortsDoNot) {
   const Vec3 p = evaluate(s, port.u, port.v).q;
   EXPECT_LT(length(p - ray.d * port.t), 1e-8);
   // From an eye off the origin the document's tolerance 1.0 in unnormalised
-  // units accepts points far from the ray: |E1| + |E2| < 1 with |N1| ~ 1.5.
+  // units accepts points far from the ray: |E_1| + |E_2| < 1 with |N_1| ~ 1.5.
   const Ray off{{2.0, 0.0, 0.0}, normalized(Vec3{-0.5, -1.0, 0.05})};
   const NewtonResult loose = newton(s, documentRayPlanes(off), off, 1.5, 1.5, {1.0, 16});
   const NewtonResult tight = newton(s, rayPlanes(off), off, 1.5, 1.5, {s.tolerance, 16});
@@ -325,6 +325,36 @@ TEST(CglSplineHoles, GenerousOverlapHasNoneFigure55sHas) {
   const HoleCount v = holes(vase, {0.0, 0.5, 3.2}, {0.0, 0.45, 0.0}, 0.8);
   EXPECT_GT(v.referenceHits, 1000u);
   EXPECT_GT(v.holes, v.referenceHits / 10);
+}
+
+TEST(CglSplineBezier, PatchesAreTheSurfaceExactly) {
+  // The triple bump: 5 x 5 knot intervals, 25 patches; each Bezier patch
+  // evaluated by de Casteljau's Bernstein weights equals Q on its interval.
+  const SplineSurface s = bump(0.5);
+  const auto patches = bezierPatches(s);
+  ASSERT_EQ(patches.size(), 25u);
+  auto bern = [](double t, double b[4]) {
+    const double r = 1 - t;
+    b[0] = r * r * r;
+    b[1] = 3 * t * r * r;
+    b[2] = 3 * t * t * r;
+    b[3] = t * t * t;
+  };
+  for (int k : {0, 7, 12, 24})
+    for (double lu : {0.0, 0.3, 1.0})
+      for (double lv : {0.0, 0.6, 1.0}) {
+        double bu[4], bv[4];
+        bern(lu, bu);
+        bern(lv, bv);
+        Vec3 p{0, 0, 0};
+        for (int b = 0; b < 4; ++b)
+          for (int a = 0; a < 4; ++a)
+            p = p + patches[static_cast<std::size_t>(k)][static_cast<std::size_t>(b * 4 + a)] *
+                        (bu[a] * bv[b]);
+        const double u = s.umin + k % 5 + lu, v = s.vmin + k / 5 + lv;
+        const Vec3 q = evaluate(s, u, v).q;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], q[c], 1e-14) << k << " " << lu << " " << lv;
+      }
 }
 
 TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
