@@ -11,6 +11,7 @@
 
 #include "legacy_io/cgl/scene_file.h"
 #include "src/cgl/scene.h"
+#include "tests/unit/cgl/scene_text.h"
 
 namespace prime::cgl {
 namespace {
@@ -355,6 +356,37 @@ TEST(CglSplineBezier, PatchesAreTheSurfaceExactly) {
         const Vec3 q = evaluate(s, u, v).q;
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], q[c], 1e-14) << k << " " << lu << " " << lv;
       }
+}
+
+TEST(CglSplineScene, TooFewVerticesForTheEndConditionAreRefusedAtTheNode) {
+  // Single ends need 3 vertices (the range [u_1, u_{m-1}] must hold an
+  // interval); the reader allows nu = 2.
+  SceneFile f = test::emptyScene();
+  f.surfaces.push_back(test::lambert(1, 1));
+  NodeRecord n;
+  n.number = 1;
+  n.kind = NodeKind::Spline;
+  n.surface = 1;
+  n.nu = 2;
+  n.nv = 3;
+  n.uEnd = EndCondition::Single;
+  n.vEnd = EndCondition::Triple;
+  n.divisions = 2;
+  n.overlap = 0.5;
+  n.controls.assign(6, Vec3{0, 0, 0});
+  n.where.file = "t.cgl";
+  n.where.line = 42;
+  f.nodes.push_back(n);
+  f.numbers.root = 1;
+  try {
+    buildScene(f);
+    FAIL() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where().line, 42);
+    EXPECT_NE(std::string(e.what()).find("at least 3"), std::string::npos) << e.what();
+  }
+  f.nodes[0].uEnd = EndCondition::Double;  // [u_0, u_1]: one interval
+  EXPECT_EQ(buildScene(f).splines.size(), 1u);
 }
 
 TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
