@@ -328,6 +328,20 @@ TEST(CglSplineHoles, GenerousOverlapHasNoneFigure55sHas) {
   EXPECT_GT(v.holes, v.referenceHits / 10);
 }
 
+TEST(CglSplineSurface, TextureIndicesFromTheParameters) {
+  // Section 6.9: u = (u-bar - u_min)/(u_max - u_min). The triple bump's range
+  // is [-1, 4]: u-bar = 1.5 gives 2.5/5 = 0.5, v-bar = -1 gives 0.
+  const SplineSurface s =
+      buildSpline(grid(4, 4, zero), 4, 4, EndCondition::Triple, EndCondition::Triple, 2, 0.5);
+  double u = 0, v = 0;
+  splineTexture(s, 1.5, -1.0, u, v);
+  EXPECT_DOUBLE_EQ(u, 0.5);
+  EXPECT_DOUBLE_EQ(v, 0.0);
+  splineTexture(s, 4.0, 0.25, u, v);
+  EXPECT_DOUBLE_EQ(u, 1.0);
+  EXPECT_DOUBLE_EQ(v, 0.25);
+}
+
 TEST(CglSplineBezier, PatchesAreTheSurfaceExactly) {
   // The triple bump: 5 x 5 knot intervals, 25 patches; each Bezier patch
   // evaluated by de Casteljau's Bernstein weights equals Q on its interval.
