@@ -76,6 +76,7 @@ UvMap uvMap(const Object& o) {
       fractalUvMap(o.v0, o.e1, o.ne1, o.umin, o.umax, o.vmin, o.vmax, m.au, m.bu, m.av, m.bv);
       break;
     case ObjectKind::Box:
+    case ObjectKind::Spline:
       break;
   }
   return m;
@@ -178,6 +179,19 @@ std::array<Vec3, 4> polygonCorners(const Object& o) {
   return v;
 }
 
+// A B-spline surface (section 6) as POV-Ray 3.7 bicubic patches, each
+// uniform B-spline patch converted exactly to Bezier form (bezierPatches).
+// The texture of a spline is not mapped (its mean colour is used).
+std::string povSpline(const SplineSurface& sp) {
+  std::string s = "union {";
+  for (const auto& patch : bezierPatches(sp)) {
+    s += "\n  bicubic_patch { type 1 flatness 0.001 u_steps 4 v_steps 4";
+    for (int k = 0; k < 16; ++k) s += (k % 4 == 0 ? "\n   " : ",") + povVector(patch[k]);
+    s += " }";
+  }
+  return s + "\n}";
+}
+
 std::string povGeometry(const Object& o) {
   switch (o.kind) {
     case ObjectKind::Sphere:
@@ -198,6 +212,7 @@ std::string povGeometry(const Object& o) {
     }
     case ObjectKind::Fractal:  // needs the scene's tree: povFractalMesh (src/cgl/fractal.h)
     case ObjectKind::Box:
+    case ObjectKind::Spline:
       break;
   }
   return "";
@@ -328,6 +343,8 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     const std::string geometry =
         o.kind == ObjectKind::Fractal
             ? povFractalMesh(scene.fractals[static_cast<std::size_t>(o.fractal)])
+        : o.kind == ObjectKind::Spline
+            ? povSpline(scene.splines[static_cast<std::size_t>(o.spline)])
             : povGeometry(o);
     // CGL adds k_t T to the whole colour; POV-Ray's transmit t scales the
     // diffuse and ambient terms by 1 - t, which the finish divides out (for
@@ -339,7 +356,8 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     double scale = 1.0;
     std::string pigment;
     std::string matrix;
-    if (sf.texture >= 0 && imageOf[static_cast<std::size_t>(sf.texture)] >= 0)
+    if (sf.texture >= 0 && imageOf[static_cast<std::size_t>(sf.texture)] >= 0 &&
+        o.kind != ObjectKind::Spline)
       matrix = textureMatrix(o, sf);
     const std::string transmit = transparent ? " transmit " + povNumber(sf.kt) : "";
     if (!matrix.empty()) {

@@ -18,6 +18,8 @@ const char* kindName(ObjectKind kind) {
       return "box";
     case ObjectKind::Fractal:
       return "fractal";
+    case ObjectKind::Spline:
+      return "spline";
   }
   return "?";
 }
@@ -88,6 +90,7 @@ Vec3 normalAt(const Object& o, const Vec3& point, double axial) {
       return o.n;
     case ObjectKind::Box:
     case ObjectKind::Fractal:  // the facet's: facetNormal (src/cgl/fractal.h)
+    case ObjectKind::Spline:   // splineNormal (src/cgl/spline.h), from the hit's parameters
       break;
   }
   return {0.0, 0.0, 0.0};
@@ -116,6 +119,7 @@ void textureUv(const Object& o, const Vec3& point, const Vec3& normal, double ax
       fractalTextureUv(o.v0, o.e1, o.ne1, o.umin, o.umax, o.vmin, o.vmax, point, u, v);
       return;
     case ObjectKind::Box:
+    case ObjectKind::Spline:  // splineTexture (src/cgl/spline.h), from the hit's parameters
       break;
   }
   u = v = 0.0;

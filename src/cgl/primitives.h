@@ -18,10 +18,17 @@
 
 namespace prime::cgl {
 
-enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Polygon, Box, Fractal };
+enum class ObjectKind : std::uint8_t {
+  Sphere,
+  Cylinder,
+  Polygon,
+  Box,
+  Fractal,  // a fractal surface: Scene::fractals[Object::fractal] (src/cgl/fractal.h)
+  Spline,   // a B-spline surface: Scene::splines[Object::spline] (src/cgl/spline.h)
+};
 // The length of the statistics arrays indexed by ObjectKind (TraceStats::
 // tests, hits); the Box entry stays 0, boxes are counted apart.
-inline constexpr int kPrimitiveKinds = 5;
+inline constexpr int kPrimitiveKinds = 6;
 
 const char* kindName(ObjectKind kind);
 
@@ -56,6 +63,7 @@ struct Object {
   double umin = 0, umax = 0, vmin = 0, vmax = 0;
   int skip = 0;      // Box: index of the first object after its contents
   int fractal = -1;  // Fractal: index into Scene::fractals
+  int spline = -1;   // Spline: index into Scene::splines
 };
 
 // Intersections. On a hit within (tMin, tMax) return true and set t (and for

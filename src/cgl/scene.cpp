@@ -142,10 +142,11 @@ class Preprocessor {
         process(node.down, m, out, depth + 1);  // as a primitive's (CGL-Q42)
         break;
       case NodeKind::Spline:
-        // CGL-D42: part 2 of the port.
-        throw io::InputError(node.where, "spline surfaces (node " + std::to_string(node.number) +
-                                             ") are rendered by part 2 of the CGL port and are "
-                                             "not available yet");
+        out.push_back(Item{splineObject(node, m), {}});
+        ++scene_.primitives;
+        count(node);
+        process(node.down, m, out, depth + 1);
+        break;
       case NodeKind::Box: {
         std::vector<Item> inner;
         process(node.down, m, inner, depth + 1);
@@ -210,6 +211,46 @@ class Preprocessor {
     if (a == 'y') return {0.0, 1.0, 0.0};
     if (a == 'z') return {0.0, 0.0, 1.0};
     return {1.0, 0.0, 0.0};
+  }
+
+  // Section 6: the control vertices through the current transformation,
+  // then refinement and the box tree (src/cgl/spline.h).
+  Object splineObject(const NodeRecord& node, const Matrix4& m) const {
+    Object o;
+    o.kind = ObjectKind::Spline;
+    o.node = node.number;
+    o.surface = surfaceIndex(node);
+    o.opaque = file_.surfaces[static_cast<std::size_t>(o.surface)].refract == 0.0;
+    auto need = [&](int count, EndCondition end, const char* field) {
+      // The parameter range (6.4.1) must hold at least one knot interval.
+      const ParamRange r = parameterRange(count, end);
+      if (!(r.max > r.min))
+        throw io::InputError(node.where, field,
+                             std::string("at least ") + (end == EndCondition::Single ? "3" : "2") +
+                                 " control vertices for this end condition",
+                             std::to_string(count));
+    };
+    need(node.nu, node.uEnd, "nu");
+    need(node.nv, node.vEnd, "nv");
+    if (node.divisions < 1)
+      throw io::InputError(node.where, "divisions", "an integer >= 1",
+                           std::to_string(node.divisions));
+    if (static_cast<int>(node.controls.size()) != node.nu * node.nv)
+      throw io::InputError(node.where, "control vertices",
+                           std::to_string(node.nu * node.nv) + " (nu x nv)",
+                           std::to_string(node.controls.size()));
+    std::vector<Vec3> controls;
+    controls.reserve(node.controls.size());
+    for (const Vec3& c : node.controls) controls.push_back(pointMatrixMul(c, m));
+    SplineSurface s =
+        buildSpline(controls, node.nu, node.nv, node.uEnd, node.vEnd, node.divisions, node.overlap);
+    s.node = node.number;
+    // Newton's points lie on the surface, inside the control vertices' hull.
+    o.box = s.hull;
+    pad(o.box);
+    o.spline = static_cast<int>(scene_.splines.size());
+    scene_.splines.push_back(std::move(s));
+    return o;
   }
 
   Object primitive(const NodeRecord& node, const Matrix4& m) const {

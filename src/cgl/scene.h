@@ -20,6 +20,7 @@
 #include "src/cgl/colour.h"
 #include "src/cgl/fractal.h"
 #include "src/cgl/primitives.h"
+#include "src/cgl/spline.h"
 #include "src/geom/ray.h"
 
 namespace prime::cgl {
@@ -75,9 +76,10 @@ struct Scene {
   std::vector<Light> lights;
   // Fractal surfaces (section 5): Object::fractal indexes this.
   std::vector<FractalSurface> fractals;
-  Spectrum ambient{};                 // k_a pi I_a lambda (section 9.6: "one colour-vector")
-  std::vector<std::string> warnings;  // ignored scale nodes (Appendix 1 section 9)
-  int primitives = 0, boxes = 0;      // counts of object nodes by kind
+  std::vector<SplineSurface> splines;  // B-spline surfaces (Object::spline), section 6
+  Spectrum ambient{};                  // k_a pi I_a lambda (section 9.6: "one colour-vector")
+  std::vector<std::string> warnings;   // ignored scale nodes (Appendix 1 section 9)
+  int primitives = 0, boxes = 0;       // counts of object nodes by kind
 };
 
 struct BuildOptions {

@@ -21,6 +21,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   totalInternalReflections += o.totalInternalReflections;
   fractal += o.fractal;
   shadowedLights += o.shadowedLights;
+  spline += o.spline;
   return *this;
 }
 
@@ -71,7 +72,8 @@ namespace {
 // hit with t in (tMin, tMax); a fractal's facet and tree work are reported.
 // Boxes are the callers' business.
 inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, double tMin,
-                      double tMax, double& t, double& axial, int& facet, FractalWork& work) {
+                      double tMax, double& t, double& axial, int& facet, SplineHit& sh,
+                      TraceStats& stats) {
   switch (o.kind) {
     case ObjectKind::Sphere:
       return hitSphere(o, br.ray, tMin, tMax, t);
@@ -81,7 +83,13 @@ inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, dou
       return hitPolygon(o, br.ray, tMin, tMax, t);
     case ObjectKind::Fractal:
       return hitFractal(scene.fractals[static_cast<std::size_t>(o.fractal)], br, tMin, tMax, t,
-                        facet, work);
+                        facet, stats.fractal);
+    case ObjectKind::Spline:
+      if (!intersectSpline(scene.splines[static_cast<std::size_t>(o.spline)], br.ray, tMin, tMax,
+                           sh, stats.spline))
+        return false;
+      t = sh.t;
+      return true;
     case ObjectKind::Box:
       break;
   }
@@ -120,13 +128,14 @@ bool Tracer::intersectList(const Ray& ray, double tMax, Hit& hit, TraceStats& st
     }
     double t = 0, axial = 0;
     int facet = -1;
-    const bool h = hitObject(scene_, o, boxRay, eps, tmin, t, axial, facet, stats.fractal);
+    SplineHit sh;
+    const bool h = hitObject(scene_, o, boxRay, eps, tmin, t, axial, facet, sh, stats);
     const auto kind = static_cast<std::size_t>(o.kind);
     ++stats.tests[kind];
     if (h) {
       ++stats.hits[kind];
       tmin = t;
-      hit = {t, i, axial, facet};
+      hit = {t, i, axial, facet, sh};
       found = true;
     }
     ++i;
@@ -145,6 +154,7 @@ bool Tracer::intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& sta
   int bestIndex = -1;
   double bestAxial = 0;
   int bestFacet = -1;
+  SplineHit bestSpline;
   const BoxRay boxRay(ray);
   bvh_.traverse(
       boxRay,
@@ -152,9 +162,10 @@ bool Tracer::intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& sta
         const Object& o = objects[static_cast<std::size_t>(i)];
         double t = 0, axial = 0;
         int facet = -1;
+        SplineHit sh;
         // Hits at exactly `best` are kept for the tie rule below.
         const double limit = bestIndex < 0 ? best : std::nextafter(best, HUGE_VAL);
-        const bool h = hitObject(scene_, o, boxRay, eps, limit, t, axial, facet, stats.fractal);
+        const bool h = hitObject(scene_, o, boxRay, eps, limit, t, axial, facet, sh, stats);
         const auto kind = static_cast<std::size_t>(o.kind);
         ++stats.tests[kind];
         if (!h) return;
@@ -164,11 +175,12 @@ bool Tracer::intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& sta
           bestIndex = i;
           bestAxial = axial;
           bestFacet = facet;
+          bestSpline = sh;
         }
       },
       [&] { return best; });
   if (bestIndex < 0) return false;
-  hit = {best, bestIndex, bestAxial, bestFacet};
+  hit = {best, bestIndex, bestAxial, bestFacet, bestSpline};
   return true;
 }
 
@@ -186,9 +198,10 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
           if (found >= 0 || !o.opaque) return;  // section 9.3: transparent objects cast no shadow
           double t = 0, axial = 0;
           int facet = -1;
+          SplineHit sh;
           const auto kind = static_cast<std::size_t>(o.kind);
           ++stats.tests[kind];
-          if (hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, stats.fractal)) {
+          if (hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats)) {
             ++stats.hits[kind];
             found = i;
           }
@@ -214,7 +227,8 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
     if (o.opaque) {
       double t = 0, axial = 0;
       int facet = -1;
-      const bool h = hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, stats.fractal);
+      SplineHit sh;
+      const bool h = hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats);
       const auto kind = static_cast<std::size_t>(o.kind);
       ++stats.tests[kind];
       if (h) {
@@ -259,6 +273,9 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
   const Vec3 normal =
       object.kind == ObjectKind::Fractal
           ? facetNormal(scene_.fractals[static_cast<std::size_t>(object.fractal)], hit.facet)
+      : object.kind == ObjectKind::Spline
+          ? splineNormal(scene_.splines[static_cast<std::size_t>(object.spline)], hit.spline.u,
+                         hit.spline.v)
           : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;
@@ -303,7 +320,11 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
   double u = 0, w = 0;
   int ui = 0, vi = 0;
   if (surface.texture >= 0) {
-    textureUv(object, point, normal, hit.axial, u, w);
+    if (object.kind == ObjectKind::Spline)  // section 6.9
+      splineTexture(scene_.splines[static_cast<std::size_t>(object.spline)], hit.spline.u,
+                    hit.spline.v, u, w);
+    else
+      textureUv(object, point, normal, hit.axial, u, w);
     ui = textureIndex(u, surface.umod);
     vi = textureIndex(w, surface.vmod);
     // CGL-Q50: texel = row u_i from the top of the image, column v_i.
@@ -331,6 +352,13 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     pr->v = w;
     pr->ui = ui;
     pr->vi = vi;
+    if (object.kind == ObjectKind::Spline) {
+      pr->splineU = hit.spline.u;
+      pr->splineV = hit.spline.v;
+      pr->newtonU0 = hit.spline.u0;
+      pr->newtonV0 = hit.spline.v0;
+      pr->newtonIterations = hit.spline.iterations;
+    }
   }
 
   // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8).

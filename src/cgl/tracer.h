@@ -45,6 +45,9 @@ struct TraceStats {
   std::array<std::uint64_t, 3> shadeCalls{};  // by ShadingModel: Lambert, Phong, Cook
   std::uint64_t totalInternalReflections = 0, shadowedLights = 0;
   FractalWork fractal;  // the fractal trees' box and facet tests (section 5.5)
+  // B-spline surfaces (section 6.7, Table 6): intersection calls, boxes
+  // checked, Newton calls and iterations, hits; and the time in them.
+  SplineCounters spline;
   TraceStats& operator+=(const TraceStats& o);
 };
 
@@ -72,6 +75,10 @@ struct ProbeRay {
   bool textured = false;
   double u = 0, v = 0;
   int ui = 0, vi = 0;
+  // A spline hit: the surface parameters, the leaf's Newton start and the
+  // iterations of the successful call (section 6.8).
+  double splineU = 0, splineV = 0, newtonU0 = 0, newtonV0 = 0;
+  int newtonIterations = 0;
   bool atDepthLimit = false;  // Shade called with the background for R and T
   std::vector<ProbeLight> lights;
   Spectrum colour{};  // what this ray returned
@@ -105,6 +112,7 @@ class Tracer {
     int object = -1;
     double axial = 0;  // a cylinder's u_i
     int facet = -1;    // a fractal's facet
+    SplineHit spline;  // a spline's parameters and Newton start
   };
   // Intersect (section 8.1): the nearest hit with t in (epsilon, tMax).
   bool intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;

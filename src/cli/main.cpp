@@ -189,6 +189,7 @@ int main(int argc, char** argv) {
   prime::cli::cgl::addBenchCommand(app, action);
   prime::cli::cgl::addExportPovCommand(app, action);
   prime::cli::cgl::addPictureCommands(app, action);
+  prime::cli::cgl::addSplinesCommand(app, action);
   app.set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
                                         " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   try {

@@ -128,6 +128,20 @@ class Scene:
         self.nodes.append(([("* " + comment)] if comment else []) + ["%d %s" % (n, text)])
         return n
 
+    def spline(self, surface, nu, endu, nv, endv, divisions, overlap, controls, comment=None,
+               right=0):
+        """A spline node: `controls` is nv groups (lists) of nu (x, y, z) triples."""
+        n = len(self.nodes) + 1
+        lines = ([("* " + comment)] if comment else []) + [
+            "%d spline 00 %02d %d %d %s %d %s %d %s" % (n, right, surface, nu, endu, nv, endv,
+                                                        divisions, overlap)]
+        assert len(controls) == nv and all(len(g) == nu for g in controls)
+        for group in controls:
+            lines += ["%d %s %s %s" % ((i + 1,) + tuple(num(c) for c in v))
+                      for i, v in enumerate(group)]
+        self.nodes.append(lines)
+        return n
+
     def text(self):
         out = ["* scene: " + self.title]
         out += ["* " + l if l else "*" for l in self.about]
@@ -455,6 +469,121 @@ def fractal_hills():
     return s
 
 
+BUMP_CAPTIONS = {
+    "single": "Figure 28, 'a patch as it would result from single boundary vertices' (2:55 minutes)",
+    "double": "Figure 29, 'a patch as it would result from double boundary vertices' (26:49 minutes)",
+    "triple": "Figure 30, 'a patch as it would result from triple boundary vertices' (32:26 "
+              "minutes), the 'bump' of Tables 3 and 6",
+}
+
+
+def spline_bump(end):
+    s = Scene("the bump patch, %s boundary vertices" % end,
+              ["Sweeney 1985, section 6.4, " + BUMP_CAPTIONS[end] + ".",
+               "The bump: a 4 x 4 control graph, flat but for its four middle vertices raised,",
+               "which the program extends to 8 x 8 = 64 vertices by tripling its boundary rows and",
+               "columns (Table 3: 64 original, 1849 refined vertices at divisions 8); overlap 0.5.",
+               "The control vertices are not printed: these are the port's. The end condition",
+               "only restricts the parameter range (6.4.1)."])
+    s.view("eye 0.0 2.2 2.6")
+    s.view("sight towards 0.0 0.05 0.0")
+    s.phong("a pale green plastic", GREEN, 7.0, 2.0, 20.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.5, 1.0, 0.7, 0.0006)
+    xs = [-1.0, -1.0 / 3.0, 1.0 / 3.0, 1.0]
+    controls = [[(x, 1.2 if (0 < i < 3 and 0 < j < 3) else 0.0, z) for i, x in enumerate(xs)]
+                for j, z in enumerate(xs)]
+    s.spline(1, 4, end, 4, end, 8, 0.5, controls)
+    return s
+
+
+def spline_donut():
+    s = Scene("the closed spline donut of Figure 31",
+              ["Sweeney 1985, section 6.4, Figure 31, 'a closed spline donut' (93:04 minutes):",
+               "'U(i,j) = U(i,j+5), U(i,j) = U(i+5,j) for an arrangement of 81 control vertices':",
+               "a 5 x 5 graph, closed both ways, which the program wraps to 9 x 9 = 81 (Table 3:",
+               "9801 refined vertices at divisions 16); overlap 0.75 (Table 6). The vertices are",
+               "the port's: two regular pentagons, scaled so the surface has radii 0.6 and 0.25."])
+    s.view("eye 0.0 2.0 2.4")
+    s.view("sight towards 0.0 0.0 0.0")
+    s.phong("an orange glaze", ORANGE, 7.0, 2.5, 30.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.6, 1.0, 0.5, 0.0006)
+    shrink = (4.0 + 2.0 * math.cos(2.0 * math.pi / 5.0)) / 6.0  # a closed pentagon's spline radius
+    big, small = 0.6 / shrink, 0.25 / shrink
+    controls = []
+    for j in range(5):  # v: around the tube
+        phi = 2.0 * math.pi * j / 5.0
+        group = []
+        for i in range(5):  # u: around the hole
+            theta = 2.0 * math.pi * i / 5.0
+            rr = big + small * math.cos(phi)
+            group.append((rr * math.cos(theta), small * math.sin(phi), rr * math.sin(theta)))
+        controls.append(group)
+    s.spline(1, 5, "closed", 5, "closed", 16, 0.75, controls)
+    return s
+
+
+VASE_PROFILE = [(0.0, 0.16), (0.12, 0.30), (0.32, 0.34), (0.55, 0.16), (0.72, 0.10), (0.85, 0.17)]
+
+
+def spline_vases():
+    s = Scene("three spline vases with too little overlap (Figure 55)",
+              ["Sweeney 1985, section 13, Figure 55: 'three spline vases with insufficient",
+               "overlap; from highest to lowest overlap 0.4, 0.3, 0.2' (90:32 minutes); section",
+               "6.5: 'an overlap less than 0.5 produces an interesting effect'. Each vase is",
+               "closed in u (8 vertices around) and double in v (6 rings), like the tube of",
+               "Appendix 1 section 13; divisions 2. The holes are the point of the picture. The",
+               "CGL camera's right is up x sight, so +x is on the left: 0.4 is at x = +0.85."])
+    s.view("eye 0.0 0.9 3.2")
+    s.view("sight towards 0.0 0.4 0.0")
+    s.phong("a blue glaze", FLAT_BLUE, 7.0, 2.0, 25.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.4, 1.0, 0.8, 0.0006)
+    for k, (x, overlap) in enumerate([(0.85, 0.4), (0.0, 0.3), (-0.85, 0.2)]):
+        controls = []
+        for y, r in VASE_PROFILE:
+            group = []
+            for i in range(8):
+                a = 2.0 * math.pi * (i + 0.5) / 8.0
+                group.append((x + r * math.cos(a), y, r * math.sin(a)))
+            controls.append(group)
+        s.spline(1, 8, "closed", len(VASE_PROFILE), "double", 2, overlap, controls,
+                 comment="overlap %s" % overlap, right=k + 2 if k < 2 else 0)
+    return s
+
+
+def spline_mask():
+    s = Scene("a mask-sized mesh of 2,025 vertices (Tables 3 and 6)",
+              ["Sweeney 1985, Tables 3 and 6, the 'mask' of Figure 53 (a Halloween mask, cut into",
+               "strips and digitized: 2025 vertices, divisions 2, overlap 0.55; 49 minutes in",
+               "Table 6, 72:29 in the caption). The digitized mesh is lost: this is the port's",
+               "own mask, a 41 x 41 height field (extended to 45 x 45 = 2025 by tripling; Table 3:",
+               "7569 refined vertices), for Table 6's measurements."])
+    s.view("eye 0.0 0.0 3.0")
+    s.view("sight towards 0.0 0.0 0.0")
+    s.phong("copper-coloured", ORANGE, 7.0, 2.5, 30.0)
+    s.ambient(0.0005)
+    s.light("infinity", 0.5, 0.7, 1.0, 0.0006)
+
+    def height(x, y):
+        face = max(0.0, 1.0 - (x / 0.8) ** 2 - (y / 1.0) ** 2)
+        z = 0.45 * math.sqrt(face)
+        z += 0.18 * math.exp(-((x / 0.09) ** 2) - ((y + 0.05) / 0.3) ** 2)  # nose
+        for ex in (-0.3, 0.3):
+            z -= 0.12 * math.exp(-(((x - ex) / 0.14) ** 2) - ((y - 0.25) / 0.09) ** 2)  # eyes
+        z -= 0.08 * math.exp(-((x / 0.3) ** 2) - ((y + 0.5) / 0.06) ** 2)  # mouth
+        return z
+
+    controls = []
+    for j in range(41):
+        y = 1.0 - 2.0 * j / 40.0
+        controls.append([(-1.0 + 2.0 * i / 40.0, y, height(-1.0 + 2.0 * i / 40.0, y))
+                         for i in range(41)])
+    s.spline(1, 41, "triple", 41, "triple", 2, 0.55, controls)
+    return s
+
+
 SCENES = {
     "checkerboard.cgl": checkerboard,
     "ball.cgl": ball,
@@ -473,6 +602,12 @@ SCENES = {
     "fractal-9.cgl": lambda: fractal(9),
     "fractal-10.cgl": lambda: fractal(10),
     "fractal-hills.cgl": fractal_hills,
+    "spline-bump-single.cgl": lambda: spline_bump("single"),
+    "spline-bump-double.cgl": lambda: spline_bump("double"),
+    "spline-bump-triple.cgl": lambda: spline_bump("triple"),
+    "spline-donut.cgl": spline_donut,
+    "spline-vases.cgl": spline_vases,
+    "spline-mask.cgl": spline_mask,
 }
 
 

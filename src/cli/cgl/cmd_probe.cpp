@@ -56,6 +56,12 @@ void printReport(const prime::cgl::ProbeReport& r, const prime::cgl::Scene& scen
     if (ray.facet >= 0)
       std::printf("%s  the fractal's facet %d (leaf order, section 5.6)\n", indent.c_str(),
                   ray.facet);
+    if (ray.objectKind == prime::cgl::ObjectKind::Spline)
+      std::printf(
+          "%s  spline (u-bar, v-bar) = (%.9g, %.9g): Newton from the leaf's start (%.6g, "
+          "%.6g), %d iteration(s)\n",
+          indent.c_str(), ray.splineU, ray.splineV, ray.newtonU0, ray.newtonV0,
+          ray.newtonIterations);
     if (ray.textured)
       std::printf("%s  texture u %.6f v %.6f: texel row %d, column %d\n", indent.c_str(), ray.u,
                   ray.v, ray.ui, ray.vi);

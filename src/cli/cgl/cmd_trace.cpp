@@ -89,6 +89,17 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
       static_cast<unsigned long long>(s.tests[2]), static_cast<unsigned long long>(s.boxTests),
       static_cast<unsigned long long>(s.shadeCalls[0]),
       static_cast<unsigned long long>(s.shadeCalls[1]), fractalSummary(s).c_str());
+  if (s.spline.calls > 0)  // B-spline surfaces (section 6, Table 6)
+    std::printf(
+        "splines: %llu intersections, %llu boxes checked, %llu Newton calls, %.2f "
+        "iterations per call, %llu hits\n",
+        static_cast<unsigned long long>(s.spline.calls),
+        static_cast<unsigned long long>(s.spline.boxes),
+        static_cast<unsigned long long>(s.spline.newtonCalls),
+        s.spline.newtonCalls
+            ? static_cast<double>(s.spline.iterations) / static_cast<double>(s.spline.newtonCalls)
+            : 0.0,
+        static_cast<unsigned long long>(s.spline.hits));
 }
 
 }  // namespace

@@ -18,12 +18,14 @@ inline constexpr const char* kBenchCommand = "cgl-bench";
 inline constexpr const char* kExportPovCommand = "cgl-export-pov";
 inline constexpr const char* kExportCommand = "cgl-export";
 inline constexpr const char* kViewCommand = "cgl-view";
+inline constexpr const char* kSplinesCommand = "cgl-splines";
 
 void addTraceCommand(CLI::App& app, Action& action);      // cmd_trace.cpp
 void addProbeCommand(CLI::App& app, Action& action);      // cmd_probe.cpp
 void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
 void addPictureCommands(CLI::App& app, Action& action);   // cmd_picture.cpp: export, view
+void addSplinesCommand(CLI::App& app, Action& action);    // cmd_splines.cpp: Tables 3 and 6
 
 // The package's own call statement (Appendix 2: `trace -yh 511 -d 3 -s -a 2
 // scene`): its one-dash flags rewritten as this port's long options, so a

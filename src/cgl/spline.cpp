@@ -1,0 +1,586 @@
+#include "src/cgl/spline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace prime::cgl {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The knot interval i of u (clamped to -1 .. last) and the local parameter.
+int interval(double u, int last, double& local) {
+  int i = static_cast<int>(std::floor(u));
+  i = std::clamp(i, -1, last);
+  local = u - i;
+  return i;
+}
+
+}  // namespace
+
+void bsplineWeights(double u, double w[4], double dw[4]) {
+  const double u2 = u * u, u3 = u2 * u, t = 1.0 - u;
+  w[0] = t * t * t / 6.0;                              // b_3: 1 - 3u + 3u^2 - u^3
+  w[1] = (4.0 - 6.0 * u2 + 3.0 * u3) / 6.0;            // b_2
+  w[2] = (1.0 + 3.0 * u + 3.0 * u2 - 3.0 * u3) / 6.0;  // b_1
+  w[3] = u3 / 6.0;                                     // b_0
+  dw[0] = -t * t / 2.0;
+  dw[1] = (-12.0 * u + 9.0 * u2) / 6.0;
+  dw[2] = (3.0 + 6.0 * u - 9.0 * u2) / 6.0;
+  dw[3] = u2 / 2.0;
+}
+
+std::vector<int> extendedIndices(int count, EndCondition end) {
+  std::vector<int> out(static_cast<std::size_t>(count + 4));
+  for (int k = 0; k < count + 4; ++k) {
+    const int i = k - 4;  // the extended index, -4 .. m
+    if (end == EndCondition::Closed) {
+      // Section 6.4: U_i = U_{i + nu} (the donut's U_{i,j} = U_{i+5,j}).
+      out[static_cast<std::size_t>(k)] = ((i % count) + count) % count;
+    } else {
+      // Section 6.4: U_{-4} = U_{-3} = U_{-2} (the user's first vertex) and
+      // likewise at the far end.
+      out[static_cast<std::size_t>(k)] = std::clamp(k - 2, 0, count - 1);
+    }
+  }
+  return out;
+}
+
+ParamRange parameterRange(int count, EndCondition end) {
+  const double m = count - 1;
+  switch (end) {
+    case EndCondition::Triple:
+      return {-1.0, m + 1.0};
+    case EndCondition::Double:
+      return {0.0, m};
+    case EndCondition::Single:
+      return {1.0, m - 1.0};
+    case EndCondition::Closed:
+      return {-1.0, m};  // CGL-Q141
+  }
+  return {-1.0, m + 1.0};
+}
+
+int refinedLast(int m, int divisions) {
+  return (m + 2) * divisions - 2;
+}
+
+double refinedKnot(int r, int m, int divisions) {
+  const int p = refinedLast(m, divisions);
+  if (r <= -1) return r;
+  if (r >= p + 1) return (m + 1) + (r - p - 1);
+  return -1.0 + static_cast<double>(r + 1) / divisions;
+}
+
+std::vector<double> osloAlphas(int m, int divisions) {
+  const int p = refinedLast(m, divisions);
+  const int cols = m + 5;
+  std::vector<double> out(static_cast<std::size_t>((p + 5) * cols), 0.0);
+  // alpha_{i,l}(r) for i = -4 .. m + 4 - l (knots u_i = i, i = -4 .. m + 4).
+  const int span = m + 9;
+  std::vector<double> prev(static_cast<std::size_t>(span)), cur(static_cast<std::size_t>(span));
+  for (int r = -4; r <= p; ++r) {
+    auto at = [](std::vector<double>& a, int i) -> double& {
+      return a[static_cast<std::size_t>(i + 4)];
+    };
+    const double wr = refinedKnot(r, m, divisions);
+    std::fill(prev.begin(), prev.end(), 0.0);
+    for (int i = -4; i <= m + 3; ++i) at(prev, i) = (i <= wr && wr < i + 1) ? 1.0 : 0.0;
+    for (int l = 2; l <= 4; ++l) {
+      std::fill(cur.begin(), cur.end(), 0.0);
+      const double wk = refinedKnot(r + l - 1, m, divisions);
+      for (int i = -4; i <= m + 4 - l; ++i) {
+        // (6.3.2) with u-bar_i = i.
+        const double a = (i + l - wk) / static_cast<double>(l - 1) * at(prev, i + 1);
+        const double b = (wk - i) / static_cast<double>(l - 1) * at(prev, i);
+        at(cur, i) = a + b;
+      }
+      std::swap(prev, cur);
+    }
+    for (int i = -4; i <= m; ++i)
+      out[static_cast<std::size_t>((r + 4) * cols + (i + 4))] = at(prev, i);
+  }
+  return out;
+}
+
+std::size_t SplineSurface::bytes() const {
+  return sizeof(SplineSurface) + u.size() * sizeof(Vec3) + w.size() * sizeof(Vec3) +
+         nodes.size() * sizeof(SplineNode);
+}
+
+namespace {
+
+class TreeBuilder {
+ public:
+  TreeBuilder(SplineSurface& s, std::vector<int> ua, std::vector<int> vb)
+      : s_(s), ua_(std::move(ua)), vb_(std::move(vb)) {}
+
+  void build() {
+    s_.nodes.assign(1, SplineNode{});
+    node(0, 0, static_cast<int>(ua_.size()) - 1, 0, static_cast<int>(vb_.size()) - 1);
+  }
+
+ private:
+  const Vec3& wAt(int r, int s) const {
+    return s_.w[static_cast<std::size_t>((r + 4) + (s + 4) * s_.pu)];
+  }
+
+  // Section 6.5's leaf box over W_{r,s} and its four neighbours.
+  Aabb leafBox(int r, int s) const {
+    const Vec3& c = wAt(r, s);
+    Vec3 lo = c, hi = c;
+    const int nr[4] = {r + 1, r - 1, r, r};
+    const int ns[4] = {s, s, s + 1, s - 1};
+    for (int k = 0; k < 4; ++k) {
+      // CGL-Q145: a neighbour beyond the refined graph is left out.
+      if (nr[k] < -4 || nr[k] > s_.pu - 5 || ns[k] < -4 || ns[k] > s_.pv - 5) continue;
+      const Vec3& q = wAt(nr[k], ns[k]);
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], q[a]);
+        hi[a] = std::max(hi[a], q[a]);
+      }
+    }
+    Aabb box;
+    const double o = s_.overlap;
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = (1.0 - o) * c[a] + o * lo[a];
+      box.hi[a] = (1.0 - o) * c[a] + o * hi[a];
+    }
+    return box;
+  }
+
+  // Quarters the knot-index rectangle [a0, a1] x [b0, b1] (a side of one
+  // knot is not split: 2 children then, CGL-Q145).
+  void node(int at, int a0, int a1, int b0, int b1) {
+    if (a0 == a1 && b0 == b1) {
+      const int a = ua_[static_cast<std::size_t>(a0)], b = vb_[static_cast<std::size_t>(b0)];
+      SplineNode& leaf = s_.nodes[static_cast<std::size_t>(at)];
+      leaf.box = leafBox(a - 2, b - 2);
+      leaf.count = 0;
+      leaf.u0 = refinedKnot(a, s_.m, s_.divisions);
+      leaf.v0 = refinedKnot(b, s_.n, s_.divisions);
+      ++s_.leaves;
+      return;
+    }
+    int as[2][2], bs[2][2];
+    int na = 1, nb = 1;
+    as[0][0] = a0;
+    as[0][1] = a1;
+    bs[0][0] = b0;
+    bs[0][1] = b1;
+    if (a1 > a0) {
+      const int mid = (a0 + a1) / 2;
+      as[0][1] = mid;
+      as[1][0] = mid + 1;
+      as[1][1] = a1;
+      na = 2;
+    }
+    if (b1 > b0) {
+      const int mid = (b0 + b1) / 2;
+      bs[0][1] = mid;
+      bs[1][0] = mid + 1;
+      bs[1][1] = b1;
+      nb = 2;
+    }
+    const int first = static_cast<int>(s_.nodes.size());
+    s_.nodes.resize(s_.nodes.size() + static_cast<std::size_t>(na * nb));
+    int k = 0;
+    for (int j = 0; j < nb; ++j)
+      for (int i = 0; i < na; ++i) node(first + k++, as[i][0], as[i][1], bs[j][0], bs[j][1]);
+    Aabb box;
+    for (int c = 0; c < na * nb; ++c) box.add(s_.nodes[static_cast<std::size_t>(first + c)].box);
+    SplineNode& n = s_.nodes[static_cast<std::size_t>(at)];
+    n.box = box;
+    n.first = first;
+    n.count = na * nb;
+  }
+
+  SplineSurface& s_;
+  std::vector<int> ua_, vb_;  // the refined knot indices in the parameter range
+};
+
+// The refined knot indices a with w-bar_a in the range, both ends included
+// (CGL-Q141: for a closed direction too, so that Newton from the last leaf
+// reaches the seam without leaving the range).
+std::vector<int> knotsInRange(int m, int divisions, ParamRange range) {
+  std::vector<int> out;
+  const int p = refinedLast(m, divisions);
+  const double eps = 1e-9;
+  for (int a = -1; a <= p + 1; ++a) {
+    const double w = refinedKnot(a, m, divisions);
+    if (w < range.min - eps) continue;
+    if (w > range.max + eps) continue;
+    out.push_back(a);
+  }
+  return out;
+}
+
+}  // namespace
+
+SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
+                          EndCondition vEnd, int divisions, double overlap) {
+  SplineSurface s;
+  s.mu = nu + 4;
+  s.mv = nv + 4;
+  s.m = nu - 1;
+  s.n = nv - 1;
+  s.uEnd = uEnd;
+  s.vEnd = vEnd;
+  s.divisions = std::max(1, divisions);
+  s.overlap = overlap;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<int> eu = extendedIndices(nu, uEnd), ev = extendedIndices(nv, vEnd);
+  s.u.resize(static_cast<std::size_t>(s.mu * s.mv));
+  for (int j = 0; j < s.mv; ++j)
+    for (int i = 0; i < s.mu; ++i) {
+      const Vec3& c = controls[static_cast<std::size_t>(ev[static_cast<std::size_t>(j)] * nu +
+                                                        eu[static_cast<std::size_t>(i)])];
+      s.u[static_cast<std::size_t>(i + j * s.mu)] = c;
+      s.hull.add(c);
+    }
+  const ParamRange ru = parameterRange(nu, uEnd), rv = parameterRange(nv, vEnd);
+  s.umin = ru.min;
+  s.umax = ru.max;
+  s.vmin = rv.min;
+  s.vmax = rv.max;
+
+  // Refinement (6.3.3), one direction after the other.
+  const int p = refinedLast(s.m, s.divisions), q = refinedLast(s.n, s.divisions);
+  s.pu = p + 5;
+  s.pv = q + 5;
+  const std::vector<double> au = osloAlphas(s.m, s.divisions), av = osloAlphas(s.n, s.divisions);
+  std::vector<Vec3> half(static_cast<std::size_t>(s.pu * s.mv), Vec3{0, 0, 0});
+  for (int j = 0; j < s.mv; ++j)
+    for (int r = 0; r < s.pu; ++r) {
+      Vec3 sum{0, 0, 0};
+      for (int i = 0; i < s.mu; ++i) {
+        const double a = au[static_cast<std::size_t>(r * s.mu + i)];
+        if (a != 0.0) sum = sum + s.u[static_cast<std::size_t>(i + j * s.mu)] * a;
+      }
+      half[static_cast<std::size_t>(r + j * s.pu)] = sum;
+    }
+  s.w.assign(static_cast<std::size_t>(s.pu * s.pv), Vec3{0, 0, 0});
+  for (int t = 0; t < s.pv; ++t)
+    for (int r = 0; r < s.pu; ++r) {
+      Vec3 sum{0, 0, 0};
+      for (int j = 0; j < s.mv; ++j) {
+        const double a = av[static_cast<std::size_t>(t * s.mv + j)];
+        if (a != 0.0) sum = sum + half[static_cast<std::size_t>(r + j * s.pu)] * a;
+      }
+      s.w[static_cast<std::size_t>(r + t * s.pu)] = sum;
+    }
+  s.refineSeconds = secondsSince(start);
+
+  const auto treeStart = std::chrono::steady_clock::now();
+  TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
+  tb.build();
+  s.hull.add(s.nodes[0].box);
+  s.treeSeconds = secondsSince(treeStart);
+
+  // CGL-Q143: the tolerance, in scene units, relative to the surface's size.
+  const Vec3 ext = s.hull.hi - s.hull.lo;
+  s.tolerance = 1e-9 * std::max(1e-300, length(ext));
+  return s;
+}
+
+SplinePoint evaluate(const SplineSurface& s, double u, double v) {
+  double lu = 0, lv = 0;
+  const int i = interval(u, s.m, lu), j = interval(v, s.n, lv);
+  double wu[4], dwu[4], wv[4], dwv[4];
+  bsplineWeights(lu, wu, dwu);
+  bsplineWeights(lv, wv, dwv);
+  SplinePoint out;
+  for (int b = 0; b < 4; ++b) {
+    Vec3 row{0, 0, 0}, drow{0, 0, 0};
+    const std::size_t base = static_cast<std::size_t>((i + 1) + (j - 3 + b + 4) * s.mu);
+    for (int a = 0; a < 4; ++a) {
+      const Vec3& c = s.u[base + static_cast<std::size_t>(a)];
+      row = row + c * wu[a];
+      drow = drow + c * dwu[a];
+    }
+    out.q = out.q + row * wv[b];
+    out.qu = out.qu + drow * wv[b];
+    out.qv = out.qv + row * dwv[b];
+  }
+  return out;
+}
+
+void evaluateLong(const SplineSurface& s, long double u, long double v, long double out[3]) {
+  auto weights = [](long double t, long double w[4]) {
+    const long double r = 1.0L - t;
+    w[0] = r * r * r / 6.0L;
+    w[1] = (4.0L - 6.0L * t * t + 3.0L * t * t * t) / 6.0L;
+    w[2] = (1.0L + 3.0L * t + 3.0L * t * t - 3.0L * t * t * t) / 6.0L;
+    w[3] = t * t * t / 6.0L;
+  };
+  int i = std::clamp(static_cast<int>(std::floor(u)), -1, s.m);
+  int j = std::clamp(static_cast<int>(std::floor(v)), -1, s.n);
+  long double wu[4], wv[4];
+  weights(u - i, wu);
+  weights(v - j, wv);
+  out[0] = out[1] = out[2] = 0.0L;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const Vec3& c = s.u[static_cast<std::size_t>((i + 1 + a) + (j + 1 + b) * s.mu)];
+      for (int k = 0; k < 3; ++k) out[k] += static_cast<long double>(c[k]) * wu[a] * wv[b];
+    }
+}
+
+RayPlanes rayPlanes(const Ray& ray) {
+  RayPlanes p;
+  const Vec3& d = ray.d;
+  int k = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::fabs(d[a]) < std::fabs(d[k])) k = a;
+  Vec3 e{0, 0, 0};
+  e[k] = 1.0;
+  const Vec3 n1 = cross(d, e);
+  const double l1 = length(n1);
+  if (!(l1 > 0.0)) return p;
+  p.n1 = n1 * (1.0 / l1);
+  const Vec3 n2 = cross(p.n1, d);
+  const double l2 = length(n2);
+  if (!(l2 > 0.0)) return p;
+  p.n2 = n2 * (1.0 / l2);
+  p.a1 = dot(p.n1, ray.o);
+  p.a2 = dot(p.n2, ray.o);
+  p.ok = true;
+  return p;
+}
+
+RayPlanes documentRayPlanes(const Ray& ray) {
+  RayPlanes p;
+  p.n1 = cross(ray.o, ray.d);
+  p.n2 = cross(p.n1, ray.d);
+  p.a1 = dot(p.n1, ray.o);
+  p.a2 = dot(p.n2, ray.o);
+  p.ok = true;  // degenerate (N_1 = 0) when O = 0 or O || D: Newton's Jacobian is then singular
+  return p;
+}
+
+NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
+                    double v0, const NewtonOptions& options) {
+  NewtonResult res;
+  if (!planes.ok) return res;
+  double u = u0, v = v0;
+  SplinePoint sp = evaluate(s, u, v);
+  // (6.8.1) with the basis factor B_{i,4}(u) B_{j,4}(v) (CGL-E140).
+  double e1 = dot(planes.n1, sp.q) - planes.a1, e2 = dot(planes.n2, sp.q) - planes.a2;
+  double err = std::fabs(e1) + std::fabs(e2);
+  for (int it = 1; it <= options.maxIterations; ++it) {
+    const double j11 = dot(planes.n1, sp.qu), j12 = dot(planes.n1, sp.qv);
+    const double j21 = dot(planes.n2, sp.qu), j22 = dot(planes.n2, sp.qv);
+    const double det = j11 * j22 - j12 * j21;
+    res.iterations = it;
+    if (!(det != 0.0) || !std::isfinite(det)) return res;
+    const double du = (e1 * j22 - e2 * j12) / det, dv = (j11 * e2 - j21 * e1) / det;
+    u -= du;
+    v -= dv;
+    // Failure: the iterate leaves the parameter range ...
+    if (!(u >= s.umin && u <= s.umax && v >= s.vmin && v <= s.vmax)) return res;
+    sp = evaluate(s, u, v);
+    e1 = dot(planes.n1, sp.q) - planes.a1;
+    e2 = dot(planes.n2, sp.q) - planes.a2;
+    const double next = std::fabs(e1) + std::fabs(e2);
+    if (next < options.tolerance) {
+      const Vec3 od = sp.q - ray.o;
+      res.hit = true;
+      res.u = u;
+      res.v = v;
+      res.t = dot(od, ray.d) / dot(ray.d, ray.d);  // CGL-E141
+      return res;
+    }
+    // ... or |E_1| + |E_2| increased.
+    if (next > err) return res;
+    err = next;
+  }
+  return res;  // CGL-Q144: the iteration cap
+}
+
+SplineCounters& SplineCounters::operator+=(const SplineCounters& o) {
+  calls += o.calls;
+  boxes += o.boxes;
+  newtonCalls += o.newtonCalls;
+  iterations += o.iterations;
+  hits += o.hits;
+  return *this;
+}
+
+namespace {
+
+struct Active {
+  double d;
+  int node;
+};
+// Min-heap order on (distance, node): deterministic for ties.
+bool later(const Active& a, const Active& b) {
+  return a.d > b.d || (a.d == b.d && a.node > b.node);
+}
+
+// The per-thread active list (section 6.7): reserved once for the largest
+// tree the thread meets, so a ray never allocates (each node enters the list
+// at most once, so the size never exceeds the node count).
+thread_local std::vector<Active> tActive;
+
+}  // namespace
+
+bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+  ++counters.calls;
+  if (s.nodes.empty()) return false;
+  std::vector<Active>& active = tActive;
+  if (active.capacity() < s.nodes.size()) active.reserve(s.nodes.size());
+  active.clear();
+  const BoxRay boxRay(ray);
+  ++counters.boxes;
+  const double d0 = s.nodes[0].box.entry(boxRay);
+  if (!(d0 < tMax)) return false;
+  active.push_back({d0, 0});
+  const RayPlanes planes = rayPlanes(ray);
+  NewtonOptions options;
+  options.tolerance = s.tolerance;
+  double best = tMax;
+  bool found = false;
+  while (!active.empty()) {
+    std::pop_heap(active.begin(), active.end(), later);
+    const Active a = active.back();
+    active.pop_back();
+    // Success: the hit is nearer than the first node on the list.
+    if (!(a.d < best)) break;
+    const SplineNode& n = s.nodes[static_cast<std::size_t>(a.node)];
+    if (n.count == 0) {
+      ++counters.newtonCalls;
+      if (record) record->push_back({n.u0, n.v0});
+      const NewtonResult r = newton(s, planes, ray, n.u0, n.v0, options);
+      counters.iterations += static_cast<std::uint64_t>(r.iterations);
+      if (r.hit && r.t > tMin && r.t < best) {
+        best = r.t;
+        found = true;
+        hit = {r.t, r.u, r.v, n.u0, n.v0, r.iterations};
+      }
+      continue;
+    }
+    for (int c = 0; c < n.count; ++c) {
+      const int ci = n.first + c;
+      ++counters.boxes;
+      const double d = s.nodes[static_cast<std::size_t>(ci)].box.entry(boxRay);
+      if (d < best) {
+        active.push_back({d, ci});
+        std::push_heap(active.begin(), active.end(), later);
+      }
+    }
+  }
+  if (found) ++counters.hits;
+  return found;
+}
+
+bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                              SplineHit& hit) {
+  const BoxRay boxRay(ray);
+  const RayPlanes planes = rayPlanes(ray);
+  NewtonOptions options;
+  options.tolerance = s.tolerance;
+  options.maxIterations = 40;
+  const std::vector<int> ua = knotsInRange(s.m, s.divisions, {s.umin, s.umax});
+  const std::vector<int> vb = knotsInRange(s.n, s.divisions, {s.vmin, s.vmax});
+  double best = tMax;
+  bool found = false;
+  for (std::size_t jb = 0; jb + 1 < vb.size(); ++jb)
+    for (std::size_t ia = 0; ia + 1 < ua.size(); ++ia) {
+      const int a = ua[ia], b = vb[jb];
+      // The surface over [w_a, w_{a+1}) x [t_b, t_{b+1}) lies in the convex
+      // hull of W_{a-3..a, b-3..b} (section 6.1's convex hull property).
+      Aabb box;
+      for (int sj = b - 3; sj <= b; ++sj)
+        for (int ri = a - 3; ri <= a; ++ri)
+          box.add(s.w[static_cast<std::size_t>((ri + 4) + (sj + 4) * s.pu)]);
+      const double pad = 4.0 * s.tolerance;
+      box.lo = box.lo - Vec3{pad, pad, pad};
+      box.hi = box.hi + Vec3{pad, pad, pad};
+      if (!(box.entry(boxRay) < best)) continue;
+      const double u0 = refinedKnot(a, s.m, s.divisions), u1 = refinedKnot(a + 1, s.m, s.divisions);
+      const double v0 = refinedKnot(b, s.n, s.divisions), v1 = refinedKnot(b + 1, s.n, s.divisions);
+      const double starts[5][2] = {
+          {(u0 + u1) / 2, (v0 + v1) / 2}, {u0, v0}, {u1, v0}, {u0, v1}, {u1, v1}};
+      for (const auto& st : starts) {
+        const NewtonResult r = newton(s, planes, ray, st[0], st[1], options);
+        if (r.hit && r.t > tMin && r.t < best) {
+          best = r.t;
+          found = true;
+          hit = {r.t, r.u, r.v, st[0], st[1], r.iterations};
+        }
+      }
+    }
+  return found;
+}
+
+Vec3 splineNormal(const SplineSurface& s, double u, double v) {
+  const double cu = (s.umin + s.umax) / 2, cv = (s.vmin + s.vmax) / 2;
+  for (int k = 0; k < 6; ++k) {
+    const SplinePoint sp = evaluate(s, u, v);
+    const Vec3 n = cross(sp.qu, sp.qv);
+    const double l = length(n);
+    if (l > 1e-12 * (1.0 + length(sp.qu) * length(sp.qv))) return n * (1.0 / l);
+    // CGL-Q146: Q_u or Q_v vanishes (a tripled edge): step inwards.
+    u += (cu - u) * 1e-4 * (k + 1);
+    v += (cv - v) * 1e-4 * (k + 1);
+  }
+  return {0.0, 0.0, 1.0};
+}
+
+void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv) {
+  tu = std::clamp((u - s.umin) / (s.umax - s.umin), 0.0, 1.0);
+  tv = std::clamp((v - s.vmin) / (s.vmax - s.vmin), 0.0, 1.0);
+}
+
+std::vector<std::array<Vec3, 16>> bezierPatches(const SplineSurface& s) {
+  // Uniform cubic B-spline segment -> Bezier: P_0 = (U_0 + 4U_1 + U_2)/6,
+  // P_1 = (2U_1 + U_2)/3, P_2 = (U_1 + 2U_2)/3, P_3 = (U_1 + 4U_2 + U_3)/6.
+  static constexpr double k[4][4] = {{1.0 / 6, 4.0 / 6, 1.0 / 6, 0.0},
+                                     {0.0, 2.0 / 3, 1.0 / 3, 0.0},
+                                     {0.0, 1.0 / 3, 2.0 / 3, 0.0},
+                                     {0.0, 1.0 / 6, 4.0 / 6, 1.0 / 6}};
+  std::vector<std::array<Vec3, 16>> out;
+  const int i0 = static_cast<int>(std::lround(s.umin)), i1 = static_cast<int>(std::lround(s.umax));
+  const int j0 = static_cast<int>(std::lround(s.vmin)), j1 = static_cast<int>(std::lround(s.vmax));
+  for (int j = j0; j < j1; ++j)
+    for (int i = i0; i < i1; ++i) {
+      // The segment [i, i + 1) x [j, j + 1) uses U_{i-3..i, j-3..j}.
+      std::array<Vec3, 16> patch{};
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a) {
+          Vec3 p{0, 0, 0};
+          for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+              const double w = k[a][x] * k[b][y];
+              if (w != 0.0)
+                p = p + s.u[static_cast<std::size_t>((i + 1 + x) + (j + 1 + y) * s.mu)] * w;
+            }
+          patch[static_cast<std::size_t>(b * 4 + a)] = p;
+        }
+      out.push_back(patch);
+    }
+  return out;
+}
+
+void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& count) {
+  ++count.rays;
+  SplineHit ref, path;
+  SplineCounters c;
+  const bool r = intersectSplineReference(s, ray, tMin, kInf, ref);
+  const bool p = intersectSpline(s, ray, tMin, kInf, path, c);
+  if (r) ++count.referenceHits;
+  if (p) ++count.pathHits;
+  if (r && !p) ++count.holes;
+  if (p && !r) ++count.extra;
+  if (p && r && path.t > ref.t + 1e-6 * (1.0 + ref.t)) ++count.farther;
+}
+
+}  // namespace prime::cgl

@@ -1,0 +1,170 @@
+// The Waterloo CGL package's free-form B-spline surfaces (M. A. J. Sweeney,
+// "The Waterloo CGL Ray Tracing Package", University of Waterloo CS-85-35,
+// 1985, section 6, "Splines"): a uniform bicubic B-spline surface from the
+// spline node's control graph, extended per end condition (section 6.4),
+// refined by the Oslo algorithm (section 6.3), a tree of nested boxes over
+// the refined vertices (section 6.5), Kajiya's sorted active list (section
+// 6.7) and Newton's iteration on two planes through the ray (section 6.8),
+// then the normal, point, distance and texture indices of section 6.9.
+//
+// Parameters: the knots are the integers, u-bar_i = i, i = -4 .. m + 4 with
+// m = nu - 1 (likewise v-bar with n = nv - 1). The readings chosen where the
+// text is damaged or silent are CGL-E140.., CGL-Q140.. in
+// docs/cgl/deviations.md.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "legacy_io/cgl/scene_file.h"
+#include "src/geom/aabb.h"
+#include "src/geom/ray.h"
+#include "src/math/vec.h"
+
+namespace prime::cgl {
+
+// The uniform cubic B-spline segments of section 6.1 at the local parameter
+// u in [0, 1]: w[k] weights U_{i-3+k} on the knot interval [u_i, u_{i+1}),
+// i.e. w = (b_3, b_2, b_1, b_0)(u); dw their derivatives (d/du).
+void bsplineWeights(double u, double w[4], double dw[4]);
+
+// The extended control graph in one direction (CGL-Q140): nu user vertices
+// become nu + 4, indices -4 .. m (m = nu - 1); element k (index k - 4) is the
+// user vertex it copies. Open ends triple the first and last vertex (two
+// copies added at each end); closed ends wrap, U_i = U_{i + nu}.
+std::vector<int> extendedIndices(int count, EndCondition end);
+
+// The parameter range (6.4.1) of one direction with nu vertices (m = nu -
+// 1): triple [-1, m + 1], double [0, m], single [1, m - 1], closed [-1, m)
+// (CGL-Q141: nu distinct segments, each once).
+struct ParamRange {
+  double min = 0, max = 0;
+};
+ParamRange parameterRange(int count, EndCondition end);
+
+// Oslo refinement (6.3.2) for uniform knots u-bar_i = i, i = -4 .. m + 4, each
+// interval [u_{-1}, u_{m+1}) split into `divisions` parts. refinedKnot(r) is
+// w-bar_r, r = -4 .. p + 4, p = (m + 2) divisions - 2. The alphas are a
+// (p + 5) x (m + 5) matrix, alpha[(r + 4)(m + 5) + (i + 4)] = alpha_{i,4}(r).
+int refinedLast(int m, int divisions);  // p
+double refinedKnot(int r, int m, int divisions);
+std::vector<double> osloAlphas(int m, int divisions);
+
+// A node of the box tree (section 6.5): children are `count` consecutive
+// nodes from `first`; a leaf (count 0) carries the Newton start.
+struct SplineNode {
+  Aabb box;
+  int first = 0;
+  int count = 0;
+  double u0 = 0, v0 = 0;  // leaf: (w-bar_{r+2}, t-bar_{s+2})
+};
+
+struct SplineSurface {
+  int node = 0;  // the scene node
+  int mu = 0;    // extended vertices in u: nu + 4 (indices -4 .. m)
+  int mv = 0;    // extended vertices in v: nv + 4
+  int m = 0, n = 0;
+  EndCondition uEnd = EndCondition::Triple, vEnd = EndCondition::Triple;
+  int divisions = 1;
+  double overlap = 0.5;
+  // The extended, transformed control graph: U_{i,j} = u[(i + 4) + (j + 4) mu].
+  std::vector<Vec3> u;
+  double umin = 0, umax = 0, vmin = 0, vmax = 0;
+  // The refined vertices W_{r,s} = w[(r + 4) + (s + 4) pu], r = -4 .. p.
+  int pu = 0, pv = 0;
+  std::vector<Vec3> w;
+  std::vector<SplineNode> nodes;  // nodes[0] is the root
+  int leaves = 0;
+  double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
+  Aabb hull;             // the control vertices' box: contains every surface point
+  double refineSeconds = 0, treeSeconds = 0;
+  std::size_t bytes() const;
+};
+
+// Builds a surface from the transformed user control vertices (nv groups of
+// nu, controls[v * nu + u], as the reader stores them). Throws nothing: the
+// reader has checked the counts; divisions >= 1, nu, nv >= 1.
+SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
+                          EndCondition vEnd, int divisions, double overlap);
+
+// Q, Q_u and Q_v at (u, v) from the original (extended) control vertices.
+struct SplinePoint {
+  Vec3 q{}, qu{}, qv{};
+};
+SplinePoint evaluate(const SplineSurface& s, double u, double v);
+// Long-double evaluation of Q, for the references.
+void evaluateLong(const SplineSurface& s, long double u, long double v, long double out[3]);
+
+// The two planes through the ray (section 6.8).
+struct RayPlanes {
+  Vec3 n1{}, n2{};
+  double a1 = 0, a2 = 0;
+  bool ok = false;
+};
+// The port's planes (CGL-Q142): N_1 = normalise(D x e) with e the axis of D's
+// smallest component, N_2 = normalise(N_1 x D); E_k is then a distance.
+RayPlanes rayPlanes(const Ray& ray);
+// The document's planes: N_1 = O x D, N_2 = N_1 x D, not normalised.
+RayPlanes documentRayPlanes(const Ray& ray);
+
+struct NewtonOptions {
+  double tolerance = 0;    // |E_1| + |E_2| < tolerance is success
+  int maxIterations = 16;  // CGL-Q144
+};
+struct NewtonResult {
+  bool hit = false;
+  double u = 0, v = 0, t = 0;
+  int iterations = 0;
+};
+// Newton's iteration (6.8.1) from (u0, v0); on success the distance t =
+// (I - O).D/|D|^2 (CGL-E141) of I = Q(u, v).
+NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
+                    double v0, const NewtonOptions& options);
+
+struct SplineCounters {
+  std::uint64_t calls = 0, boxes = 0, newtonCalls = 0, iterations = 0, hits = 0;
+  SplineCounters& operator+=(const SplineCounters& o);
+};
+struct SplineHit {
+  double t = 0, u = 0, v = 0;  // the surface parameters (u-bar, v-bar)
+  double u0 = 0, v0 = 0;       // the leaf's Newton start
+  int iterations = 0;
+};
+// Section 6.7: the nearest hit with t in (tMin, tMax) by the sorted active
+// list. The list is a per-thread scratch sized once for the largest tree
+// seen by the thread (no allocation per ray).
+// `record`, when given (the Table 6 report only), receives every Newton
+// start tried, to time Newton apart from the boxes.
+struct NewtonStart {
+  double u0 = 0, v0 = 0;
+};
+bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters,
+                     std::vector<NewtonStart>* record = nullptr);
+
+// The reference for holes: every knot cell (a refined interval pair) boxed by
+// the convex hull of its 16 refined vertices (so the boxes contain the
+// surface), Newton from the cell's centre and four corners, the nearest hit.
+bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                              SplineHit& hit);
+
+// Section 6.9: N = Q_u x Q_v normalised (nudged inwards where Q_u or Q_v
+// vanishes at a tripled edge, CGL-Q146); texture u, v in [0, 1].
+Vec3 splineNormal(const SplineSurface& s, double u, double v);
+void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv);
+
+// The surface over its parameter range as bicubic Bezier patches, exactly:
+// each knot-interval pair's 4 x 4 B-spline vertices times the uniform
+// B-spline-to-Bezier matrix in u and in v (for POV-Ray's bicubic_patch).
+// Patch k's control points are patches[k][row * 4 + column], row along v.
+std::vector<std::array<Vec3, 16>> bezierPatches(const SplineSurface& s);
+
+// Holes: rays the reference hits but the Newton path does not; `extra`:
+// the path hits, the reference not; `farther`: both hit, the path's hit
+// farther than the reference's (a nearer sheet missed).
+struct HoleCount {
+  std::uint64_t rays = 0, referenceHits = 0, pathHits = 0, holes = 0, extra = 0, farther = 0;
+};
+void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& count);
+
+}  // namespace prime::cgl

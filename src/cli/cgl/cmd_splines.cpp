@@ -1,0 +1,153 @@
+// prime cgl-splines SCENE.cgl: the B-spline surfaces of a CGL scene measured
+// as Sweeney 1985 measures them in Tables 3 and 6 (section 11.2): per
+// surface the original (extended) and refined vertices, tree nodes and bytes,
+// then for the picture (rendered on one thread) boxes checked and Newton
+// calls per ray, iterations per call, and the share of time in refinement,
+// tree building, box tests, Newton and shading with the rest. Box and Newton
+// times come from a second pass over the primary rays: the intersection
+// alone, then Newton alone replayed from the same starts. With --holes N,
+// every N-th pixel's primary ray is also traced by the dense reference
+// (src/cgl/spline.h): the rays it hits and the Newton path misses.
+#include <chrono>
+#include <cstdio>
+
+#include "src/cli/cgl/commands.h"
+#include "src/cli/cgl/options.h"
+
+namespace prime::cli::cgl {
+
+namespace {
+
+const char* endName(prime::cgl::EndCondition e) {
+  switch (e) {
+    case prime::cgl::EndCondition::Single:
+      return "single";
+    case prime::cgl::EndCondition::Double:
+      return "double";
+    case prime::cgl::EndCondition::Triple:
+      return "triple";
+    case prime::cgl::EndCondition::Closed:
+      return "closed";
+  }
+  return "?";
+}
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+void addSplinesCommand(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand(kSplinesCommand,
+                                 "Tables 3 and 6 for the B-spline surfaces of a CGL scene");
+  auto o = std::make_shared<CglOptions>();
+  auto holes = std::make_shared<int>(0);
+  addCglOptions(cmd, *o);
+  cmd->add_option("--holes", *holes,
+                  "Count holes on every N-th pixel's primary ray (0: do not; slow)")
+      ->check(CLI::Range(0, 512));
+  cmd->callback([o, holes, &action] {
+    action = [o, holes] {
+      const double t0 = now();
+      const prime::cgl::SceneFile file = readCgl(*o, true);
+      const double t1 = now();
+      const prime::cgl::Scene scene = buildCgl(*o, file);
+      const double t2 = now();
+      prime::cgl::RenderSettings settings = renderSettings(*o, file);
+      settings.threads = 1;
+      const double r0 = now();
+      const auto result = prime::cgl::render(scene, settings);
+      const double render = now() - r0;
+      const auto& st = result.stats;
+      const double rays = static_cast<double>(st.rays.rays());
+      std::printf("# %s: %llu rays (%llu primary), render %.3f s on one thread\n", o->file.c_str(),
+                  static_cast<unsigned long long>(st.rays.rays()),
+                  static_cast<unsigned long long>(st.rays.primaryRays), render);
+      double refine = 0, tree = 0;
+      for (const auto& s : scene.splines) {
+        refine += s.refineSeconds;
+        tree += s.treeSeconds;
+        std::printf(
+            "surface (node %d): %d+4 x %d+4 = %d original vertices, %s x %s, divisions %d, "
+            "overlap %g; %d refined vertices, %d leaves, %zu tree nodes, %zu bytes; "
+            "refinement %.2f ms, tree %.2f ms\n",
+            s.node, s.mu - 4, s.mv - 4, s.mu * s.mv, endName(s.uEnd), endName(s.vEnd), s.divisions,
+            s.overlap, s.pu * s.pv, s.leaves, s.nodes.size(), s.bytes(), 1e3 * s.refineSeconds,
+            1e3 * s.treeSeconds);
+      }
+      // The primary rays again: intersection alone, recording Newton's starts.
+      const auto& p = file.program;
+      std::vector<prime::cgl::NewtonStart> starts;
+      std::vector<Ray> primary;
+      for (int y = p.yhigh; y >= p.ylow; --y)
+        for (int x = p.xleft; x <= p.xright; ++x) primary.push_back(scene.camera.primaryRay(x, y));
+      prime::cgl::SplineCounters c;
+      double boxesAndNewton = 0, newtonOnly = 0;
+      for (const auto& s : scene.splines) {
+        starts.clear();
+        std::vector<std::size_t> firstStart;
+        firstStart.reserve(primary.size() + 1);
+        const double a0 = now();
+        for (const Ray& ray : primary) {
+          firstStart.push_back(starts.size());
+          prime::cgl::SplineHit h;
+          prime::cgl::intersectSpline(s, ray, settings.epsilon, 1e10, h, c, &starts);
+        }
+        boxesAndNewton += now() - a0;
+        firstStart.push_back(starts.size());
+        prime::cgl::NewtonOptions no;
+        no.tolerance = s.tolerance;
+        int sink = 0;
+        const double n0 = now();
+        for (std::size_t r = 0; r < primary.size(); ++r) {
+          const prime::cgl::RayPlanes planes = prime::cgl::rayPlanes(primary[r]);
+          for (std::size_t k = firstStart[r]; k < firstStart[r + 1]; ++k)
+            sink += prime::cgl::newton(s, planes, primary[r], starts[k].u0, starts[k].v0, no).hit;
+        }
+        newtonOnly += now() - n0;
+        if (sink < 0) std::printf("\n");
+      }
+      const double build = t2 - t1;
+      const double total = build + render;
+      const double boxes = std::max(0.0, boxesAndNewton - newtonOnly);
+      const double shading = std::max(0.0, render - boxesAndNewton);
+      std::printf(
+          "average boxes checked/ray %.2f, Newton calls/ray %.2f, iterations/call %.2f, "
+          "hits/ray %.3f (all rays of the render)\n",
+          rays > 0 ? static_cast<double>(st.spline.boxes) / rays : 0.0,
+          rays > 0 ? static_cast<double>(st.spline.newtonCalls) / rays : 0.0,
+          st.spline.newtonCalls ? static_cast<double>(st.spline.iterations) /
+                                      static_cast<double>(st.spline.newtonCalls)
+                                : 0.0,
+          rays > 0 ? static_cast<double>(st.spline.hits) / rays : 0.0);
+      std::printf(
+          "time: total %.3f s (read %.3f s apart) = refinement %.1f%%, tree building %.1f%%, "
+          "bounding box intersect %.1f%%, Newton %.1f%%, shading and overhead %.1f%%\n",
+          total, t1 - t0, 100 * refine / total, 100 * tree / total, 100 * boxes / total,
+          100 * newtonOnly / total, 100 * (shading + build - refine - tree) / total);
+      if (*holes > 0) {
+        for (const auto& s : scene.splines) {
+          prime::cgl::HoleCount h;
+          for (int y = p.yhigh; y >= p.ylow; y -= *holes)
+            for (int x = p.xleft; x <= p.xright; x += *holes)
+              prime::cgl::countHoles(s, scene.camera.primaryRay(x, y), settings.epsilon, h);
+          std::printf(
+              "holes (node %d, overlap %g): %llu rays, reference hits %llu, Newton path "
+              "hits %llu, holes %llu (%.2f%% of the reference's hits), path-only hits "
+              "%llu, farther hits %llu\n",
+              s.node, s.overlap, static_cast<unsigned long long>(h.rays),
+              static_cast<unsigned long long>(h.referenceHits),
+              static_cast<unsigned long long>(h.pathHits), static_cast<unsigned long long>(h.holes),
+              h.referenceHits
+                  ? 100.0 * static_cast<double>(h.holes) / static_cast<double>(h.referenceHits)
+                  : 0.0,
+              static_cast<unsigned long long>(h.extra), static_cast<unsigned long long>(h.farther));
+        }
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace prime::cli::cgl

@@ -1,0 +1,422 @@
+// The CGL B-spline surfaces (src/cgl/spline.h; Sweeney 1985 section 6): the
+// basis, the extended graph, Oslo refinement against Table 2, the counts of
+// Table 3, hand-worked surface points, Newton against an independent dense
+// search in long double, false hits and holes.
+#include "src/cgl/spline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "legacy_io/cgl/scene_file.h"
+#include "src/cgl/scene.h"
+#include "tests/unit/cgl/scene_text.h"
+
+namespace prime::cgl {
+namespace {
+
+const std::string kScenes = CGL_SCENES;
+
+// A 4 x 4 graph x = i, z = j on the plane y = height(i, j).
+std::vector<Vec3> grid(int nu, int nv, double (*height)(int, int)) {
+  std::vector<Vec3> c;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) c.push_back({double(i), height(i, j), double(j)});
+  return c;
+}
+double zero(int, int) {
+  return 0.0;
+}
+double squares(int i, int j) {
+  return double(i * i + j * j);
+}
+double bumpHeight(int i, int j) {
+  return (i == 1 || i == 2) && (j == 1 || j == 2) ? 1.2 : 0.0;
+}
+
+TEST(CglSplineBasis, SegmentsSumToOneAndMatchSection61) {
+  double w[4], dw[4];
+  // u = 0: b_3 = 1/6, b_2 = 4/6, b_1 = 1/6, b_0 = 0.
+  bsplineWeights(0.0, w, dw);
+  EXPECT_DOUBLE_EQ(w[0], 1.0 / 6);
+  EXPECT_DOUBLE_EQ(w[1], 4.0 / 6);
+  EXPECT_DOUBLE_EQ(w[2], 1.0 / 6);
+  EXPECT_DOUBLE_EQ(w[3], 0.0);
+  // u = 1/2: 1/48, 23/48, 23/48, 1/48; derivatives -1/8, -5/8, 5/8, 1/8.
+  bsplineWeights(0.5, w, dw);
+  EXPECT_DOUBLE_EQ(w[0], 1.0 / 48);
+  EXPECT_DOUBLE_EQ(w[1], 23.0 / 48);
+  EXPECT_DOUBLE_EQ(w[3], 1.0 / 48);
+  EXPECT_DOUBLE_EQ(dw[0], -1.0 / 8);
+  EXPECT_DOUBLE_EQ(dw[1], -5.0 / 8);
+  EXPECT_DOUBLE_EQ(dw[2], 5.0 / 8);
+  for (double u : {0.1, 0.37, 0.9}) {
+    bsplineWeights(u, w, dw);
+    EXPECT_NEAR(w[0] + w[1] + w[2] + w[3], 1.0, 1e-15);  // property (C)
+    EXPECT_NEAR(dw[0] + dw[1] + dw[2] + dw[3], 0.0, 1e-15);
+  }
+}
+
+TEST(CglSplineGraph, TripledAndWrappedExtensions) {
+  // Open: U_{-4} = U_{-3} = U_{-2} = the first vertex, likewise at the end.
+  EXPECT_EQ(extendedIndices(4, EndCondition::Triple), (std::vector<int>{0, 0, 0, 1, 2, 3, 3, 3}));
+  // Closed, the donut's period 5: U_{-4} = U_1, ..., U_{-1} = U_4, U_0 = U_5.
+  EXPECT_EQ(extendedIndices(5, EndCondition::Closed),
+            (std::vector<int>{1, 2, 3, 4, 0, 1, 2, 3, 4}));
+}
+
+TEST(CglSplineRefinement, OsloAlphasAreTable2) {
+  // Table 2 as reconstructed: divisions 2, m = 2, p = 6; rows i, columns r.
+  ASSERT_EQ(refinedLast(2, 2), 6);
+  const std::vector<double> a = osloAlphas(2, 2);
+  auto alpha = [&](int i, int r) { return a[static_cast<std::size_t>((r + 4) * 7 + (i + 4))]; };
+  const double table[7][11] = {
+      {1, 1.0 / 6, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+      {0, 5.0 / 6, 0.5, 1.0 / 8, 0, 0, 0, 0, 0, 0, 0},
+      {0, 0, 0.5, 0.75, 0.5, 1.0 / 8, 0, 0, 0, 0, 0},
+      {0, 0, 0, 1.0 / 8, 0.5, 0.75, 0.5, 1.0 / 8, 0, 0, 0},
+      {0, 0, 0, 0, 0, 1.0 / 8, 0.5, 0.75, 0.5, 0, 0},
+      {0, 0, 0, 0, 0, 0, 0, 1.0 / 8, 0.5, 5.0 / 6, 0},
+      {0, 0, 0, 0, 0, 0, 0, 0, 0, 1.0 / 6, 1},
+  };
+  for (int i = -4; i <= 2; ++i)
+    for (int r = -4; r <= 6; ++r)
+      EXPECT_NEAR(alpha(i, r), table[i + 4][r + 4], 1e-15) << "i " << i << " r " << r;
+}
+
+TEST(CglSplineRefinement, RefinedCountsAreTable3s) {
+  // The inference (extend by 4, m = nu - 1): (nu + 1) divisions + 3 per
+  // direction: bump 43^2 = 1849, donut 99^2 = 9801, mask 87^2 = 7569.
+  std::vector<Vec3> bump = grid(4, 4, zero), donut = grid(5, 5, zero), mask = grid(41, 41, zero);
+  const SplineSurface b =
+      buildSpline(bump, 4, 4, EndCondition::Triple, EndCondition::Triple, 8, 0.5);
+  const SplineSurface d =
+      buildSpline(donut, 5, 5, EndCondition::Closed, EndCondition::Closed, 16, 0.75);
+  const SplineSurface m =
+      buildSpline(mask, 41, 41, EndCondition::Triple, EndCondition::Triple, 2, 0.55);
+  EXPECT_EQ(b.mu * b.mv, 64);
+  EXPECT_EQ(d.mu * d.mv, 81);
+  EXPECT_EQ(m.mu * m.mv, 2025);
+  EXPECT_EQ(b.pu * b.pv, 1849);
+  EXPECT_EQ(d.pu * d.pv, 9801);
+  EXPECT_EQ(m.pu * m.pv, 7569);
+  // One leaf per refined knot pair in the parameter range (CGL-Q145): the
+  // triple bump's range [-1, 4] holds 5 * 8 + 1 = 41 knots per direction.
+  EXPECT_EQ(b.leaves, 41 * 41);
+  EXPECT_EQ(d.leaves, (5 * 16 + 1) * (5 * 16 + 1));
+}
+
+TEST(CglSplineRefinement, TriplingIsKeptAndTheSurfaceIsUnchanged) {
+  std::vector<Vec3> c = grid(4, 4, bumpHeight);
+  const SplineSurface s = buildSpline(c, 4, 4, EndCondition::Triple, EndCondition::Triple, 2, 0.5);
+  auto w = [&](int r, int t) { return s.w[static_cast<std::size_t>((r + 4) + (t + 4) * s.pu)]; };
+  auto u = [&](int i, int j) { return s.u[static_cast<std::size_t>((i + 4) + (j + 4) * s.mu)]; };
+  // Section 6.4: W_{-4} = W_{-3} = W_{-2} = U_{-4}, W_{-1} = U_{-3}/8 + 3U_{-2}/4 + U_{-1}/8.
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(w(-3, 0)[k], w(-4, 0)[k]);
+    EXPECT_DOUBLE_EQ(w(-2, 0)[k], w(-4, 0)[k]);
+  }
+  const Vec3 expect = (u(-3, 2) * 0.125 + u(-2, 2) * 0.75 + u(-1, 2) * 0.125);
+  // (column t = 2 of the refined graph is a combination of columns j; check x.)
+  EXPECT_NEAR(w(-1, 2)[0], expect[0], 1e-12);
+  // The refined graph describes the same surface: at an interior refined
+  // knot (uniform spacing h = 1/2) Q(w_{r+2}, t_{s+2}) is the (1, 4, 1)/6
+  // tensor average of W around W_{r,s}.
+  for (int r = 0; r <= 3; ++r)
+    for (int t = 0; t <= 3; ++t) {
+      Vec3 avg{0, 0, 0};
+      const double k[3] = {1.0 / 6, 4.0 / 6, 1.0 / 6};
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) avg = avg + w(r - 1 + a, t - 1 + b) * (k[a] * k[b]);
+      const SplinePoint q = evaluate(s, refinedKnot(r + 2, s.m, 2), refinedKnot(t + 2, s.n, 2));
+      for (int c3 = 0; c3 < 3; ++c3) EXPECT_NEAR(q.q[c3], avg[c3], 1e-12) << r << " " << t;
+    }
+}
+
+TEST(CglSplineSurface, FlatAndQuadraticPatchesByHand) {
+  // Single ends: the range [1, m - 1] = [1, 2] is the one segment of the
+  // user's 4 x 4 vertices. Linear precision: x = 1 + u, so Q(1.5, 1.5) =
+  // (1.5, 0, 1.5) on the flat patch, normal +-y.
+  const SplineSurface flat =
+      buildSpline(grid(4, 4, zero), 4, 4, EndCondition::Single, EndCondition::Single, 2, 0.5);
+  EXPECT_DOUBLE_EQ(flat.umin, 1.0);
+  EXPECT_DOUBLE_EQ(flat.umax, 2.0);
+  const SplinePoint p = evaluate(flat, 1.5, 1.5);
+  EXPECT_NEAR(p.q[0], 1.5, 1e-15);
+  EXPECT_NEAR(p.q[1], 0.0, 1e-15);
+  EXPECT_NEAR(p.q[2], 1.5, 1e-15);
+  EXPECT_NEAR(std::fabs(splineNormal(flat, 1.5, 1.5)[1]), 1.0, 1e-15);
+  // y = i^2 + j^2: with weights (1, 23, 23, 1)/48 at u = 1/2, sum i^2 w =
+  // (0 + 23 + 92 + 9)/48 = 124/48 = 1.5^2 + 1/3, so Q_y(1.5, 1.5) = 4.5 + 2/3.
+  const SplinePoint q = evaluate(
+      buildSpline(grid(4, 4, squares), 4, 4, EndCondition::Single, EndCondition::Single, 2, 0.5),
+      1.5, 1.5);
+  EXPECT_NEAR(q.q[1], 4.5 + 2.0 / 3.0, 1e-14);
+  // dy/du = 2x = 3 there.
+  EXPECT_NEAR(q.qu[1], 3.0, 1e-14);
+}
+
+TEST(CglSplineSurface, TripleInterpolatesCornersDoubleAndClosedAsSection64) {
+  std::vector<Vec3> c = grid(4, 4, bumpHeight);
+  const SplineSurface t = buildSpline(c, 4, 4, EndCondition::Triple, EndCondition::Triple, 2, 0.5);
+  const SplinePoint corner = evaluate(t, t.umin, t.vmin);
+  EXPECT_NEAR(corner.q[0], 0.0, 1e-15);
+  EXPECT_NEAR(corner.q[2], 0.0, 1e-15);
+  // Double: at u = 0 the edge is (U_{-3} + 4U_{-2} + U_{-1})/6 = (5 P_0 + P_1)/6 in x: 1/6.
+  const SplineSurface d = buildSpline(c, 4, 4, EndCondition::Double, EndCondition::Double, 2, 0.5);
+  EXPECT_NEAR(evaluate(d, d.umin, 1.0).q[0], 1.0 / 6, 1e-15);
+  // Closed: the surface closes on itself with matching tangents.
+  std::vector<Vec3> ring;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 5; ++i) {
+      const double a = 2 * M_PI * i / 5;
+      ring.push_back({std::cos(a), double(j), std::sin(a)});
+    }
+  const SplineSurface cl =
+      buildSpline(ring, 5, 3, EndCondition::Closed, EndCondition::Triple, 2, 0.5);
+  EXPECT_DOUBLE_EQ(cl.umin, -1.0);
+  EXPECT_DOUBLE_EQ(cl.umax, 4.0);  // five segments, each once (CGL-Q141)
+  const SplinePoint a = evaluate(cl, cl.umin, 0.3), b = evaluate(cl, cl.umax, 0.3);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(a.q[k], b.q[k], 1e-14);
+    EXPECT_NEAR(a.qu[k], b.qu[k], 1e-14);
+  }
+}
+
+// The bump of Figures 28-30, seen from above and to the side.
+SplineSurface bump(double overlap) {
+  return buildSpline(grid(4, 4, bumpHeight), 4, 4, EndCondition::Triple, EndCondition::Triple, 8,
+                     overlap);
+}
+
+// An independent hit: the smallest distance from Q to the ray over a dense
+// (u, v) grid in long double, then the nearest t among points within `tol`.
+bool denseHit(const SplineSurface& s, const Ray& ray, long double& tHit) {
+  const int n = 600;
+  bool found = false;
+  long double best = 1e30L;
+  long double o[3] = {ray.o[0], ray.o[1], ray.o[2]}, d[3] = {ray.d[0], ray.d[1], ray.d[2]};
+  for (int b = 0; b <= n; ++b)
+    for (int a = 0; a <= n; ++a) {
+      const long double u = s.umin + (s.umax - s.umin) * a / (long double)n;
+      const long double v = s.vmin + (s.vmax - s.vmin) * b / (long double)n;
+      long double q[3];
+      evaluateLong(s, u, v, q);
+      long double t = 0;
+      for (int k = 0; k < 3; ++k) t += (q[k] - o[k]) * d[k];
+      long double dist2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        const long double e = q[k] - o[k] - t * d[k];
+        dist2 += e * e;
+      }
+      // The grid spacing is ~ 5/600 in u: points within 0.01 of the ray.
+      if (dist2 < 1e-4L && t > 0 && t < best) {
+        best = t;
+        found = true;
+      }
+    }
+  tHit = best;
+  return found;
+}
+
+TEST(CglSplineNewton, ConvergesOnTheDenseReferencesHit) {
+  const SplineSurface s = bump(0.5);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> xz(0.3, 2.7);
+  int hits = 0;
+  for (int k = 0; k < 12; ++k) {
+    const Vec3 target{xz(rng), 0.5, xz(rng)};
+    const Vec3 eye{1.5, 5.0, 6.0};
+    const Ray ray{eye, normalized(target - eye)};
+    long double tRef = 0;
+    const bool ref = denseHit(s, ray, tRef);
+    SplineHit h;
+    SplineCounters c;
+    const bool got = intersectSpline(s, ray, 1e-6, 1e10, h, c);
+    ASSERT_EQ(got, ref) << k;
+    if (!got) continue;
+    ++hits;
+    // The dense grid finds the hit to within its spacing (~0.01 along the ray).
+    EXPECT_NEAR(h.t, static_cast<double>(tRef), 0.05) << k;
+    // Newton's point is on the ray to the tolerance (1e-9 of the size).
+    const Vec3 p = evaluate(s, h.u, h.v).q, on = ray.o + ray.d * h.t;
+    EXPECT_LT(length(p - on), 1e-8) << k;
+    EXPECT_GE(h.iterations, 1);
+  }
+  EXPECT_GE(hits, 10);
+}
+
+TEST(CglSplineNewton, DocumentPlanesDegenerateThePortsDoNot) {
+  // CGL-Q142: N_1 = O x D vanishes for an eye at the origin (and E_k scale
+  // with |O|), so every ray from there fails; the port's planes do not.
+  std::vector<Vec3> c = grid(4, 4, bumpHeight);
+  for (Vec3& v : c) v = v + Vec3{-1.5, -3.0, -1.5};  // below the origin
+  const SplineSurface s = buildSpline(c, 4, 4, EndCondition::Triple, EndCondition::Triple, 8, 0.5);
+  const Ray ray{{0, 0, 0}, normalized(Vec3{0.1, -1.0, 0.05})};
+  NewtonOptions o;
+  o.tolerance = 1.0;  // the document's
+  const NewtonResult doc = newton(s, documentRayPlanes(ray), ray, 1.5, 1.5, o);
+  EXPECT_FALSE(doc.hit);
+  o.tolerance = s.tolerance;
+  const NewtonResult port = newton(s, rayPlanes(ray), ray, 1.5, 1.5, o);
+  ASSERT_TRUE(port.hit);
+  const Vec3 p = evaluate(s, port.u, port.v).q;
+  EXPECT_LT(length(p - ray.d * port.t), 1e-8);
+  // From an eye off the origin the document's tolerance 1.0 in unnormalised
+  // units accepts points far from the ray: |E_1| + |E_2| < 1 with |N_1| ~ 1.5.
+  const Ray off{{2.0, 0.0, 0.0}, normalized(Vec3{-0.5, -1.0, 0.05})};
+  const NewtonResult loose = newton(s, documentRayPlanes(off), off, 1.5, 1.5, {1.0, 16});
+  const NewtonResult tight = newton(s, rayPlanes(off), off, 1.5, 1.5, {s.tolerance, 16});
+  ASSERT_TRUE(loose.hit);
+  ASSERT_TRUE(tight.hit);
+  EXPECT_GT(std::fabs(loose.t - tight.t), 1e-4);  // the document's stops early
+}
+
+TEST(CglSplineIntersect, NoFalseHitInAMillionRandomRays) {
+  const SplineSurface s = bump(0.5);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> in(-1.0, 4.0), dir(-1.0, 1.0);
+  SplineCounters c;
+  int hits = 0;
+  for (int k = 0; k < 1000000; ++k) {
+    const Vec3 o{in(rng), 1.0 + 3.0 * (in(rng) + 1.0) / 5.0, in(rng)};
+    Vec3 d{dir(rng), dir(rng), dir(rng)};
+    if (length(d) < 1e-3) continue;
+    d = normalized(d);
+    SplineHit h;
+    if (!intersectSpline(s, {o, d}, 1e-6, 1e10, h, c)) continue;
+    ++hits;
+    // Every hit is a point of the surface, in range, on the ray, ahead.
+    ASSERT_TRUE(h.u >= s.umin && h.u <= s.umax && h.v >= s.vmin && h.v <= s.vmax) << k;
+    ASSERT_GT(h.t, 1e-6);
+    const Vec3 p = evaluate(s, h.u, h.v).q;
+    ASSERT_LT(length(p - (o + d * h.t)), 1e-8) << k;
+  }
+  EXPECT_GT(hits, 50000);  // 65,023 with this seed
+}
+
+TEST(CglSplineHoles, GenerousOverlapHasNoneFigure55sHas) {
+  // Primary-like rays over the bump from above: with overlap 1.0 the Newton
+  // path finds every hit the reference finds; the vases' 0.2 misses some.
+  auto holes = [](const SplineSurface& s, const Vec3& eye, const Vec3& at, double span) {
+    HoleCount count;
+    for (int y = 0; y < 60; ++y)
+      for (int x = 0; x < 60; ++x) {
+        const Vec3 target = at + Vec3{span * (x / 59.0 - 0.5), span * (y / 59.0 - 0.5), 0.0};
+        countHoles(s, {eye, normalized(target - eye)}, 1e-6, count);
+      }
+    return count;
+  };
+  const HoleCount generous = holes(bump(1.0), {1.5, 5.0, 6.0}, {1.5, 0.0, 1.5}, 4.0);
+  EXPECT_GT(generous.referenceHits, 1000u);
+  EXPECT_EQ(generous.holes, 0u);
+  EXPECT_EQ(generous.extra, 0u);
+  // A vase of spline-vases.cgl at overlap 0.2.
+  std::vector<Vec3> c;
+  const double profile[6][2] = {{0, 0.16},    {0.12, 0.30}, {0.32, 0.34},
+                                {0.55, 0.16}, {0.72, 0.10}, {0.85, 0.17}};
+  for (const auto& ring : profile)
+    for (int i = 0; i < 8; ++i) {
+      const double a = 2 * M_PI * (i + 0.5) / 8;
+      c.push_back({ring[1] * std::cos(a), ring[0], ring[1] * std::sin(a)});
+    }
+  const SplineSurface vase =
+      buildSpline(c, 8, 6, EndCondition::Closed, EndCondition::Double, 2, 0.2);
+  const HoleCount v = holes(vase, {0.0, 0.5, 3.2}, {0.0, 0.45, 0.0}, 0.8);
+  EXPECT_GT(v.referenceHits, 1000u);
+  EXPECT_GT(v.holes, v.referenceHits / 10);
+}
+
+TEST(CglSplineSurface, TextureIndicesFromTheParameters) {
+  // Section 6.9: u = (u-bar - u_min)/(u_max - u_min). The triple bump's range
+  // is [-1, 4]: u-bar = 1.5 gives 2.5/5 = 0.5, v-bar = -1 gives 0.
+  const SplineSurface s =
+      buildSpline(grid(4, 4, zero), 4, 4, EndCondition::Triple, EndCondition::Triple, 2, 0.5);
+  double u = 0, v = 0;
+  splineTexture(s, 1.5, -1.0, u, v);
+  EXPECT_DOUBLE_EQ(u, 0.5);
+  EXPECT_DOUBLE_EQ(v, 0.0);
+  splineTexture(s, 4.0, 0.25, u, v);
+  EXPECT_DOUBLE_EQ(u, 1.0);
+  EXPECT_DOUBLE_EQ(v, 0.25);
+}
+
+TEST(CglSplineBezier, PatchesAreTheSurfaceExactly) {
+  // The triple bump: 5 x 5 knot intervals, 25 patches; each Bezier patch
+  // evaluated by de Casteljau's Bernstein weights equals Q on its interval.
+  const SplineSurface s = bump(0.5);
+  const auto patches = bezierPatches(s);
+  ASSERT_EQ(patches.size(), 25u);
+  auto bern = [](double t, double b[4]) {
+    const double r = 1 - t;
+    b[0] = r * r * r;
+    b[1] = 3 * t * r * r;
+    b[2] = 3 * t * t * r;
+    b[3] = t * t * t;
+  };
+  for (int k : {0, 7, 12, 24})
+    for (double lu : {0.0, 0.3, 1.0})
+      for (double lv : {0.0, 0.6, 1.0}) {
+        double bu[4], bv[4];
+        bern(lu, bu);
+        bern(lv, bv);
+        Vec3 p{0, 0, 0};
+        for (int b = 0; b < 4; ++b)
+          for (int a = 0; a < 4; ++a)
+            p = p + patches[static_cast<std::size_t>(k)][static_cast<std::size_t>(b * 4 + a)] *
+                        (bu[a] * bv[b]);
+        const double u = s.umin + k % 5 + lu, v = s.vmin + k / 5 + lv;
+        const Vec3 q = evaluate(s, u, v).q;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], q[c], 1e-14) << k << " " << lu << " " << lv;
+      }
+}
+
+TEST(CglSplineScene, TooFewVerticesForTheEndConditionAreRefusedAtTheNode) {
+  // Single ends need 3 vertices (the range [u_1, u_{m-1}] must hold an
+  // interval); the reader allows nu = 2.
+  SceneFile f = test::emptyScene();
+  f.surfaces.push_back(test::lambert(1, 1));
+  NodeRecord n;
+  n.number = 1;
+  n.kind = NodeKind::Spline;
+  n.surface = 1;
+  n.nu = 2;
+  n.nv = 3;
+  n.uEnd = EndCondition::Single;
+  n.vEnd = EndCondition::Triple;
+  n.divisions = 2;
+  n.overlap = 0.5;
+  n.controls.assign(6, Vec3{0, 0, 0});
+  n.where.file = "t.cgl";
+  n.where.line = 42;
+  f.nodes.push_back(n);
+  f.numbers.root = 1;
+  try {
+    buildScene(f);
+    FAIL() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where().line, 42);
+    EXPECT_NE(std::string(e.what()).find("at least 3"), std::string::npos) << e.what();
+  }
+  f.nodes[0].uEnd = EndCondition::Double;  // [u_0, u_1]: one interval
+  EXPECT_EQ(buildScene(f).splines.size(), 1u);
+}
+
+TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
+  const SceneFile f = readSceneFile(kScenes + "/doc-spline-tube.cgl");
+  const Scene s = buildScene(f);
+  ASSERT_EQ(s.splines.size(), 1u);
+  const SplineSurface& tube = s.splines[0];
+  // 4 closed x 5 double, divisions 8: (4 + 1) 8 + 3 = 43 by (5 + 1) 8 + 3 = 51.
+  EXPECT_EQ(tube.pu, 43);
+  EXPECT_EQ(tube.pv, 51);
+  EXPECT_DOUBLE_EQ(tube.umin, -1.0);
+  EXPECT_DOUBLE_EQ(tube.umax, 3.0);
+  EXPECT_DOUBLE_EQ(tube.vmin, 0.0);
+  EXPECT_DOUBLE_EQ(tube.vmax, 4.0);
+  EXPECT_NE(describeObjects(s).find("spline (node 4)"), std::string::npos) << describeObjects(s);
+}
+
+}  // namespace
+}  // namespace prime::cgl
