@@ -68,25 +68,7 @@ pair() {
   local primeCmd=("$PRIME" trace "$scene" --threads 1 --no-window -q "$@")
   # shellcheck disable=SC2206
   local povCmd=(povray "+I$pov" $povargs +WT1 -D -F -GA)
-  local primeT=() povT=() ratios=() p q i
-  for ((i = 0; i < RUNS; i++)); do
-    if ((i % 2 == 0)); then
-      p=$(cpu "$OUT" "${primeCmd[@]}")
-      q=$(cpu "$OUT" "${povCmd[@]}")
-    else
-      q=$(cpu "$OUT" "${povCmd[@]}")
-      p=$(cpu "$OUT" "${primeCmd[@]}")
-    fi
-    primeT+=("$p")
-    povT+=("$q")
-    ratios+=("$(awk -v a="$p" -v b="$q" 'BEGIN {printf "%.4f", a / b}')")
-  done
-  pm=$(median "${primeT[@]}")
-  qm=$(median "${povT[@]}")
-  rm_=$(median "${ratios[@]}")
-  rmin=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
-  rmax=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
-  met=$(awk -v r="$rm_" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
+  paired_runs "${primeCmd[@]}" -- "${povCmd[@]}"
 }
 
 for scene in "$ROOT"/scenes/cgl/*.cgl; do
@@ -239,15 +221,5 @@ ${TABLE5}
 MDEOF
 )
 
-if [ -f "$DOC" ] && grep -q 'cgl_pov_compare:begin' "$DOC"; then
-  "$PY" - "$DOC" "$generated" <<'PYEOF'
-import re, sys
-path, new = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- cgl_pov_compare:begin.*?<!-- cgl_pov_compare:end -->", lambda m: new, text, flags=re.S)
-open(path, "w").write(text)
-PYEOF
-else
-  printf '# Waterloo CGL (1985) against POV-Ray 3.7 and the VAX 11/780\n\n%s\n' "$generated" >"$DOC"
-fi
+splice_generated "$DOC" cgl_pov_compare "$generated" "Waterloo CGL (1985) against POV-Ray 3.7 and the VAX 11/780"
 echo "wrote $CSV and $DOC; pictures in $OUT"

@@ -74,25 +74,7 @@ for scene in "$ROOT"/scenes/malone/*.mal; do
     "$PY" "$ROOT/bench/side_by_side.py" "$OUT/${name}_prime.png" "$OUT/${name}_pov.png" "$OUT/${name}_side.png"
   fi
 
-  primeT=() povT=() ratios=()
-  for ((i = 0; i < RUNS; i++)); do
-    if ((i % 2 == 0)); then
-      p=$(cpu "$OUT" "${primeCmd[@]}")
-      q=$(cpu "$OUT" "${povCmd[@]}")
-    else
-      q=$(cpu "$OUT" "${povCmd[@]}")
-      p=$(cpu "$OUT" "${primeCmd[@]}")
-    fi
-    primeT+=("$p")
-    povT+=("$q")
-    ratios+=("$(awk -v a="$p" -v b="$q" 'BEGIN {printf "%.4f", a / b}')")
-  done
-  pm=$(median "${primeT[@]}")
-  qm=$(median "${povT[@]}")
-  rm_=$(median "${ratios[@]}")
-  rmin=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
-  rmax=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
-  met=$(awk -v r="$rm_" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
+  paired_runs "${primeCmd[@]}" -- "${povCmd[@]}"
   [ "$name" = mesh-1600 ] && MESH1600_CPU=$pm
   echo "$name,$W,$H,$RUNS,$pm,$qm,$rm_,$rmin,$rmax,$met,\"$picture\"" >>"$CSV"
   ROWS+="| \`$name\` | ${W} x ${H} | $(printf '%.3f' "$pm") | $(printf '%.3f' "$qm") | **$(printf '%.2f' "$rm_")** ($(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")) | $met | $picture |"$'\n'
@@ -228,15 +210,5 @@ $linFrame s here (scaled from ${LINEAR_RES} x ${LINEAR_RES}); with the BVH the f
 MDEOF
 )
 
-if [ -f "$DOC" ] && grep -q 'malone_pov_compare:begin' "$DOC"; then
-  "$PY" - "$DOC" "$generated" <<'PYEOF'
-import re, sys
-path, new = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- malone_pov_compare:begin.*?<!-- malone_pov_compare:end -->", lambda m: new, text, flags=re.S)
-open(path, "w").write(text)
-PYEOF
-else
-  printf '# Malone (1995) against POV-Ray 3.7\n\n%s\n' "$generated" >"$DOC"
-fi
+splice_generated "$DOC" malone_pov_compare "$generated" "Malone (1995) against POV-Ray 3.7"
 echo "wrote $CSV and $DOC; pictures in $OUT"

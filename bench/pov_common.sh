@@ -38,3 +38,53 @@ median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[
 
 POV_VERSION=$(povray --version 2>&1 | grep -m1 -o 'POV-Ray [0-9.][^ ]*' || echo "POV-Ray (version unknown)")
 PRIME_VERSION=$(git -C "$ROOT" describe --always --dirty 2>/dev/null || echo unknown)
+
+# paired_runs PRIME_CMD... -- POV_CMD...: RUNS pairs in $OUT, the two programs
+# back to back and their order swapped every pair, so a drift of the shared
+# machine's speed falls on both. Sets pm, qm (median CPU seconds of prime and
+# POV-Ray), rm_, rmin, rmax (the ratio prime / POV-Ray: median of the pairs,
+# least, most) and met (yes when rm_ <= 0.5).
+paired_runs() {
+  local primeCmd=() povCmd=() primeT=() povT=() ratios=() p q i
+  while [ "$1" != -- ]; do primeCmd+=("$1"); shift; done
+  shift
+  povCmd=("$@")
+  for ((i = 0; i < RUNS; i++)); do
+    if ((i % 2 == 0)); then
+      p=$(cpu "$OUT" "${primeCmd[@]}")
+      q=$(cpu "$OUT" "${povCmd[@]}")
+    else
+      q=$(cpu "$OUT" "${povCmd[@]}")
+      p=$(cpu "$OUT" "${primeCmd[@]}")
+    fi
+    primeT+=("$p")
+    povT+=("$q")
+    ratios+=("$(awk -v a="$p" -v b="$q" 'BEGIN {printf "%.4f", a / b}')")
+  done
+  pm=$(median "${primeT[@]}")
+  qm=$(median "${povT[@]}")
+  rm_=$(median "${ratios[@]}")
+  rmin=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
+  rmax=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
+  met=$(awk -v r="$rm_" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
+}
+
+# splice_generated DOC MARKER TEXT TITLE: puts TEXT (which holds the lines
+# "<!-- MARKER:begin ..." and "<!-- MARKER:end -->") in place of the part of
+# DOC between those markers, keeping the rest of DOC; a DOC without them is
+# written as TITLE and TEXT.
+splice_generated() {
+  local doc=$1 marker=$2 text=$3 title=$4
+  if [ -f "$doc" ] && grep -q "$marker:begin" "$doc"; then
+    "$PY" - "$doc" "$marker" "$text" <<'PYEOF'
+import re, sys
+path, marker, new = sys.argv[1], sys.argv[2], sys.argv[3]
+text = open(path).read()
+text = re.sub(r"<!-- " + re.escape(marker) + r":begin.*?<!-- " + re.escape(marker) + r":end -->",
+              lambda m: new, text, flags=re.S)
+open(path, "w").write(text)
+PYEOF
+  else
+    printf '# %s\n\n%s\n' "$title" "$text" >"$doc"
+  fi
+}

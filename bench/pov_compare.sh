@@ -66,20 +66,7 @@ for modelTxt in "$ROOT"/scenes/prime/*/Model.txt; do
     "$PY" "$ROOT/bench/side_by_side.py" "$OUT/${name}_prime.png" "$OUT/${name}_pov.png" "$OUT/${name}_side.png"
   fi
 
-  primeT=() povT=() ratios=()
-  for ((i = 0; i < RUNS; i++)); do
-    p=$(cpu "$OUT" "${primeCmd[@]}")
-    q=$(cpu "$OUT" "${povCmd[@]}")
-    primeT+=("$p")
-    povT+=("$q")
-    ratios+=("$(awk -v a="$p" -v b="$q" 'BEGIN {printf "%.4f", a / b}')")
-  done
-  pm=$(median "${primeT[@]}")
-  qm=$(median "${povT[@]}")
-  rm_=$(median "${ratios[@]}")
-  rmin=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
-  rmax=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
-  met=$(awk -v r="$rm_" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
+  paired_runs "${primeCmd[@]}" -- "${povCmd[@]}"
   echo "$name,$W,$H,$RUNS,$pm,$qm,$rm_,$rmin,$rmax,$povTrace,$met" >>"$CSV"
   ROWS+="| \`$name\` | ${W} x ${H} | $(printf '%.3f' "$pm") | $(printf '%.3f' "$qm") | **$(printf '%.2f' "$rm_")** ($(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")) | ${povTrace:-?} | $met |"$'\n'
   echo "$name: prime $pm s, povray $qm s, ratio $rm_ (target <= 0.5: $met)"
@@ -113,15 +100,5 @@ Rerun: \`bench/pov_compare.sh\` (optionally \`bench/pov_compare.sh 11\` for 11 p
 EOF
 )
 
-if [ -f "$DOC" ] && grep -q 'pov_compare:begin' "$DOC"; then
-  "$PY" - "$DOC" "$generated" <<'EOF'
-import re, sys
-path, new = sys.argv[1], sys.argv[2]
-text = open(path).read()
-text = re.sub(r"<!-- pov_compare:begin.*?<!-- pov_compare:end -->", lambda m: new, text, flags=re.S)
-open(path, "w").write(text)
-EOF
-else
-  printf '# PRIME against POV-Ray\n\n%s\n' "$generated" >"$DOC"
-fi
+splice_generated "$DOC" pov_compare "$generated" "PRIME against POV-Ray"
 echo "wrote $CSV and $DOC; pictures in $OUT"
