@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "palette/png_image.h"
+#include "tests/support/compare_pictures.h"
 #include "tests/support/run_prime.h"
 
 namespace fs = std::filesystem;
@@ -67,23 +68,6 @@ std::vector<std::string> scenes() {
   return names;
 }
 
-std::string compare(const Image8& got, const Image8& want) {
-  if (got.width != want.width || got.height != want.height)
-    return "size " + std::to_string(got.width) + "x" + std::to_string(got.height) + ", golden " +
-           std::to_string(want.width) + "x" + std::to_string(want.height);
-  long differ = 0, first = -1;
-  for (std::size_t i = 0; i < got.rgb.size(); i += 3)
-    if (!std::equal(got.rgb.begin() + static_cast<long>(i),
-                    got.rgb.begin() + static_cast<long>(i) + 3,
-                    want.rgb.begin() + static_cast<long>(i))) {
-      if (first < 0) first = static_cast<long>(i / 3);
-      ++differ;
-    }
-  if (differ == 0) return "";
-  return std::to_string(differ) + " pixels differ, the first at (" +
-         std::to_string(first % got.width) + ", " + std::to_string(first / got.width) + ")";
-}
-
 class CglReplay : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CglReplay, RendersTheGoldenPicture) {
@@ -96,11 +80,11 @@ TEST_P(CglReplay, RendersTheGoldenPicture) {
                           (dir / "out.png") + " --rle " + (dir / "out.rle"));
   ASSERT_EQ(r.status, 0) << r.output;
   const Image8 got = readPng(dir / "out.png"), want = readPng(golden.string());
-  EXPECT_EQ(compare(got, want), "") << scene;
+  EXPECT_EQ(test::comparePictures(got, want), "") << scene;
   // The RLE file holds the same pixels: `prime export` turns it into the same PNG.
   const auto e = runPrime("export " + (dir / "out.rle") + " " + (dir / "back.png") + " -q");
   ASSERT_EQ(e.status, 0) << e.output;
-  EXPECT_EQ(compare(readPng(dir / "back.png"), got), "") << scene;
+  EXPECT_EQ(test::comparePictures(readPng(dir / "back.png"), got), "") << scene;
   // The document's object list for every ray (--linear-search) and the BVH
   // find the same hits: the same bytes (CGL-D43).
   const auto l =

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "palette/png_image.h"
+#include "tests/support/compare_pictures.h"
 
 namespace fs = std::filesystem;
 
@@ -69,23 +70,6 @@ std::vector<std::string> scenes() {
   return names;
 }
 
-// How many pixels differ, and where the first one is.
-std::string compare(const Image8& got, const Image8& want) {
-  if (got.width != want.width || got.height != want.height)
-    return "size " + std::to_string(got.width) + "x" + std::to_string(got.height) + ", golden " +
-           std::to_string(want.width) + "x" + std::to_string(want.height);
-  long differ = 0, first = -1;
-  for (std::size_t i = 0; i < got.rgb.size(); i += 3)
-    if (got.rgb[i] != want.rgb[i] || got.rgb[i + 1] != want.rgb[i + 1] ||
-        got.rgb[i + 2] != want.rgb[i + 2]) {
-      if (first < 0) first = static_cast<long>(i / 3);
-      ++differ;
-    }
-  if (differ == 0) return "";
-  return std::to_string(differ) + " pixels differ, the first at (" +
-         std::to_string(first % got.width) + ", " + std::to_string(first / got.width) + ")";
-}
-
 class MaloneReplay : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MaloneReplay, RendersTheGoldenPicture) {
@@ -101,7 +85,7 @@ TEST_P(MaloneReplay, RendersTheGoldenPicture) {
             dir.path());
   ASSERT_EQ(r.status, 0) << r.output;
   const Image8 got = readPng(png.string()), want = readPng(golden.string());
-  EXPECT_EQ(compare(got, want), "") << scene;
+  EXPECT_EQ(test::comparePictures(got, want), "") << scene;
   // The PPM holds the same bytes as the PNG, after its P6 header.
   std::ifstream in(ppm, std::ios::binary);
   const std::vector<char> bytes{std::istreambuf_iterator<char>(in),
