@@ -14,7 +14,7 @@
 // program: the Fresnel table from a normal reflectance (n = (1 + sqrt R) /
 // (1 - sqrt R), k = 0) and a complete `cook` surface descriptor.
 // docs/cgl/rendering.md (section Cook-Torrance) gives the choices, CGL-Q100
-// to CGL-Q109 in docs/cgl/deviations.md.
+// to CGL-Q108 in docs/cgl/deviations.md.
 //
 // Nothing here allocates but the generator.
 #pragma once
