@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "src/cgl/colour.h"
+#include "src/cgl/pov_export.h"
 #include "src/cgl/render.h"
 #include "tests/unit/cgl/scene_text.h"
 
@@ -265,6 +266,33 @@ TEST(CglCookRender, HighlightWhereHEqualsN) {
   ASSERT_EQ(pr.rays[0].lights.size(), 1u);
   EXPECT_TRUE(pr.rays[0].lights[0].cook);
   EXPECT_EQ(stats.shadeCalls[2], stats.rays.hits);  // every hit shaded by Cook
+}
+
+TEST(CglCookPov, MetallicHighlightAndColouredReflection) {
+  // CGL-D101: m = 0.3 gives specular k_s/m^2 = 1/0.09 = 11.1111 and
+  // roughness m^2/(2 - 4m^2) = 0.09/1.64 = 0.0548780; reflect 0.8 with F_0 =
+  // 0.5 everywhere and k_d 0: the weight 0.8 * 0.5/(pi * 0.09) = 1.414711 at
+  // every wavelength, which under any light is that grey: rgb 1.414711 each.
+  SceneFile f = test::emptyScene();
+  SurfaceRecord s;
+  s.model = ShadingModel::Cook;
+  s.reflect = 0.8;
+  s.specular = 1.0;
+  s.m = 0.3;
+  s.colour = flat(0.5 / kPi);
+  s.fresnel.assign(kFresnelAngles, flat(0.5));
+  s.where = test::at(100);
+  f.surfaces.push_back(s);
+  f.nodes.push_back(test::sphere(1, 0, 1, {0, 0, 0}, 1.0));
+  f.lights.push_back(test::infinityLight({1, 1, 1}, 0.01, test::d6500()));
+  f.numbers.root = 1;
+  const Scene scene = buildScene(f);
+  const PovExportOptions options;
+  const std::string pov = exportPov(scene, options).pov;
+  EXPECT_NE(pov.find("specular 11.1111"), std::string::npos) << pov;
+  EXPECT_NE(pov.find("roughness 0.054878"), std::string::npos) << pov;
+  EXPECT_NE(pov.find("metallic"), std::string::npos) << pov;
+  EXPECT_NE(pov.find("reflection { rgb <1.41471"), std::string::npos) << pov;
 }
 
 }  // namespace
