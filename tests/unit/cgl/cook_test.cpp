@@ -268,6 +268,56 @@ TEST(CglCookRender, HighlightWhereHEqualsN) {
   EXPECT_EQ(stats.shadeCalls[2], stats.rays.hits);  // every hit shaded by Cook
 }
 
+TEST(CglCookTrace, TheReflectedRayIsALight) {
+  // A Cook floor (y = 0, N = +y; k_r 0.8, k_s 1, k_d 0, m 0.5, row j's F =
+  // j/100) seen from (0, 1, 3) at its centre; the light straight above is
+  // shadowed by an opaque ball at (0, 0.5, 0), which the reflected ray
+  // misses (it passes 0.47 from the ball's centre); the background is white,
+  // the ambience 0. So Z = Psi(R, D_reflect, k_r) with R = the background's
+  // colour-vector: V = (0, 1, 3)/sqrt 10, N.V = 0.316228 = N.L, H = N, D =
+  // 1/m^2 = 4, G = 1, theta = arccos(0.316228) = 71.565 degrees: row
+  // int(71.565/180 * 130) = int(51.69) = 51, F = 0.51; Psi = R * 0.8 * 1 *
+  // 0.51 * 4 / (pi * 0.316228) = R * 1.642747. The same at the depth limit
+  // (depth 0: R is the background from the same direction, CGL-Q107).
+  SceneFile f = test::emptyScene();
+  f.vertices = test::floorVertices();
+  SurfaceRecord floor;
+  floor.model = ShadingModel::Cook;
+  floor.reflect = 0.8;
+  floor.specular = 1.0;
+  floor.m = 0.5;
+  floor.colour = flat(0.2);
+  floor.fresnel = rowTable();
+  floor.where = test::at(100);
+  f.surfaces.push_back(floor);
+  f.surfaces.push_back(test::lambert(1.0, 1.0));
+  f.nodes.push_back(test::polygon(1, 2, 1, {1, 2, 3, 4}));
+  f.nodes.push_back(test::sphere(2, 0, 2, {0, 0.5, 0}, 0.2));
+  f.lights.push_back(test::infinityLight({0, 1, 0}, 0.01, flat(100.0)));
+  f.numbers.root = 1;
+  const Scene scene = buildScene(f);
+  const Ray toFloor{{0, 1, 3}, normalized(Vec3{0, -1, -3})};
+  for (int depth : {1, 0}) {
+    TraceSettings settings;
+    settings.depth = depth;
+    settings.shadows = true;
+    settings.background = {255, 255, 255};
+    const Tracer tracer(scene, settings);
+    TraceStats stats;
+    ProbeReport probe;
+    const Spectrum z = tracer.trace(toFloor, 0, RayKind::Primary, stats, &probe);
+    const Spectrum& b = tracer.backgroundSpectrum();
+    ASSERT_GT(b[17], 0.0);
+    for (int k = 0; k < kSpectrumSamples; ++k)
+      EXPECT_NEAR(z[k], b[k] * 1.642747, 1e-5 * std::abs(b[k]) + 1e-12) << depth << " " << k;
+    ASSERT_EQ(probe.rays[0].lights.size(), 2u);
+    EXPECT_EQ(probe.rays[0].lights[0].light, ProbeLight::kReflectedLight);
+    EXPECT_EQ(probe.rays[0].lights[0].fresnel, 51);
+    EXPECT_EQ(probe.rays[0].lights[1].skipped, "shadowed");
+    EXPECT_EQ(stats.rays.reflectedRays, depth == 1 ? 1u : 0u);
+  }
+}
+
 TEST(CglCookPov, MetallicHighlightAndColouredReflection) {
   // CGL-D101: m = 0.3 gives specular k_s/m^2 = 1/0.09 = 11.1111 and
   // roughness m^2/(2 - 4m^2) = 0.09/1.64 = 0.0548780; reflect 0.8 with F_0 =
