@@ -12,6 +12,7 @@
 
 #include "legacy_io/common/bytes.h"
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 
 namespace prime::cgl {
 namespace {
@@ -53,19 +54,10 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 // a regular file, is refused before it is read.
 std::vector<std::uint8_t> readCapped(const std::string& path, std::uintmax_t cap,
                                      const char* what) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!ec && std::filesystem::exists(status)) {
-    if (!std::filesystem::is_regular_file(status))
-      throw io::InputError({path, std::nullopt, std::nullopt},
-                           std::string("not a regular file (expected ") + what + ")");
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > cap)
-      throw io::InputError({path, std::nullopt, cap}, "file size",
-                           "at most " + std::to_string(cap) + " bytes for " + what,
-                           std::to_string(size) + " bytes");
-  }
-  return io::readFileBytes(path);  // a missing file is its InputError
+  io::InputFileOptions input;
+  input.maxBytes = cap;
+  input.what = what;
+  return io::readInputFile(path, input);
 }
 
 }  // namespace

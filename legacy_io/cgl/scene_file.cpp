@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "legacy_io/common/input_file.h"
+
 namespace prime::cgl {
 
 namespace {
@@ -1280,25 +1282,10 @@ SceneFile readScene(const std::string& text, const std::string& display,
 }
 
 SceneFile readSceneFile(const std::string& path, const ReadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status))
-    throw io::InputError({path, std::nullopt, std::nullopt}, "no such file");
-  if (fs::is_directory(status))
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "is a directory, not a CGL scene file");
-  if (!fs::is_regular_file(status))
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "is not a regular file (a device, FIFO or socket)");
-  if (fs::file_size(path, ec) > kMaxBytes)
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "larger than 64 MiB: not read as a CGL scene file (CGL-D2)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError({path, std::nullopt, std::nullopt}, "cannot open for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return readScene(text.str(), path, options);
+  io::InputFileOptions input;
+  input.maxBytes = kMaxBytes;  // CGL-D2
+  input.what = "a CGL scene file";
+  return readScene(io::readInputText(path, input), path, options);
 }
 
 bool looksLikeCgl(const std::string& text) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
 
 namespace prime::io {
@@ -54,13 +55,7 @@ void ByteReader::skip(std::size_t n, const std::string& field) {
 }
 
 std::vector<std::uint8_t> readFileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError({path, std::nullopt, std::nullopt},
-                     "cannot open file (missing or unreadable)");
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
-  return bytes;
+  return readInputFile(path);
 }
 
 void writeFileAtomically(const std::string& path, std::span<const std::uint8_t> bytes) {

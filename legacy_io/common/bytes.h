@@ -48,7 +48,8 @@ class ByteReader {
   std::size_t base_ = 0, pos_ = 0;
 };
 
-// Whole-file helpers. readFileBytes reports a missing file as an InputError.
+// Whole-file helpers. readFileBytes is readInputFile (legacy_io/common/input_file.h)
+// with the default cap: a missing file, a directory, a FIFO or a device is an InputError.
 std::vector<std::uint8_t> readFileBytes(const std::string& path);
 // Writes through a temporary file in the same directory and renames it into
 // place, so an interrupted write never leaves a half-written file behind

@@ -6,17 +6,18 @@
 #include <fstream>
 #include <sstream>
 
+#include "legacy_io/common/input_file.h"
+
 namespace prime::io {
 
 TextReader::TextReader(std::string text, std::string display)
     : text_(std::move(text)), display_(std::move(display)) {}
 
 TextReader TextReader::open(const std::string& path, const std::string& display) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({display, std::nullopt, std::nullopt}, "file does not exist or cannot be read");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return TextReader(ss.str(), display);
+  InputFileOptions options;
+  options.what = "a text input";
+  options.display = display;
+  return TextReader(readInputText(path, options), display);
 }
 
 void TextReader::skipBlanks() {
@@ -28,7 +29,8 @@ void TextReader::skipBlanks() {
 
 std::string TextReader::peekWord() const {
   std::size_t end = pos_;
-  while (end < text_.size() && !std::isspace(static_cast<unsigned char>(text_[end])) && end - pos_ < 40)
+  while (end < text_.size() && !std::isspace(static_cast<unsigned char>(text_[end])) &&
+         end - pos_ < 40)
     ++end;
   if (end == pos_) return "end of file";
   return "\"" + text_.substr(pos_, end - pos_) + "\"";
@@ -68,7 +70,8 @@ double TextReader::number(const std::string& field) {
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
   // "+-5": one sign only (from_chars would read the '-' after the skipped '+').
-  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "a number", peekWord());
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-'))
+    fail(field, "a number", peekWord());
   if (!std::isfinite(value)) fail(field, "a finite number", peekWord() + " (NaN/Inf not allowed)");
   pos_ = static_cast<std::size_t>(ptr - text_.data());
   lastTokenLine_ = line_;
@@ -85,7 +88,8 @@ std::int16_t TextReader::int16(const std::string& field) {
   long long value = 0;
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
-  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-')) fail(field, "an integer", peekWord());
+  if (ec != std::errc() || !endsCleanly || (plus && *begin == '-'))
+    fail(field, "an integer", peekWord());
   if (value < -32768 || value > 32767)
     fail(field, "an integer in -32768..32767 (Turbo C's 16-bit int)", peekWord());
   pos_ = static_cast<std::size_t>(ptr - text_.data());

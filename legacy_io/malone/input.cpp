@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "legacy_io/common/input_file.h"
+
 namespace prime::malone {
 
 namespace {
@@ -446,26 +448,10 @@ SceneFile readScene(const std::string& text, const std::string& display,
 }
 
 SceneFile readSceneFile(const std::string& path, const ReadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status))
-    throw io::InputError({path, std::nullopt, std::nullopt}, "no such file");
-  if (fs::is_directory(status))
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "is a directory, not a Malone scene file");
-  if (!fs::is_regular_file(status))
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "is not a regular file (a device, FIFO or socket)");
-  constexpr std::uintmax_t kMaxBytes = 256u << 20;
-  if (fs::file_size(path, ec) > kMaxBytes)
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "larger than 256 MiB: not read as a Malone scene");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError({path, std::nullopt, std::nullopt}, "cannot open for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return readScene(text.str(), path, options);
+  io::InputFileOptions input;
+  input.maxBytes = 256u << 20;
+  input.what = "a Malone scene file";
+  return readScene(io::readInputText(path, input), path, options);
 }
 
 bool looksLikeMalone(const std::string& text) {

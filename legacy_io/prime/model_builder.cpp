@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/turbo_c.h"
 #include "src/prime/math/listing_matrix.h"
@@ -312,10 +313,11 @@ Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
 
 Model buildModel(const SceneDir& scene, const ModelOptions& options) {
   const fs::path p = scene.existingInput(".", "Model.txt", "prime model");
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return buildModel(scene, parseModelText(text.str(), scene.display(p)), options);
+  io::InputFileOptions input;
+  input.what = "a Model.txt";
+  input.display = scene.display(p);
+  return buildModel(scene, parseModelText(io::readInputText(p.string(), input), scene.display(p)),
+                    options);
 }
 
 void writeModel(const SceneDir& scene, const Model& model) {

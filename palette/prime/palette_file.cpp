@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 
 namespace prime {
 
@@ -191,18 +192,10 @@ Palette parsePaletteText(std::string_view text, const std::string& fileName) {
 }
 
 Palette readPaletteFile(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec)
-    throw io::InputError({path, std::nullopt, std::nullopt},
-                         "cannot read the palette file: " + ec.message());
-  if (size > kMaxFileBytes)
-    throw io::InputError({path, std::nullopt, std::nullopt}, "size",
-                         "a palette file of at most 1 MiB", std::to_string(size) + " bytes");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError({path, std::nullopt, std::nullopt}, "cannot open the palette file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return parsePaletteText(text, path);
+  io::InputFileOptions input;
+  input.maxBytes = kMaxFileBytes;
+  input.what = "a palette file";
+  return parsePaletteText(io::readInputText(path, input), path);
 }
 
 std::string formatPaletteText(const Palette& palette, DacTo8 how) {

@@ -75,6 +75,9 @@ UvMap uvMap(const Object& o) {
       m.bv = -dot(o.v0, o.ne1) / dv - o.vmin / (o.vmax - o.vmin);
       break;
     }
+    case ObjectKind::Fractal:
+      fractalUvMap(o.v0, o.e1, o.ne1, o.umin, o.umax, o.vmin, o.vmax, m.au, m.bu, m.av, m.bv);
+      break;
     case ObjectKind::Box:
       break;
   }
@@ -196,6 +199,7 @@ std::string povGeometry(const Object& o) {
       for (int k = 0; k <= o.edges; ++k) s += ", " + povVector(v[k % o.edges]);
       return s + " }";
     }
+    case ObjectKind::Fractal:  // needs the scene's tree: povFractalMesh (src/cgl/fractal.h)
     case ObjectKind::Box:
       break;
   }
@@ -229,9 +233,10 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   // the top: scanline yhigh is row 511 - yhigh), and the anti-aliasing.
   std::string& args = out.povArgs;
   args = "+W512 +H512";
-  if (prog.xleft != 0 || prog.xright != 511 || prog.ylow != 0 || prog.yhigh != 511)
-    args += " +SC" + fraction(prog.xleft) + " +EC" + fraction(prog.xright + 1) + " +SR" +
-            fraction(511 - prog.yhigh) + " +ER" + fraction(512 - prog.ylow);
+  if (prog.xleft != 0 || prog.xright != 511)
+    args += " +SC" + fraction(prog.xleft) + " +EC" + fraction(prog.xright + 1);
+  if (prog.ylow != 0 || prog.yhigh != 511)
+    args += " +SR" + fraction(511 - prog.yhigh) + " +ER" + fraction(512 - prog.ylow);
   if (prog.aalevel == 0) {
     args += " -A";
   } else {
@@ -323,7 +328,10 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
       continue;
     }
     const Surface& sf = scene.surfaces[static_cast<std::size_t>(o.surface)];
-    const std::string geometry = povGeometry(o);
+    const std::string geometry =
+        o.kind == ObjectKind::Fractal
+            ? povFractalMesh(scene.fractals[static_cast<std::size_t>(o.fractal)])
+            : povGeometry(o);
     // CGL adds k_t T to the whole colour; POV-Ray's transmit t scales the
     // diffuse and ambient terms by 1 - t, which the finish divides out (for
     // k_t < 1; k_t >= 1 keeps POV-Ray's none). The reflected and transmitted

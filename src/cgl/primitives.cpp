@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "src/cgl/fractal.h"
+
 namespace prime::cgl {
 
 const char* kindName(ObjectKind kind) {
@@ -14,6 +16,8 @@ const char* kindName(ObjectKind kind) {
       return "polygon";
     case ObjectKind::Box:
       return "box";
+    case ObjectKind::Fractal:
+      return "fractal";
   }
   return "?";
 }
@@ -83,6 +87,7 @@ Vec3 normalAt(const Object& o, const Vec3& point, double axial) {
     case ObjectKind::Polygon:
       return o.n;
     case ObjectKind::Box:
+    case ObjectKind::Fractal:  // the facet's: facetNormal (src/cgl/fractal.h)
       break;
   }
   return {0.0, 0.0, 0.0};
@@ -107,6 +112,9 @@ void textureUv(const Object& o, const Vec3& point, const Vec3& normal, double ax
       v = (vv - o.vmin) / (o.vmax - o.vmin);
       return;
     }
+    case ObjectKind::Fractal:
+      fractalTextureUv(o.v0, o.e1, o.ne1, o.umin, o.umax, o.vmin, o.vmax, point, u, v);
+      return;
     case ObjectKind::Box:
       break;
   }

@@ -18,8 +18,10 @@
 
 namespace prime::cgl {
 
-enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Polygon, Box };
-inline constexpr int kPrimitiveKinds = 3;  // Sphere, Cylinder, Polygon (Box apart)
+enum class ObjectKind : std::uint8_t { Sphere, Cylinder, Polygon, Box, Fractal };
+// The length of the statistics arrays indexed by ObjectKind (TraceStats::
+// tests, hits); the Box entry stays 0, boxes are counted apart.
+inline constexpr int kPrimitiveKinds = 5;
 
 const char* kindName(ObjectKind kind);
 
@@ -34,6 +36,9 @@ const char* kindName(ObjectKind kind);
 //    and max over the vertices.
 //  Box: the union of its contents' boxes; its contents are the objects that
 //    follow it in the list up to (not including) index `skip`.
+//  Fractal (section 5.4): `fractal`, the index of its tree and facets in
+//    Scene::fractals; v0, e1, ne1 and the u/v min and max, the texture frame
+//    of section 5.3; box, the tree's root box.
 struct Object {
   ObjectKind kind = ObjectKind::Sphere;
   bool opaque = true;  // the surface's transparency k_t is 0.0 (section 9.3)
@@ -49,7 +54,8 @@ struct Object {
   std::array<double, 4> d{};
   int edges = 0;
   double umin = 0, umax = 0, vmin = 0, vmax = 0;
-  int skip = 0;  // Box: index of the first object after its contents
+  int skip = 0;      // Box: index of the first object after its contents
+  int fractal = -1;  // Fractal: index into Scene::fractals
 };
 
 // Intersections. On a hit within (tMin, tMax) return true and set t (and for
@@ -71,13 +77,17 @@ bool hitPolygon(const Object& poly, const Ray& ray, double tMin, double tMax, do
 double boxEntry(const Object& box, const BoxRay& ray);
 
 // The geometric normal at the hit point, before any facing: sphere
-// (I - C)/|I - C|; cylinder (I - (A + u_i P)) normalised; polygon N.
+// (I - C)/|I - C|; cylinder (I - (A + u_i P)) normalised; polygon N. A
+// fractal's is its facet's (facetNormal, src/cgl/fractal.h): the tracer asks
+// the surface, and this returns 0 for it.
 Vec3 normalAt(const Object& o, const Vec3& point, double axial);
 
 // Texture coordinates in [0, 1] (sections 2.3, 3.3, 4.3): sphere
 // ((N.A1)+1)/2, ((N.A2)+1)/2; cylinder u = u_i, v = ((N.A1)+1)/2; polygon
 // I = V0 + u E1 + v N_E1 solved, then normalised by the min/max over the
-// vertices. `normal` is the geometric normal (not faced).
+// vertices; fractal (section 5.7) the x and z equations of the same frame
+// solved, normalised by the min/max over the facet vertices. `normal` is the
+// geometric normal (not faced).
 void textureUv(const Object& o, const Vec3& point, const Vec3& normal, double axial, double& u,
                double& v);
 

@@ -15,6 +15,7 @@ TraceSettings traceSettings(const RenderSettings& settings) {
   t.background = settings.program.background;
   t.phosphors = settings.phosphors;
   t.epsilon = settings.epsilon;
+  t.linearSearch = settings.linearSearch;
   return t;
 }
 
@@ -62,7 +63,7 @@ class CornerTable {
         have_(static_cast<std::size_t>(columns_) * (kSub + 1), 0) {}
 
   void startScanline(int y) {
-    if (y == scanline_ - 1) {
+    if (y + 1 == scanline_) {
       // The old lower edge (row kSub) is the new upper edge (row 0).
       std::copy_n(colour_.begin() + static_cast<std::ptrdiff_t>(kSub) * columns_, columns_,
                   colour_.begin());
@@ -144,7 +145,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   RenderResult result;
   result.setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.image.assign(Frame::kSize, Frame::kSize);
+  // The doubles are for a live window only: 6 MiB written for nothing
+  // otherwise (most of a small render's page faults).
+  const bool keepImage = static_cast<bool>(callbacks.rowDone);
+  if (keepImage) result.image.assign(Frame::kSize, Frame::kSize);
 
   const int rows = p.yhigh - p.ylow + 1;
   const int threads = threadCount(settings.threads, rows);
@@ -182,7 +186,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
             c = tables[static_cast<std::size_t>(thread)].pixel(x, stats);
           }
           result.frame.at(y, x) = packPixel(c.r, c.g, c.b);
-          result.image.at(imageRow, x) = Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
+          if (keepImage) result.image.at(imageRow, x) = Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
         }
         return stats.rays.rays() - before;
       },
@@ -197,7 +201,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
 }
 
 ProbeReport probe(const Scene& scene, const RenderSettings& settings, double x, double y) {
-  const Tracer tracer(scene, traceSettings(settings));
+  // The probe walks the object list as printed: its "shadowed by" names the
+  // first opaque object of the list in the way.
+  TraceSettings ts = traceSettings(settings);
+  ts.linearSearch = true;
+  const Tracer tracer(scene, ts);
   ProbeReport report;
   TraceStats stats;
   tracer.screenPoint(x, y, stats, &report);

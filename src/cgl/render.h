@@ -28,14 +28,20 @@ struct RenderSettings {
   Phosphors phosphors = Phosphors::Electrohome;
   int threads = 0;        // 0: all cores
   double epsilon = 1e-6;  // TraceSettings::epsilon (CGL-Q44)
+  // The document's object list for every ray (TraceSettings::linearSearch):
+  // the same pixels as the BVH, and the operation counts of Table 5's program.
+  bool linearSearch = false;
   // Record every primary ray's screen point (for tests of the corner table):
   // RenderResult::corners.
   bool recordCorners = false;
 };
 
 struct RenderResult {
-  Frame frame;     // the 512 x 512 words; outside the window black
-  RgbImage image;  // the same picture as doubles 0..1 (byte / 255), row 0 at the top
+  Frame frame;  // the 512 x 512 words; outside the window black
+  // The same picture as doubles 0..1 (byte / 255), row 0 at the top, kept
+  // only when RenderCallbacks::rowDone is set (a live window); else empty:
+  // toRgbImage(frame) makes it.
+  RgbImage image;
   TraceStats stats;
   RowsRun run;
   double setupSeconds = 0;  // the tracer's set-up (the background's spectrum)

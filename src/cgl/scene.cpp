@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 
 #include "src/math/matrix.h"
 
@@ -136,12 +137,15 @@ class Preprocessor {
         process(node.down, m, out, depth + 1);
         break;
       case NodeKind::Fractal:
+        out.push_back(Item{fractal(node, m), {}});  // counted by its facets (CGL-Q128)
+        ++scene_.primitives;
+        process(node.down, m, out, depth + 1);  // as a primitive's (CGL-Q42)
+        break;
       case NodeKind::Spline:
         // CGL-D42: part 2 of the port.
-        throw io::InputError(
-            node.where, std::string(node.kind == NodeKind::Fractal ? "fractal" : "spline") +
-                            " surfaces (node " + std::to_string(node.number) +
-                            ") are rendered by part 2 of the CGL port and are not available yet");
+        throw io::InputError(node.where, "spline surfaces (node " + std::to_string(node.number) +
+                                             ") are rendered by part 2 of the CGL port and are "
+                                             "not available yet");
       case NodeKind::Box: {
         std::vector<Item> inner;
         process(node.down, m, inner, depth + 1);
@@ -309,6 +313,53 @@ class Preprocessor {
     return o;
   }
 
+  // Section 5: the surface is built from the node and the current
+  // transformation; the object node keeps the texture frame and the tree's
+  // root box, the scene the tree.
+  Object fractal(const NodeRecord& node, const Matrix4& m) {
+    Object o;
+    o.kind = ObjectKind::Fractal;
+    o.node = node.number;
+    o.surface = surfaceIndex(node);
+    const SurfaceRecord& surface = file_.surfaces[static_cast<std::size_t>(o.surface)];
+    o.opaque = surface.refract == 0.0;
+    if (node.divisions < 1 || node.divisions > 10)  // the reader's range (CGL-Q9)
+      throw io::InputError(node.where, "divisions", "1..10", std::to_string(node.divisions));
+    // CGL-Q128: every facet counts against BuildOptions::maxObjects, so that
+    // a shared fractal node instantiated on many paths cannot exhaust memory.
+    const long facets = 1L << (2 * node.divisions);
+    if (made_ + facets > options_.maxObjects)
+      throw io::InputError(node.where, "fractal",
+                           "at most " + std::to_string(options_.maxObjects) +
+                               " object nodes and fractal facets in the scene",
+                           "more (this surface has " + std::to_string(facets) + " facets)");
+    made_ += facets;
+    FractalParams p;
+    p.divisions = node.divisions;
+    p.h = node.h;
+    p.offset = node.offset;
+    p.seed = node.seed;
+    p.constrained = node.constrained;
+    FractalSurface f = buildFractal(p, m);
+    if (surface.textured && !f.textureFrame)
+      throw io::InputError(node.where, "fractal",
+                           "a textured fractal whose transformed triangle is not edge-on to the "
+                           "y axis (section 5.3: the x and z equations need a solution)",
+                           "the triangle lies in a plane containing the y axis");
+    o.v0 = f.v0;
+    o.e1 = f.e1;
+    o.ne1 = f.ne1;
+    o.umin = f.umin;
+    o.umax = f.umax;
+    o.vmin = f.vmin;
+    o.vmax = f.vmax;
+    o.box = f.root();
+    pad(o.box);
+    o.fractal = static_cast<int>(scene_.fractals.size());
+    scene_.fractals.push_back(std::move(f));
+    return o;
+  }
+
   const SceneFile& file_;
   const BuildOptions& options_;
   Scene& scene_;
@@ -338,11 +389,19 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     Texture tex;
     tex.path = where;
     tex.texels.resize(frame.words.size());
+    // A texel's spectrum depends on its colour only: each colour is converted
+    // once (a map holds few colours; the same numbers as converting every texel).
+    std::unordered_map<std::uint32_t, std::array<double, 3>> converted;
     for (std::size_t i = 0; i < frame.words.size(); ++i) {
-      const std::uint32_t w = frame.words[i];
-      const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
-      for (int k = 0; k < 3; ++k)
-        tex.texels[i][static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
+      const std::uint32_t w = frame.words[i] & 0xffffffu;
+      auto it = converted.find(w);
+      if (it == converted.end()) {
+        const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);
+        std::array<double, 3> three{};
+        for (int k = 0; k < 3; ++k) three[static_cast<std::size_t>(k)] = s[Texture::kSamples[k]];
+        it = converted.emplace(w, three).first;
+      }
+      tex.texels[i] = it->second;
     }
     return tex;
   };
@@ -461,6 +520,11 @@ std::string describeObjects(const Scene& scene) {
       out << ", " << (o.skip - static_cast<int>(i) - 1) << " object nodes inside";
     else
       out << ", surface " << (o.surface + 1) << (o.opaque ? "" : ", transparent");
+    if (o.kind == ObjectKind::Fractal) {
+      const FractalSurface& f = scene.fractals[static_cast<std::size_t>(o.fractal)];
+      out << ", " << f.divisions << " divisions, " << f.facets.size() << " facets, "
+          << f.boxes.size() << " boxes, " << f.bytes() << " bytes";
+    }
     out << "\n";
     if (o.kind == ObjectKind::Box) ends.push_back(o.skip);
   }

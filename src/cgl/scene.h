@@ -18,6 +18,7 @@
 #include "legacy_io/cgl/frame.h"
 #include "legacy_io/cgl/scene_file.h"
 #include "src/cgl/colour.h"
+#include "src/cgl/fractal.h"
 #include "src/cgl/primitives.h"
 #include "src/geom/ray.h"
 
@@ -76,6 +77,8 @@ struct Scene {
   std::vector<Surface> surfaces;
   std::vector<Texture> textures;
   std::vector<Light> lights;
+  // Fractal surfaces (section 5): Object::fractal indexes this.
+  std::vector<FractalSurface> fractals;
   Spectrum ambient{};                 // k_a pi I_a lambda (section 9.6: "one colour-vector")
   std::vector<std::string> warnings;  // ignored scale nodes (Appendix 1 section 9)
   int primitives = 0, boxes = 0;      // counts of object nodes by kind
@@ -97,8 +100,9 @@ struct BuildOptions {
 };
 
 // Preprocess. Throws io::InputError (located at the node, surface or light
-// line) for what the port cannot render: fractal and spline nodes (part 2
-// of the port), degenerate polygons and cylinders, polygons
+// line) for what the port cannot render: spline nodes (part 2 of the
+// port), a textured fractal whose texture frame fails (section 5.3),
+// degenerate polygons and cylinders, polygons
 // other than triangles and rectangles, a missing texture (naming every place
 // looked).
 Scene buildScene(const SceneFile& file, const BuildOptions& options = {});

@@ -22,6 +22,7 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   boxHits += o.boxHits;
   for (int k = 0; k < 3; ++k) shadeCalls[k] += o.shadeCalls[k];
   totalInternalReflections += o.totalInternalReflections;
+  fractal += o.fractal;
   shadowedLights += o.shadowedLights;
   return *this;
 }
@@ -53,6 +54,13 @@ bool refractDirection(const Vec3& d, const Vec3& n, double index, Vec3& out) {
 
 Tracer::Tracer(const Scene& scene, const TraceSettings& settings)
     : scene_(scene), settings_(settings) {
+  if (!settings.linearSearch) {
+    // Box object nodes get an empty box: the BVH never visits them.
+    std::vector<Aabb> boxes(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (scene.objects[i].kind != ObjectKind::Box) boxes[i] = scene.objects[i].box;
+    bvh_ = Bvh(std::move(boxes));
+  }
   // CGL-Q49: secondary rays that miss, and the depth limit, return the
   // background as a colour-vector.
   background_ =
@@ -60,7 +68,39 @@ Tracer::Tracer(const Scene& scene, const TraceSettings& settings)
                     settings.phosphors);
 }
 
+namespace {
+
+// One object node's intersection routine (sections 2.2, 3.2, 4.2, 5.5): a
+// hit with t in (tMin, tMax); a fractal's facet and tree work are reported.
+// Boxes are the callers' business.
+inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, double tMin,
+                      double tMax, double& t, double& axial, int& facet, FractalWork& work) {
+  switch (o.kind) {
+    case ObjectKind::Sphere:
+      return hitSphere(o, br.ray, tMin, tMax, t);
+    case ObjectKind::Cylinder:
+      return hitCylinder(o, br.ray, tMin, tMax, t, axial);
+    case ObjectKind::Polygon:
+      return hitPolygon(o, br.ray, tMin, tMax, t);
+    case ObjectKind::Fractal:
+      return hitFractal(scene.fractals[static_cast<std::size_t>(o.fractal)], br, tMin, tMax, t,
+                        facet, work);
+    case ObjectKind::Box:
+      break;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const {
+  return settings_.linearSearch ? intersectList(ray, tMax, hit, stats)
+                                : intersectBvh(ray, tMax, hit, stats);
+}
+
+// Figure 41's Intersect: the object list in order, the nearest hit kept (a
+// later object must be strictly nearer), super boxes skipping their contents.
+bool Tracer::intersectList(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const {
   const std::vector<Object>& objects = scene_.objects;
   const int count = static_cast<int>(objects.size());
   const double eps = settings_.epsilon;
@@ -69,36 +109,27 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
   const BoxRay boxRay(ray);
   for (int i = 0; i < count;) {
     const Object& o = objects[static_cast<std::size_t>(i)];
-    double t = 0, axial = 0;
-    bool h = false;
-    switch (o.kind) {
-      case ObjectKind::Box:
-        ++stats.boxTests;
-        // CGL-Q48: the contents are tested only if the ray meets the box
-        // ahead of it, nearer than the nearest hit so far.
-        if (boxEntry(o, boxRay) < tmin) {
-          ++stats.boxHits;
-          ++i;
-        } else {
-          i = o.skip;
-        }
-        continue;
-      case ObjectKind::Sphere:
-        h = hitSphere(o, ray, eps, tmin, t);
-        break;
-      case ObjectKind::Cylinder:
-        h = hitCylinder(o, ray, eps, tmin, t, axial);
-        break;
-      case ObjectKind::Polygon:
-        h = hitPolygon(o, ray, eps, tmin, t);
-        break;
+    if (o.kind == ObjectKind::Box) {
+      ++stats.boxTests;
+      // CGL-Q48: the contents are tested only if the ray meets the box
+      // ahead of it, nearer than the nearest hit so far.
+      if (boxEntry(o, boxRay) < tmin) {
+        ++stats.boxHits;
+        ++i;
+      } else {
+        i = o.skip;
+      }
+      continue;
     }
+    double t = 0, axial = 0;
+    int facet = -1;
+    const bool h = hitObject(scene_, o, boxRay, eps, tmin, t, axial, facet, stats.fractal);
     const auto kind = static_cast<std::size_t>(o.kind);
     ++stats.tests[kind];
     if (h) {
       ++stats.hits[kind];
       tmin = t;
-      hit = {t, i, axial};
+      hit = {t, i, axial, facet};
       found = true;
     }
     ++i;
@@ -106,37 +137,87 @@ bool Tracer::intersect(const Ray& ray, double tMax, Hit& hit, TraceStats& stats)
   return found;
 }
 
+// The same nearest hit through the shared BVH over the objects' boxes
+// (CGL-D43): every object whose box the ray meets before the nearest hit so
+// far is tested, and of two hits at the same t the one earlier in the object
+// list wins, as in the list; so the hit, and the picture, are the list's.
+bool Tracer::intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const {
+  const std::vector<Object>& objects = scene_.objects;
+  const double eps = settings_.epsilon;
+  double best = tMax;
+  int bestIndex = -1;
+  double bestAxial = 0;
+  int bestFacet = -1;
+  const BoxRay boxRay(ray);
+  bvh_.traverse(
+      boxRay,
+      [&](int i, double) {
+        const Object& o = objects[static_cast<std::size_t>(i)];
+        double t = 0, axial = 0;
+        int facet = -1;
+        // Hits at exactly `best` are kept for the tie rule below.
+        const double limit = bestIndex < 0 ? best : std::nextafter(best, HUGE_VAL);
+        const bool h = hitObject(scene_, o, boxRay, eps, limit, t, axial, facet, stats.fractal);
+        const auto kind = static_cast<std::size_t>(o.kind);
+        ++stats.tests[kind];
+        if (!h) return;
+        ++stats.hits[kind];
+        if (t < best || (t == best && i < bestIndex)) {
+          best = t;
+          bestIndex = i;
+          bestAxial = axial;
+          bestFacet = facet;
+        }
+      },
+      [&] { return best; });
+  if (bestIndex < 0) return false;
+  hit = {best, bestIndex, bestAxial, bestFacet};
+  return true;
+}
+
 int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
   const std::vector<Object>& objects = scene_.objects;
-  const int count = static_cast<int>(objects.size());
   const double eps = settings_.epsilon;
+  if (!settings_.linearSearch) {
+    // Any opaque object in the way will do: the light is skipped either way.
+    int found = -1;
+    const BoxRay boxRay(ray);
+    bvh_.traverse(
+        boxRay,
+        [&](int i, double) {
+          const Object& o = objects[static_cast<std::size_t>(i)];
+          if (found >= 0 || !o.opaque) return;  // section 9.3: transparent objects cast no shadow
+          double t = 0, axial = 0;
+          int facet = -1;
+          const auto kind = static_cast<std::size_t>(o.kind);
+          ++stats.tests[kind];
+          if (hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, stats.fractal)) {
+            ++stats.hits[kind];
+            found = i;
+          }
+        },
+        [&] { return found >= 0 ? -1.0 : tMax; });
+    return found;
+  }
+  const int count = static_cast<int>(objects.size());
   const BoxRay boxRay(ray);
   for (int i = 0; i < count;) {
     const Object& o = objects[static_cast<std::size_t>(i)];
-    double t = 0, axial = 0;
-    bool h = false;
-    switch (o.kind) {
-      case ObjectKind::Box:
-        ++stats.boxTests;
-        if (boxEntry(o, boxRay) < tMax) {
-          ++stats.boxHits;
-          ++i;
-        } else {
-          i = o.skip;
-        }
-        continue;
-      case ObjectKind::Sphere:
-        if (o.opaque) h = hitSphere(o, ray, eps, tMax, t);
-        break;
-      case ObjectKind::Cylinder:
-        if (o.opaque) h = hitCylinder(o, ray, eps, tMax, t, axial);
-        break;
-      case ObjectKind::Polygon:
-        if (o.opaque) h = hitPolygon(o, ray, eps, tMax, t);
-        break;
+    if (o.kind == ObjectKind::Box) {
+      ++stats.boxTests;
+      if (boxEntry(o, boxRay) < tMax) {
+        ++stats.boxHits;
+        ++i;
+      } else {
+        i = o.skip;
+      }
+      continue;
     }
     // Section 9.3: objects that are not opaque are ignored by shadow rays.
     if (o.opaque) {
+      double t = 0, axial = 0;
+      int facet = -1;
+      const bool h = hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, stats.fractal);
       const auto kind = static_cast<std::size_t>(o.kind);
       ++stats.tests[kind];
       if (h) {
@@ -178,7 +259,10 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
   const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
   const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
   const Vec3 point = ray.o + ray.d * hit.t;
-  const Vec3 normal = normalAt(object, point, hit.axial);
+  const Vec3 normal =
+      object.kind == ObjectKind::Fractal
+          ? facetNormal(scene_.fractals[static_cast<std::size_t>(object.fractal)], hit.facet)
+          : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;
   // Cook-Torrance treats the reflected and transmitted rays as lights
@@ -257,6 +341,7 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     pr->node = object.node;
     pr->surface = surface.number;
     pr->objectKind = object.kind;
+    pr->facet = hit.facet;
     pr->t = hit.t;
     pr->point = point;
     pr->normal = n;

@@ -2,6 +2,8 @@
 // data, missing files) is reported on stderr as "prime: <file:line: ...>" with
 // exit status 1; usage errors exit with CLI11's status (106 and friends).
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -76,6 +78,30 @@ std::string commandFor(const std::string& command, int argc, char** argv) {
     return prime::cli::malone::kBenchCommand;
   }
   return command;
+}
+
+// CLI11's range checks let NaN through (every comparison with NaN is false)
+// and accept "inf": no command of prime takes a number that is not finite.
+// Returns the message for the first option or argument of the parsed command
+// line whose value reads as a number that is not finite ("" when none). A
+// value that names an existing file is a file, not a number.
+std::string nonFiniteNumber(const CLI::App& app) {
+  for (const CLI::Option* opt : app.get_options()) {
+    for (const std::string& value : opt->results()) {
+      const char* begin = value.c_str();
+      char* end = nullptr;
+      const double v = std::strtod(begin, &end);
+      if (end == begin || *end != '\0' || std::isfinite(v)) continue;
+      if (std::filesystem::exists(value)) continue;
+      const std::string name = opt->get_name(false, true);
+      return name + ": expected a finite number, found '" + value + "'";
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    const std::string m = nonFiniteNumber(*sub);
+    if (!m.empty()) return m;
+  }
+  return "";
 }
 
 // Edit distance, for "did you mean".
@@ -183,6 +209,12 @@ int main(int argc, char** argv) {
       return 2;
     }
     std::cerr << "prime: " << e.what() << " (prime " << (first.empty() ? "" : first + " ")
+              << "--help)\n";
+    return 2;
+  }
+  if (const std::string bad = nonFiniteNumber(app); !bad.empty()) {
+    const std::string first = argc > 1 ? argv[1] : "";
+    std::cerr << "prime: " << bad << " (prime " << (first.empty() ? "" : first + " ")
               << "--help)\n";
     return 2;
   }

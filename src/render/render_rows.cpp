@@ -5,10 +5,24 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
 namespace prime {
+
+int startThreads(std::vector<std::thread>& pool, int count, const std::function<void(int)>& fn) {
+  pool.reserve(pool.size() + static_cast<std::size_t>(std::max(0, count)));
+  int started = 0;
+  for (; started < count; ++started) {
+    try {
+      pool.emplace_back(fn, started);
+    } catch (const std::system_error&) {
+      break;  // the system has no more threads for us: go on with those running
+    }
+  }
+  return started;
+}
 
 int threadCount(int requested, int rows) {
   int threads = requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
@@ -57,7 +71,9 @@ RowsRun renderRows(int rows, int threads,
   };
 
   std::vector<std::thread> pool;
-  for (int t = 0; t < run.threads; ++t) pool.emplace_back(worker, t);
+  const int started = startThreads(pool, run.threads, worker);
+  if (started == 0) worker(0);  // not even one thread: the rows on this one
+  run.threads = std::max(1, started);
 
   auto report = [&] {
     std::vector<int> rowsNow;

@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <thread>
+#include <vector>
 
 namespace prime {
 
@@ -24,6 +26,11 @@ struct RowsRun {
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row
 };
+
+// Starts up to `count` threads running fn(0), fn(1), ... into `pool` and
+// returns how many started: a system that refuses a thread (too many asked
+// for) stops the starting, never the program. The caller joins them.
+int startThreads(std::vector<std::thread>& pool, int count, const std::function<void(int)>& fn);
 
 // Threads for `rows` rows: `requested`, or all cores for 0; never more than
 // the rows, at least one.

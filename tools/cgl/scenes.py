@@ -472,6 +472,81 @@ def lamp():
     return s
 
 
+EARTH = edge(570, 45, 0.34, 0.13)  # a warm brown-grey rock
+FIGURES = {0: (13, "the original triangle", "13:49"), 1: (14, "after 1 subdivision", "22:45"),
+           2: (15, "after 2 subdivisions", "26:37"), 4: (16, "after 4 subdivisions", "32:53"),
+           5: (17, "after 5 subdivisions", "36:39"), 9: (18, "after 10 subdivisions", "54:06"),
+           10: (18, "after 10 subdivisions", "54:06")}
+
+
+def fractal(divisions):
+    figure, caption, vax = FIGURES[divisions]
+    about = ["Figure %d of section 5: '%s' (%s minutes on the VAX 11/780)." % (
+        figure, caption[0].upper() + caption[1:], vax),
+             "The fractal triangle of section 5.2: the standard triangle (-1, 0, 1),",
+             "(1, 0, 1), (0, 0, -1), its y perturbed at each subdivision by",
+             "s 2^(-h l) G; h 0.9 ('0.9 for mountains'), offset 0.0, the seed of the",
+             "document's example node (Appendix 1 section 13) and a free perimeter (a",
+             "constrained one leaves 1 subdivision flat: its only midpoints are on the",
+             "perimeter). The document's random generator is lost, so this is the port's",
+             "surface for these numbers, not the document's (docs/cgl/rendering.md). Lit",
+             "from the left and low, with shadows, so that the relief shows."]
+    if divisions == 0:
+        about += ["The reader takes 1-10 divisions: the plain triangle is a polygon on",
+                  "the standard triangle's three vertices (what 0 divisions would make)."]
+    if divisions == 9:
+        about += ["Figure 18 claims 10 subdivisions, above the manual's range of 1-9: this",
+                  "is 9, the manual's largest; fractal-10.cgl is the figure's 10."]
+    if divisions == 10:
+        about += ["10 is above the manual's range of 1-9; the port's reader takes it with a",
+                  "warning (CGL-Q9) for this figure: 1,048,576 facets, 143 MB."]
+    name = "the fractal triangle, %d subdivision%s" % (divisions, "" if divisions == 1 else "s")
+    s = Scene(name if divisions else "the fractal triangle before any subdivision", about)
+    for p in ["shadows", "aalevel 2", "ylow 64", "yhigh 400"]:
+        s.param(p)
+    s.view("eye 0.0 1.3 3.4")
+    s.view("sight towards 0.0 0.05 -0.1")
+    s.lambert("a warm brown-grey rock", EARTH, 7.0)
+    s.ambient(0.0005)
+    s.light("infinity", 1.0, 0.45, 0.25, 0.0007,
+            comment="low, from the left (world +x is on the viewer's left)")
+    if divisions == 0:
+        tri = [s.vertex(*v) for v in [(-1.0, 0.0, 1.0), (1.0, 0.0, 1.0), (0.0, 0.0, -1.0)]]
+        s.node("polygon 00 00 1 3 %d %d %d" % tuple(tri), "the standard triangle itself")
+    else:
+        s.node("fractal 00 00 1 %d 0.9 0.0 9772 free" % divisions)
+    return s
+
+
+def fractal_hills():
+    s = Scene("texture-mapped fractal hills over water",
+              ["Section 5.3 and 5.7: 'A fractal is texture mapped as if it were a",
+               "triangle, temporarily ignoring the y coordinate', a claim of the package",
+               "shown in Figure 57 (Crater Lake: 'the hills are texture mapped fractals').",
+               "Two hills with the manual's values for rolling hills (h 1.3, offset 0.5,",
+               "free perimeter), the port's checkerboard 3 x 3 and 2 x 2 times (the",
+               "document's textures are lost), and a reflecting lake (a rectangle)."])
+    for p in ["shadows", "depth 1", "aalevel 2", "ylow 80", "yhigh 400"]:
+        s.param(p)
+    s.view("eye 0.0 1.2 3.4")
+    s.view("sight towards 0.0 0.0 0.0")
+    lake = [s.vertex(x, -0.05, z) for x, z in [(-2.5, -2.5), (-2.5, 2.0), (2.5, 2.0), (2.5, -2.5)]]
+    s.textured("the checkerboard, 3 x 3", "lambert", "textures/checkerboard.rle", 3.0, 3.0, 9.0)
+    s.phong("blue water, half a mirror", bump(470, 60, 0.15, 0.04), 2.0, 2.0, 40.0, reflect=0.5)
+    s.textured("the checkerboard again, 2 x 2", "lambert", "last", 2.0, 2.0, 9.0)
+    s.ambient(0.0008)
+    s.light("infinity", 0.8, 0.9, 0.5, 0.0009)
+    s.node("polygon 00 02 2 4 %d %d %d %d" % tuple(lake), "the lake")
+    s.node("translate 03 05 0.55 0.0 -0.45", "the left hill (world +x is on the left)")
+    s.node("scale 04 00 1.0 1.4 1.0")
+    s.node("fractal 00 00 1 6 1.3 0.5 9772 free")
+    s.node("translate 06 00 -0.7 0.0 -0.2", "the right hill, turned")
+    s.node("rotate 07 00 y 150.0")
+    s.node("scale 08 00 0.9 1.2 0.9")
+    s.node("fractal 00 00 3 5 1.3 0.5 1985 free")
+    return s
+
+
 SCENES = {
     "checkerboard.cgl": checkerboard,
     "ball.cgl": ball,
@@ -483,6 +558,14 @@ SCENES = {
     "glass.cgl": glass,
     "textures.cgl": textures,
     "lamp.cgl": lamp,
+    "fractal-0.cgl": lambda: fractal(0),
+    "fractal-1.cgl": lambda: fractal(1),
+    "fractal-2.cgl": lambda: fractal(2),
+    "fractal-4.cgl": lambda: fractal(4),
+    "fractal-5.cgl": lambda: fractal(5),
+    "fractal-9.cgl": lambda: fractal(9),
+    "fractal-10.cgl": lambda: fractal(10),
+    "fractal-hills.cgl": fractal_hills,
 }
 
 

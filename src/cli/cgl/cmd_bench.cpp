@@ -27,7 +27,8 @@ struct Row {
 };
 
 std::uint64_t tests(const prime::cgl::TraceStats& s) {
-  return s.tests[0] + s.tests[1] + s.tests[2] + s.boxTests;
+  return s.tests[0] + s.tests[1] + s.tests[2] + s.boxTests +
+         s.tests[static_cast<std::size_t>(prime::cgl::ObjectKind::Fractal)];
 }
 
 }  // namespace
@@ -55,6 +56,8 @@ void addBenchCommand(CLI::App& app, Action& action) {
   cmd->add_option("--textures", base->textureDirs,
                   "Directory to look in for texture files (after each scene's own directory)")
       ->check(CLI::ExistingDirectory);
+  cmd->add_flag("--linear-search", base->linearSearch,
+                "Test the object list in order for every ray, as the package did (CGL-D43)");
   cmd->add_option("--csv", *csv, "Also write the table as CSV");
   cmd->callback([=, &action] {
     action = [=] {
@@ -108,7 +111,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
         std::printf("%-34s %7d %2d %2d %7.1f %8.1f", r.scene.c_str(), r.pixels, r.aalevel, r.depth,
                     r.readMs, r.buildMs);
         for (std::size_t k = 0; k < threads->size(); ++k)
-          std::printf(" %8.3f %8.3f", r.cpu[k], r.wall[k]);
+          std::printf(" %8.4f %8.4f", r.cpu[k], r.wall[k]);
         std::printf(" %10llu %10.3g %11llu %9.3g %10llu %10llu %10llu %10llu",
                     static_cast<unsigned long long>(s.rays.rays()),
                     c > 0 ? static_cast<double>(s.rays.rays()) / c : 0.0,

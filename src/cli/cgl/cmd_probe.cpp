@@ -54,6 +54,9 @@ void printReport(const prime::cgl::ProbeReport& r, const prime::cgl::Scene& scen
         indent.c_str(), ray.object, prime::cgl::kindName(ray.objectKind), ray.node, ray.surface,
         ray.t, ray.point[0], ray.point[1], ray.point[2], ray.normal[0], ray.normal[1],
         ray.normal[2]);
+    if (ray.facet >= 0)
+      std::printf("%s  the fractal's facet %d (leaf order, section 5.6)\n", indent.c_str(),
+                  ray.facet);
     if (ray.textured)
       std::printf("%s  texture u %.6f v %.6f: texel row %d, column %d\n", indent.c_str(), ray.u,
                   ray.v, ray.ui, ray.vi);

@@ -55,6 +55,21 @@ void printReport(const prime::cgl::SceneFile& file, const prime::cgl::Scene& sce
               scene.primitives, scene.boxes, prime::cgl::describeObjects(scene).c_str());
 }
 
+// Section 5.5's work, when the scene has fractals: surfaces tested, and the
+// tree boxes and facets tested per such test.
+std::string fractalSummary(const prime::cgl::TraceStats& s) {
+  const auto n = s.tests[static_cast<std::size_t>(prime::cgl::ObjectKind::Fractal)];
+  if (n == 0) return "";
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "; fractal tests %llu (%.1f boxes and %.2f facets per test, longest active "
+                "list %llu)",
+                static_cast<unsigned long long>(n), static_cast<double>(s.fractal.boxes) / n,
+                static_cast<double>(s.fractal.facets) / n,
+                static_cast<unsigned long long>(s.fractal.activeMax));
+  return buf;
+}
+
 void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
   const auto& s = r.stats;
   std::printf("%s 512 x 512 pixels in %.2f s with %d thread(s)%s\n",
@@ -63,7 +78,7 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
   std::printf(
       "rays: %llu (primary %llu, shadow %llu, reflected %llu, refracted %llu), %.0f rays/s; "
       "tests: sphere %llu, cylinder %llu, polygon %llu, super box %llu; shade calls: Lambert "
-      "%llu, Phong %llu, Cook-Torrance %llu\n",
+      "%llu, Phong %llu, Cook-Torrance %llu%s\n",
       static_cast<unsigned long long>(s.rays.rays()),
       static_cast<unsigned long long>(s.rays.primaryRays),
       static_cast<unsigned long long>(s.rays.shadowRays),
@@ -74,7 +89,7 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
       static_cast<unsigned long long>(s.tests[2]), static_cast<unsigned long long>(s.boxTests),
       static_cast<unsigned long long>(s.shadeCalls[0]),
       static_cast<unsigned long long>(s.shadeCalls[1]),
-      static_cast<unsigned long long>(s.shadeCalls[2]));
+      static_cast<unsigned long long>(s.shadeCalls[2]), fractalSummary(s).c_str());
 }
 
 }  // namespace

@@ -23,6 +23,9 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
       ->check(CLI::IsMember({"electrohome", "ntsc"}));
   cmd->add_option("--threads", o.threads, "Render threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
+  cmd->add_flag("--linear-search", o.linearSearch,
+                "Test the object list in order for every ray, as the package did (the same "
+                "pixels, slower; operation counts as the document's program made them)");
   if (!withParameters) return;
   const std::string g =
       "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
@@ -129,6 +132,7 @@ prime::cgl::RenderSettings renderSettings(const CglOptions& o, const prime::cgl:
   settings.program = file.program;
   settings.phosphors = phosphorsOf(o);
   settings.threads = o.threads;
+  settings.linearSearch = o.linearSearch;
   return settings;
 }
 

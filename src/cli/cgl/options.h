@@ -20,6 +20,7 @@ struct CglOptions {
   std::vector<std::string> textureDirs;
   std::string phosphors = "electrohome";
   int threads = 0;
+  bool linearSearch = false;  // the document's object list for every ray (CGL-D43)
   // Overrides of the program parameters (unset: the file's, else the default).
   std::optional<int> yhigh, ylow, xleft, xright, depth, memory, aalevel;
   std::optional<double> brightness, aathreshold;

@@ -21,12 +21,17 @@ void addStressCommand(CLI::App& app, Action& action) {
   auto list = std::make_shared<bool>(false);
   cmd->add_option("--profile", *profile, "1991, modern or both")
       ->check(CLI::IsMember({"1991", "modern", "both"}));
-  cmd->add_option("--rays", o->raysPerClass, "Rays per class and profile")->capture_default_str();
+  cmd->add_option("--rays", o->raysPerClass, "Rays per class and profile")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000000));
   cmd->add_option("--class", o->classes, "Only these classes (repeatable)");
   cmd->add_option("--seed", o->seed, "Seed of the generator")->capture_default_str();
-  cmd->add_option("--threads", o->threads, "Worker threads")->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Worker threads")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 4096));
   cmd->add_option("--tolerance", o->toleranceUlps, "C of the conditioning tolerance C*u*(...)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-quad", *noQuad, "Skip the __float128 reference (long double only)");
   cmd->add_option("--csv", *csv, "Also write the figures as CSV to FILE");
   cmd->add_flag("--markdown", *markdown, "Print Markdown tables");
@@ -34,7 +39,8 @@ void addStressCommand(CLI::App& app, Action& action) {
       "--images", *images,
       "Whole-image stability instead: every scene under DIR with Model.txt, transformed");
   cmd->add_option("--screen-divisor", *divisor, "Image stability: screen size divided by N")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   cmd->add_flag("--list", *list, "List the classes and exit");
   cmd->callback([=, &action] {
     action = [=]() -> int {

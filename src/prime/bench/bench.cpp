@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/scene_dir.h"
 #include "src/bench/pareto.h"
@@ -49,10 +50,7 @@ bool sameSetting(const BenchSetting& a, const BenchSetting& b) {
 }
 
 std::string readText(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return io::readInputText(p.string());
 }
 
 }  // namespace

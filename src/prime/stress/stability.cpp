@@ -9,11 +9,12 @@
 #include <thread>
 
 #include "legacy_io/prime/scene_dir.h"
+#include "src/prime/math/listing_matrix.h"
 #include "src/prime/render/renderer.h"
 #include "src/prime/render/tracer_modern.h"
 #include "src/prime/scene/scene_loader.h"
 #include "src/prime/stress/stress.h"
-#include "src/prime/math/listing_matrix.h"
+#include "src/render/render_rows.h"
 
 namespace prime::stress {
 
@@ -60,7 +61,7 @@ Image renderIndices(const Tracer& tracer, const ListingCamera& cam, const Matrix
     nanCount += stats.nanColours;
   };
   std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  startThreads(pool, threads - 1, [&](int) { work(); });
   work();
   for (auto& th : pool) th.join();
   nan = nanCount;

@@ -21,6 +21,7 @@
 #include "src/prime/stress/measurer.h"
 #include "src/prime/stress/stress_rays.h"
 #include "src/prime/stress/subjects.h"
+#include "src/render/render_rows.h"
 
 namespace prime::stress {
 
@@ -484,7 +485,7 @@ std::vector<ClassResult> runStress(const StressOptions& options) {
     };
     const int threads = std::max(1, options.threads);
     std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+    startThreads(pool, threads - 1, [&](int) { worker(); });
     worker();
     for (auto& t : pool) t.join();
     if (options.log)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Pixels of the CGL scenes recomputed by hand from the scene files and the
 document's formulas, independently of the port's code, and compared with
-`prime probe` (ctest cgl.hand_checks).
+`prime probe` (ctest cgl.hand_checks); for fractal scenes the hit's t and
+normal.
 
 M. A. J. Sweeney, "The Waterloo CGL Ray Tracing Package", University of
 Waterloo CS-85-35, 1985: the camera of Appendix 1 section 6 (screen-right =
@@ -201,6 +202,103 @@ CHECKS = [  # scene, x, y (pixel corners; the probe traces what aalevel 0 traces
 ]
 
 
+# Fractal surfaces (section 5), rebuilt here from the rules docs/cgl/rendering.md
+# states (CGL-D120, CGL-Q120 to CGL-Q124): SplitMix64 and Marsaglia's polar
+# method (with math.log: the port's own log may differ in the last bit, far
+# below these tolerances), the 201 x 201 matrix indexed by round(100(x + 1)),
+# midpoints perturbed by 0.5 2^(-h l)(G + offset), l = 1 first; then every
+# facet tested by Cramer's rule and the nearest kept. Compared with the t and
+# the facing normal that `prime probe` prints.
+def fractal_surface(divisions, h, offset, seed, constrained):
+    mask = (1 << 64) - 1
+    state = [seed & mask]
+
+    def splitmix():
+        state[0] = (state[0] + 0x9e3779b97f4a7c15) & mask
+        z = state[0]
+        z = ((z ^ (z >> 30)) * 0xbf58476d1ce4e5b9) & mask
+        z = ((z ^ (z >> 27)) * 0x94d049bb133111eb) & mask
+        return z ^ (z >> 31)
+
+    def uniform():
+        return (splitmix() >> 11) * 2.0 ** -53 * 2.0 - 1.0
+    g = []
+    while len(g) < 201 * 201:
+        u, v = uniform(), uniform()
+        q = u * u + v * v
+        if q >= 1.0 or q == 0.0:
+            continue
+        f = math.sqrt(-2.0 * math.log(q) / q)
+        g += [u * f, v * f]
+    g = [x + offset for x in g[:201 * 201]]
+
+    def index(c):
+        return min(200, max(0, int(math.floor(100.0 * (c + 1.0) + 0.5))))
+
+    def mid(a, b, perimeter, level):
+        m = [(a[i] + b[i]) * 0.5 for i in range(3)]
+        if not (constrained and perimeter):
+            m[1] += 0.5 * 2.0 ** (-h * level) * g[index(m[0]) * 201 + index(m[2])]
+        return m
+    facets = []
+
+    def split(p0, p1, p2, e01, e12, e20, level):
+        if level == divisions:
+            facets.append((p0, p1, p2))
+            return
+        m01, m12, m20 = mid(p0, p1, e01, level + 1), mid(p1, p2, e12, level + 1), mid(p2, p0, e20, level + 1)
+        split(p0, m01, m20, e01, False, e20, level + 1)
+        split(m01, p1, m12, e01, e12, False, level + 1)
+        split(m20, m12, p2, False, e12, e20, level + 1)
+        split(m01, m12, m20, False, False, False, level + 1)
+    split([-1.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 0.0, -1.0], True, True, True, 0)
+    return facets
+
+
+def fractal_hit(path, x, y):
+    scene = {"eye": [0, 0, 3.5], "towards": [0, 0, 0], "up": [0, 1, 0], "dist": 2.5,
+             "viewport": (2.0, 2.0)}
+    node = None
+    for line in open(path):
+        f = line.split()
+        if len(f) > 2 and f[1] == "eye":
+            scene["eye"] = [float(v) for v in f[2:5]]
+        elif len(f) > 2 and f[1] == "sight" and f[2] == "towards":
+            scene["towards"] = [float(v) for v in f[3:6]]
+        elif len(f) > 2 and f[1] == "fractal":
+            assert node is None and f[2] == "00" and f[3] == "00", "one untransformed fractal"
+            node = f
+    eye = scene["eye"]
+    s = norm(sub(scene["towards"], eye))
+    r = norm(cross(scene["up"], s))
+    u = norm(cross(s, r))
+    h, w = scene["viewport"]
+    d = norm(add(add(mul(s, scene["dist"]), mul(r, (x - 256) * w / 512)), mul(u, (y - 256) * h / 512)))
+    best = None
+    for p0, p1, p2 in fractal_surface(int(node[5]), float(node[6]), float(node[7]), int(node[8]),
+                                      node[9] == "constrained"):
+        a, U, V = p0, sub(p1, p0), sub(p2, p1)   # F(u, v) = A + uU + vV, 0 <= v <= u <= 1
+        det = dot(U, cross(d, V))
+        if det == 0:
+            continue
+        o = sub(eye, a)
+        uu = dot(o, cross(d, V)) / det
+        vv = dot(d, cross(o, U)) / det
+        t = dot(V, cross(o, U)) / det
+        if 0 <= uu <= 1 and 0 <= vv <= uu and t > 1e-6 and (best is None or t < best[0]):
+            best = (t, norm(cross(U, V)))
+    if best is None:
+        return None
+    t, n = best
+    if dot(n, d) > 0:
+        n = mul(n, -1)
+    return t, n
+
+
+FRACTAL_CHECKS = [("fractal-2", 256, 256), ("fractal-2", 200, 180), ("fractal-4", 300, 220),
+                  ("fractal-5", 180, 200), ("fractal-5", 256, 300)]
+
+
 def main(argv):
     prime = argv[1]
     root = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
@@ -216,6 +314,20 @@ def main(argv):
         failures += not ok
         print("%s %s (%d, %d): by hand %s, prime probe %s" % ("ok  " if ok else "FAIL", name, x, y,
                                                             want, got))
+    for name, x, y in FRACTAL_CHECKS:
+        path = os.path.join(root, "scenes", "cgl", name + ".cgl")
+        want = fractal_hit(path, x, y)
+        out = subprocess.run([prime, "probe", path, str(x), str(y)], capture_output=True,
+                             text=True).stdout
+        m = re.search(r"at t = ([-\d.e+]+), point \([^)]*\), normal facing the viewer "
+                      r"\(([-\d.e+]+), ([-\d.e+]+), ([-\d.e+]+)\)", out)
+        got = (float(m.group(1)), [float(m.group(k)) for k in (2, 3, 4)]) if m else None
+        ok = (want is None) == (got is None) and (
+            want is None or (abs(want[0] - got[0]) <= 1e-7 * want[0] and
+                             all(abs(want[1][k] - got[1][k]) <= 2e-6 for k in range(3))))
+        failures += not ok
+        print("%s %s (%d, %d): t and normal by hand %s, prime probe %s" % (
+            "ok  " if ok else "FAIL", name, x, y, want, got))
     return 1 if failures else 0
 
 

@@ -174,17 +174,22 @@ TEST(CglPreprocess, ScaleWithAZeroIsIgnored) {
 TEST(CglPreprocess, RefusesWhatPartTwoRenders) {
   SceneFile f = emptyScene();
   f.surfaces.push_back(lambert(1, 1));
-  f.nodes.push_back(test::node(1, NodeKind::Fractal, 0, 0));
+  f.nodes.push_back(test::node(1, NodeKind::Spline, 0, 0));
   f.numbers.root = 1;
   try {
     buildScene(f);
-    FAIL() << "a fractal node was accepted";
+    FAIL() << "a spline node was accepted";
   } catch (const io::InputError& e) {
     EXPECT_EQ(e.where().line, 1001);
     EXPECT_NE(std::string(e.what()).find("part 2"), std::string::npos) << e.what();
   }
-  f.nodes[0].kind = NodeKind::Spline;
-  EXPECT_THROW(buildScene(f), io::InputError);
+  // Fractal nodes are built (src/cgl/fractal.h); divisions outside the
+  // reader's 1..10 are refused at the node.
+  f.nodes[0].kind = NodeKind::Fractal;
+  f.nodes[0].surface = 1;
+  EXPECT_THROW(buildScene(f), io::InputError);  // divisions 0
+  f.nodes[0].divisions = 2;
+  EXPECT_EQ(buildScene(f).fractals.size(), 1u);
   // Cook surfaces are rendered (section 9.9, CGL-D42 no longer refuses
   // them): m and the 66 Fresnel vectors are carried into the Surface; a
   // table of another size (which the reader never makes) is refused at the

@@ -296,7 +296,9 @@ TEST(CglTracer, SuperBoxSkipsItsContents) {
   f.nodes.push_back(test::sphere(4, 0, 1, {5, 0, 0}, 0.5));
   f.numbers.root = 1;
   const Scene s = buildScene(f);
-  const Tracer tracer(s, {});
+  TraceSettings list;
+  list.linearSearch = true;  // the document's object list (the BVH has no super boxes)
+  const Tracer tracer(s, list);
   TraceStats outside;
   Tracer::Hit hit;
   ASSERT_TRUE(tracer.intersect({{5, 0, 5}, {0, 0, -1}}, 1e10, hit, outside));

@@ -134,7 +134,8 @@ TEST(PaletteFile, MissingFileAndLongNames) {
     readPaletteFile("/nonexistent/dir/p.pal");
     FAIL();
   } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/p.pal: cannot read the palette file"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "/nonexistent/dir/p.pal: no such file (expected a palette file)"),
               std::string::npos)
         << e.what();
   }

@@ -1,0 +1,33 @@
+// Every input file of every system is read here, whole, in one way:
+//   - a missing file, a directory, and anything that is not a regular file
+//     (a FIFO would block the reader forever, a device such as /dev/zero
+//     would never end, a socket cannot be read) are refused by type, with
+//     the file named and what it is;
+//   - a file larger than the largest its format can have is refused before
+//     it is read (the caller passes its format's cap), so no input makes the
+//     program run out of memory;
+//   - the file is opened without blocking and its type checked on the open
+//     descriptor, so a path swapped for a FIFO between a check and the open
+//     cannot block either.
+// Errors are InputError naming the file as the user gave it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace prime::io {
+
+// The cap of readFileBytes and TextReader::open when a reader names none.
+inline constexpr std::uint64_t kDefaultInputCap = 256ull << 20;
+
+struct InputFileOptions {
+  std::uint64_t maxBytes = kDefaultInputCap;
+  std::string what = "an input file";  // for messages: "a CGL scene file", "a PRIME graph file"
+  std::string display;                 // the name in messages ("" = the path)
+};
+
+std::vector<std::uint8_t> readInputFile(const std::string& path,
+                                        const InputFileOptions& options = {});
+std::string readInputText(const std::string& path, const InputFileOptions& options = {});
+
+}  // namespace prime::io
