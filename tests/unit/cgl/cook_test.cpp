@@ -318,6 +318,56 @@ TEST(CglCookTrace, TheReflectedRayIsALight) {
   }
 }
 
+TEST(CglCookTrace, TheTransmittedRayIsALight) {
+  // The floor of the test above with k_r 0, k_t 0.5, index 1.5, k_d 0.5,
+  // D 0.2: the transmitted ray leaves downwards and meets nothing, so T is
+  // the background; the light is shadowed. By Snell: sin i = 3/sqrt 10 =
+  // 0.948683, sin t = 0.632456, cos t = 0.774597; L = -D_refract = (0,
+  // 0.774597, 0.632456), N.L = 0.774597. H = normalise(V + L) = (0, 0.567868,
+  // 0.823129): N.H = 0.567868, V.H = 0.960455 (16.19 degrees: row int(11.69)
+  // = 11, F = 0.11). G = min{1, 2*0.567868*0.316228/0.960455 = 0.373939,
+  // 2*0.567868*0.774597/0.960455 = 0.915955} = 0.373939. D = exp(-(1 -
+  // 0.322474)/0.322474/0.25) / (0.25 * 0.103990) = 8.6144e-3. Psi = T * 0.5 *
+  // (1 * 0.11 * 8.6144e-3 * 0.373939/(pi * 0.316228) + 0.5 * 0.774597 * 0.2)
+  // = T * 0.5 * (3.5667e-4 + 0.0774597) = T * 0.0389082.
+  SceneFile f = test::emptyScene();
+  f.vertices = test::floorVertices();
+  SurfaceRecord floor;
+  floor.model = ShadingModel::Cook;
+  floor.refract = 0.5;
+  floor.index = 1.5;
+  floor.diffuse = 0.5;
+  floor.specular = 1.0;
+  floor.m = 0.5;
+  floor.colour = flat(0.2);
+  floor.fresnel = rowTable();
+  floor.where = test::at(100);
+  f.surfaces.push_back(floor);
+  f.surfaces.push_back(test::lambert(1.0, 1.0));
+  f.nodes.push_back(test::polygon(1, 2, 1, {1, 2, 3, 4}));
+  f.nodes.push_back(test::sphere(2, 0, 2, {0, 0.5, 0}, 0.2));
+  f.lights.push_back(test::infinityLight({0, 1, 0}, 0.01, flat(100.0)));
+  f.numbers.root = 1;
+  const Scene scene = buildScene(f);
+  TraceSettings settings;
+  settings.depth = 1;
+  settings.shadows = true;
+  settings.background = {255, 255, 255};
+  const Tracer tracer(scene, settings);
+  TraceStats stats;
+  ProbeReport probe;
+  const Spectrum z =
+      tracer.trace({{0, 1, 3}, normalized(Vec3{0, -1, -3})}, 0, RayKind::Primary, stats, &probe);
+  const Spectrum& b = tracer.backgroundSpectrum();
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    EXPECT_NEAR(z[k], b[k] * 0.0389082, 1e-5 * std::abs(b[k]) + 1e-12) << k;
+  ASSERT_EQ(probe.rays[0].lights.size(), 2u);
+  EXPECT_EQ(probe.rays[0].lights[0].light, ProbeLight::kTransmittedLight);
+  EXPECT_NEAR(probe.rays[0].lights[0].nl, 0.774597, 1e-6);
+  EXPECT_EQ(probe.rays[0].lights[0].fresnel, 11);
+  EXPECT_EQ(stats.rays.transmittedRays, 1u);
+}
+
 TEST(CglCookPov, MetallicHighlightAndColouredReflection) {
   // CGL-D101: m = 0.3 gives specular k_s/m^2 = 1/0.09 = 11.1111 and
   // roughness m^2/(2 - 4m^2) = 0.09/1.64 = 0.0548780; reflect 0.8 with F_0 =
