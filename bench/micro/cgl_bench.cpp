@@ -40,7 +40,8 @@ NodeRecord nodeOf(NodeKind kind, int down = 0, int right = 0) {
   return n;
 }
 
-// One surface (Lambert or Phong, k_d 0.7, colour 0.5; Phong k_s 0.5, e 20),
+// One surface (Lambert, Phong or Cook-Torrance, k_d 0.7, colour 0.5; Phong
+// k_s 0.5, e 20; Cook k_s 1, m 0.3, a flat Fresnel table),
 // the ambience of Figure 59 (k_a 0.0005, here flat 100) and one light at
 // infinity towards (1, 1, 1) with dw 0.0006, and the nodes given.
 SceneFile sceneOf(ShadingModel model, std::vector<NodeRecord> nodes, std::vector<Vec3> vertices) {
@@ -52,6 +53,11 @@ SceneFile sceneOf(ShadingModel model, std::vector<NodeRecord> nodes, std::vector
   s.specular = model == ShadingModel::Phong ? 0.5 : 0.0;
   s.exponent = 20.0;
   s.colour = flat(0.5);
+  if (model == ShadingModel::Cook) {  // the copper's k_s 1.0 and m 0.3; F 0.5 at every angle
+    s.specular = 1.0;
+    s.m = 0.3;
+    s.fresnel.assign(kFresnelAngles, flat(0.5));
+  }
   f.surfaces.push_back(s);
   f.ambience.ka = 0.0005;
   f.ambience.colour = flat(100.0);
@@ -175,7 +181,7 @@ void intersectSuperBox(benchmark::State& state, Mix mix) {
 }
 
 // Tracer::trace of a primary ray that hits the sphere: intersect + the hit
-// point and normal + Shade (ambience, one light, Lambert or Phong) in 33
+// point and normal + Shade (ambience, one light, Lambert, Phong or Cook) in 33
 // samples. ToRGB is not included (Table 5's "shade ray" is the shading).
 void traceHit(benchmark::State& state, ShadingModel model) {
   const Scene s = sphereScene(model);
@@ -222,6 +228,7 @@ const struct Registrar {
     benchmark::RegisterBenchmark("cgl/trace_intersect_only", traceIntersectOnly);
     benchmark::RegisterBenchmark("cgl/trace_shade/lambert", traceHit, ShadingModel::Lambert);
     benchmark::RegisterBenchmark("cgl/trace_shade/phong", traceHit, ShadingModel::Phong);
+    benchmark::RegisterBenchmark("cgl/trace_shade/cook", traceHit, ShadingModel::Cook);
   }
 } registrar;
 

@@ -4,12 +4,15 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "legacy_io/common/output_file.h"
 
 namespace prime::cgl {
 
 namespace {
+
+constexpr double kPi = std::numbers::pi;
 
 std::string rgbText(const Rgb& c) {
   return "rgb " + povVector({c[0], c[1], c[2]});
@@ -386,7 +389,27 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
                          " diffuse " + povNumber(sf.kd * scale * undo);
     if (sf.model == ShadingModel::Phong && sf.ks > 0.0)
       finish += " phong " + povNumber(sf.ks) + " phong_size " + povNumber(sf.e);
-    if (sf.kr > 0.0) finish += " reflection { " + povNumber(sf.kr) + " }";
+    if (sf.model == ShadingModel::Cook && sf.m > 0.0 && !sf.fresnel.empty()) {
+      // CGL-D101: Cook-Torrance approximated. The highlight: POV-Ray's
+      // specular (N.H)^(1/roughness), tinted by the pigment (metallic), with
+      // k_s/m^2 and roughness m^2/(2 - 4m^2), which match the Beckmann D's
+      // peak k_s F_0/(pi m^2) (for D = F_0/pi, as prime cook writes) and its
+      // curvature at N.H = 1; the reflection: CGL's weight for the mirror
+      // direction at normal incidence, k_r (k_s F_0/(pi m^2) + k_d D), as an
+      // RGB filter. Not expressed: G, the 1/(N.V) growth and the Fresnel
+      // table's change with the angle.
+      const double m2 = sf.m * sf.m;
+      finish += " specular " + povNumber(sf.ks / m2) + " roughness " +
+                povNumber(m2 / std::max(2.0 - 4.0 * m2, 1e-3)) + " metallic";
+      if (sf.kr > 0.0) {
+        Spectrum w{};
+        for (int k = 0; k < kSpectrumSamples; ++k)
+          w[k] = sf.kr * (sf.ks * sf.fresnel[0][k] / (kPi * m2) + sf.kd * sf.colour[k]);
+        finish += " reflection { " + rgbText(pigmentUnder(w, reference, ph)) + " }";
+      }
+    } else if (sf.kr > 0.0) {
+      finish += " reflection { " + povNumber(sf.kr) + " }";
+    }
     finish += " }";
     std::string material = "texture { " + pigment + " " + finish + " }";
     if (transparent) material += " interior { ior " + povNumber(sf.index) + " }";

@@ -30,7 +30,8 @@
 //           (CGL-E42: k_r and k_t times the background; POV-Ray's is black,
 //           the same for the shipped scenes, whose background is black),
 //           anti-aliasing (Subdivid's corner table against POV-Ray's method
-//           1, see PovExport::povArgs).
+//           1, see PovExport::povArgs); Cook-Torrance surfaces, approximated
+//           by a metallic highlight and a coloured reflection (CGL-D101).
 // Super boxes are not written: POV-Ray bounds every object itself (its own
 // bounding hierarchy), so a box would only add a test.
 #pragma once

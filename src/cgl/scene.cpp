@@ -481,10 +481,6 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   int lastTexture = -1;
   for (std::size_t i = 0; i < file.surfaces.size(); ++i) {
     const SurfaceRecord& rec = file.surfaces[i];
-    if (rec.model == ShadingModel::Cook)  // CGL-D42: part 2 of the port
-      throw io::InputError(rec.where, "cook surfaces (surface " + std::to_string(i + 1) +
-                                          ") are rendered by part 2 of the CGL port and are not "
-                                          "available yet");
     Surface s;
     s.model = rec.model;
     s.kr = rec.reflect;
@@ -497,6 +493,14 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
     s.umod = rec.umod;
     s.vmod = rec.vmod;
     s.number = static_cast<int>(i + 1);
+    if (rec.model == ShadingModel::Cook) {  // section 9.9 (CGL-D42 no longer refuses it)
+      s.m = rec.m;
+      s.fresnel = rec.fresnel;
+      if (s.fresnel.size() != static_cast<std::size_t>(kFresnelAngles))
+        throw io::InputError(rec.where, "fresnel colour-vectors",
+                             std::to_string(kFresnelAngles) + " colour-vectors",
+                             std::to_string(s.fresnel.size()));
+    }
     if (rec.textured) {
       if (rec.textureLast) {
         // Appendix 1 section 8: `last` is the previous textured surface's map.

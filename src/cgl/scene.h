@@ -55,6 +55,10 @@ struct Surface {
   int texture = -1;   // index into Scene::textures, -1 untextured
   double umod = 1, vmod = 1;
   int number = 0;  // 1-based, as in the file
+  // Cook (section 9.9): the rms facet slope m (ks is k_s, colour D_lambda)
+  // and the 66 Fresnel colour-vectors, 0 degrees first (src/cgl/cook.h).
+  double m = 0;
+  std::vector<Spectrum> fresnel;
 };
 
 struct Light {
@@ -98,9 +102,9 @@ struct BuildOptions {
 };
 
 // Preprocess. Throws io::InputError (located at the node, surface or light
-// line) for what the port cannot render: spline nodes and Cook surfaces
-// (part 2 of the port), a textured fractal whose texture frame fails
-// (section 5.3), degenerate polygons and cylinders, polygons
+// line) for what the port cannot render: spline nodes (part 2 of the
+// port), a textured fractal whose texture frame fails (section 5.3),
+// degenerate polygons and cylinders, polygons
 // other than triangles and rectangles, a missing texture (naming every place
 // looked).
 Scene buildScene(const SceneFile& file, const BuildOptions& options = {});

@@ -1,6 +1,9 @@
 #include "src/cgl/tracer.h"
 
 #include <cmath>
+#include <utility>
+
+#include "src/cgl/cook.h"
 
 namespace prime::cgl {
 
@@ -279,32 +282,48 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
           : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;
+  // Cook-Torrance treats the reflected and transmitted rays as lights
+  // (section 9.9), so it needs their directions even at the depth limit.
+  const bool cook = surface.model == ShadingModel::Cook;
+  Vec3 reflectDir{}, refractDir{};
+  bool hasReflect = false, hasRefract = false;
   // Figure 41 with CGL-E42: level >= depth stops the recursion; Shade still
   // adds k_r and k_t times the background.
   if (level >= settings_.depth) {
     if (probe) probe->rays[probeIndex].atDepthLimit = true;
+    if (cook) {  // CGL-Q107: the background arrives from these directions
+      if (surface.kr > 0.0) {
+        reflectDir = reflectDirection(ray.d, normal);
+        hasReflect = true;
+      }
+      if (surface.kt > 0.0) hasRefract = refractDirection(ray.d, normal, surface.index, refractDir);
+    }
   } else {
     if (surface.kr > 0.0) {
-      const Ray r{point, reflectDirection(ray.d, normal)};
+      reflectDir = reflectDirection(ray.d, normal);
+      hasReflect = true;
+      const Ray r{point, reflectDir};
       bool h = false;
       reflected = traceRay(r, level + 1, RayKind::Reflected, stats, probe, h);
     }
     if (surface.kt > 0.0) {
-      Vec3 dir{};
-      if (refractDirection(ray.d, normal, surface.index, dir)) {
+      if (refractDirection(ray.d, normal, surface.index, refractDir)) {
+        hasRefract = true;
         bool h = false;
-        refracted = traceRay({point, dir}, level + 1, RayKind::Transmitted, stats, probe, h);
+        refracted = traceRay({point, refractDir}, level + 1, RayKind::Transmitted, stats, probe, h);
       } else {
         ++stats.totalInternalReflections;  // CGL-Q45: the background stays
       }
     }
   }
-  return shade(ray, hit, point, normal, reflected, refracted, stats, probe, probeIndex);
+  return shade(ray, hit, point, normal, reflected, refracted, hasReflect ? &reflectDir : nullptr,
+               hasRefract ? &refractDir : nullptr, stats, probe, probeIndex);
 }
 
 Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const Vec3& normal,
-                       const Spectrum& reflected, const Spectrum& refracted, TraceStats& stats,
-                       ProbeReport* probe, std::size_t probeIndex) const {
+                       const Spectrum& reflected, const Spectrum& refracted, const Vec3* reflectDir,
+                       const Vec3* refractDir, TraceStats& stats, ProbeReport* probe,
+                       std::size_t probeIndex) const {
   const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
   const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
   ++stats.shadeCalls[static_cast<std::size_t>(surface.model)];
@@ -361,12 +380,49 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
     }
   }
 
-  // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8).
+  // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8); Cook
+  // (section 9.9) replaces k_r R + k_t T by Psi(R, D_reflect, k_r) +
+  // Psi(T, -D_refract, k_t): the rays as lights (CGL-Q107).
+  const bool cook = surface.model == ShadingModel::Cook;
   Spectrum z{};
   const double ambience = nv + 0.5;
+  const double kr = cook ? 0.0 : surface.kr, kt = cook ? 0.0 : surface.kt;
   for (int k = 0; k < kSpectrumSamples; ++k)
-    z[k] = ambience * scene_.ambient[k] * colour[k] + surface.kr * reflected[k] +
-           surface.kt * refracted[k];
+    z[k] = ambience * scene_.ambient[k] * colour[k] + kr * reflected[k] + kt * refracted[k];
+  // One Cook-Torrance Psi, with the probe's record of it.
+  const auto cookPsi = [&](const Spectrum& intensity, const Vec3& l, double dw, ProbeLight* pl) {
+    const CookTerms t = cookTerms(n, v, l, surface.m);
+    addPsi(z, intensity, dw, t, surface.ks, surface.kd, colour, surface.fresnel);
+    if (pl) {
+      pl->cook = true;
+      pl->d = t.d;
+      pl->g = t.g;
+      pl->s = t.s;
+      pl->dw = dw;
+      pl->fresnel = t.fresnel;
+      pl->diffuse = surface.kd * t.nl;
+      pl->specular = surface.ks * t.specular;
+    }
+  };
+  if (cook) {
+    const std::pair<const Vec3*, int> rays[2] = {{reflectDir, ProbeLight::kReflectedLight},
+                                                 {refractDir, ProbeLight::kTransmittedLight}};
+    for (const auto& [dir, which] : rays) {
+      const double dw = which == ProbeLight::kReflectedLight ? surface.kr : surface.kt;
+      if (!dir || !(dw > 0.0)) continue;  // CGL-Q107: k = 0 or no ray, no term
+      const Vec3 l = which == ProbeLight::kReflectedLight ? *dir : -*dir;
+      ProbeLight* pl = nullptr;
+      if (pr) {
+        pr->lights.push_back(ProbeLight{});
+        pl = &pr->lights.back();
+        pl->light = which;
+        pl->l = l;
+        pl->nl = dot(n, l);
+        if (!(pl->nl > 0.0)) pl->skipped = "N.L <= 0";
+      }
+      cookPsi(which == ProbeLight::kReflectedLight ? reflected : refracted, l, dw, pl);
+    }
+  }
 
   const int lights = static_cast<int>(scene_.lights.size());
   for (int li = 0; li < lights; ++li) {
@@ -406,6 +462,10 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
         }
         continue;
       }
+    }
+    if (cook) {
+      cookPsi(light.intensity, l, light.dw, pl);
+      continue;
     }
     const double diffuse = surface.kd * nl;
     double specular = 0.0;

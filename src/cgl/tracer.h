@@ -3,7 +3,8 @@
 // sections 8 and 9, Figure 41): the nearest hit over the object list (boxes
 // skipping their contents when missed), Whitted's reflected and refracted
 // rays up to the `depth` parameter, one shadow ray per light through opaque
-// objects only, and Lambert or Phong with the improved ambience term, all in
+// objects only, and Lambert, Phong or Cook-Torrance (src/cgl/cook.h) with the
+// improved ambience term, all in
 // 33-sample colour-vectors. A primary ray's colour-vector becomes RGB by
 // ToRGB (src/cgl/colour.h).
 //
@@ -54,13 +55,21 @@ struct TraceStats {
 // The probe's record of one ray (kind, level, origin, direction) and what it
 // met.
 struct ProbeLight {
-  int light = 0;        // 0-based
+  // 0-based; Cook-Torrance's extra "lights" (section 9.9): kReflectedLight
+  // (R, D_reflect, k_r) and kTransmittedLight (T, -D_refract, k_t).
+  static constexpr int kReflectedLight = -1, kTransmittedLight = -2;
+  int light = 0;
   Vec3 l{};             // the unit vector to the light
   double nl = 0;        // N.L
   std::string skipped;  // "" = used; else why ("N.L < 0", "shadowed")
   int shadowedBy = -1;  // object index of the first opaque object found in the way
   double diffuse = 0;   // k_d (N.L) (multiplies D I dw)
   double specular = 0;  // k_s (P.V)^e (multiplies I dw); Phong only
+  // Cook only (src/cgl/cook.h): Beckmann D, G, the Fresnel row, and
+  // S / F_lambda = D G / (pi (N.L)(N.V)); dw the solid angle used.
+  bool cook = false;
+  double d = 0, g = 0, s = 0, dw = 0;
+  int fresnel = 0;
 };
 struct ProbeRay {
   RayKind kind = RayKind::Primary;
@@ -125,9 +134,12 @@ class Tracer {
   bool intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
   Spectrum traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats, ProbeReport* probe,
                     bool& hitSomething) const;
+  // reflectDir / refractDir: the directions of the reflected and
+  // transmitted rays (nullptr: none), Cook's extra lights.
   Spectrum shade(const Ray& ray, const Hit& hit, const Vec3& point, const Vec3& normal,
-                 const Spectrum& reflected, const Spectrum& refracted, TraceStats& stats,
-                 ProbeReport* probe, std::size_t probeIndex) const;
+                 const Spectrum& reflected, const Spectrum& refracted, const Vec3* reflectDir,
+                 const Vec3* refractDir, TraceStats& stats, ProbeReport* probe,
+                 std::size_t probeIndex) const;
 
   const Scene& scene_;
   TraceSettings settings_;

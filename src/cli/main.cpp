@@ -190,6 +190,8 @@ int main(int argc, char** argv) {
   prime::cli::cgl::addExportPovCommand(app, action);
   prime::cli::cgl::addPictureCommands(app, action);
   prime::cli::cgl::addSplinesCommand(app, action);
+  prime::cli::cgl::addCookCommand(app, action);
+  prime::cli::cgl::addTovectorCommand(app, action);
   app.set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
                                         " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   try {

@@ -70,6 +70,43 @@ def spd(v):
     return ("%.1f" % v)
 
 
+# Cook-Torrance (section 9.9), as the package's `cook` utility and this port's
+# `prime cook` (src/cgl/cook.cpp) make a surface: from a normal reflectance R,
+# the effective index n = (1 + sqrt R)/(1 - sqrt R), k = 0, the unpolarised
+# Fresnel reflectance at 66 angles theta_j = j * 90/65 degrees (CGL-Q102), and
+# the normal-colour-vector D = R / pi (CGL-Q106).
+def fresnel(n, c):
+    if n == 1.0:
+        return 0.0
+    g = math.sqrt(n * n + c * c - 1.0)
+    a = (g - c) / (g + c)
+    b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0)
+    return 0.5 * a * a * (1.0 + b * b)
+
+
+def fresnel_table(reflectance):
+    n = [(1.0 + math.sqrt(r)) / (1.0 - math.sqrt(r)) for r in reflectance]
+    return [[fresnel(nk, math.cos(j * (math.pi / 2.0) / 65)) for nk in n] for j in range(66)]
+
+
+# The document's copper (Appendix 1 section 8): its first (and second) Fresnel
+# vector, which is pi times its printed normal-colour-vector at every
+# wavelength (CGL-Q106): the normal reflectance the table was made from.
+COPPER = [0.0700, 0.0760, 0.0820, 0.0880, 0.0950, 0.1060, 0.1170, 0.1280, 0.1400, 0.1560,
+          0.1720, 0.1890, 0.2050, 0.2200, 0.2350, 0.2500, 0.2650, 0.3000, 0.3350, 0.4120,
+          0.4900, 0.5520, 0.6150, 0.6420, 0.6700, 0.6830, 0.6970, 0.7110, 0.7250, 0.7320,
+          0.7400, 0.7480, 0.7550]
+# Gold's normal reflectance R = ((n - 1)^2 + k^2)/((n + 1)^2 + k^2) from the
+# optical constants of a 117 nm evaporated gold film at 380-700 nm every 10 nm
+# (D. I. Yakubovsky et al., "Optical constants and structural properties of
+# thin gold films", Optics Express 25, 25574-25587, 2017; as tabulated in the
+# public-domain refractiveindex.info database), rounded to 4 places.
+GOLD = [0.3914, 0.3950, 0.3972, 0.3982, 0.3984, 0.3979, 0.3967, 0.3942, 0.3921, 0.3922,
+        0.4004, 0.4307, 0.4977, 0.5894, 0.6830, 0.7498, 0.7997, 0.8368, 0.8653, 0.8873,
+        0.9045, 0.9175, 0.9289, 0.9380, 0.9455, 0.9519, 0.9573, 0.9618, 0.9657, 0.9689,
+        0.9715, 0.9734, 0.9749]
+
+
 class Scene:
     def __init__(self, title, about):
         self.title, self.about = title, about
@@ -111,6 +148,20 @@ class Scene:
         self.surfaces.append(["* surface %d: %s" % (n, comment),
                               "%d %s textured %s %s %s" % (n, model, reflect, refract, index),
                               coefficients, "%s %s %s" % (texture, umod, vmod)])
+        return n
+
+    def cook(self, comment, reflectance, diffuse, specular, m, reflect=0.0, refract=0.0,
+             index=0.0):
+        """A cook surface as `prime cook` writes it (the numbers "%.4f")."""
+        n = len(self.surfaces) + 1
+        self.surfaces.append(["* surface %d: %s" % (n, comment),
+                              "%d cook normal %s %s %s" % (n, reflect, refract, index),
+                              "%s" % diffuse, "* normal reflectance vs wavelength (R / pi)"] +
+                             vector([r / math.pi for r in reflectance]) +
+                             ["%s %s" % (specular, m),
+                              "* fresnel reflectance vs wavelength & angle (66 angles, "
+                              "j * 90/65 degrees, j = 0..65)"] +
+                             sum((vector(row) for row in fresnel_table(reflectance)), []))
         return n
 
     def ambient(self, ka, colour=D6500):
@@ -214,22 +265,63 @@ def ball():
 def illumination():
     s = Scene("the illumination models and the ambience function (Figure 46)",
               ["Figure 46: 'The three illumination models supported, and our ambience",
-               "function' (9:04 minutes). Left to right: Lambert, Phong, and a sphere lit by",
-               "the ambience term alone, k_a((N.V) + 0.5) I_a pi D (section 9.6; its k_d is 0",
-               "and no light reaches it). The Cook-Torrance sphere of the figure is added by",
-               "part 2 of the port (Cook-Torrance is not rendered yet). All three spheres",
-               "share the document's 'flat blue' colour-vector (Appendix 1 section 8)."])
+               "function' (9:04 minutes). Left to right: Lambert, Phong, Cook-Torrance, and a",
+               "sphere lit by the ambience term alone, k_a((N.V) + 0.5) I_a pi D (section 9.6;",
+               "its k_d is 0 and no light reaches it). All four share the document's 'flat",
+               "blue' colour-vector (Appendix 1 section 8); the Cook-Torrance sphere's Fresnel",
+               "table is made, as the package's cook utility made one, from the normal",
+               "reflectance pi times flat blue (k_d 1.0, k_s 1.0, m 0.3: the document's",
+               "copper's k_s and m)."])
     for p in ["ylow 150", "yhigh 362", "aalevel 2"]:
         s.param(p)
     s.lambert("flat blue, Lambert (the document's example)", FLAT_BLUE, 7.0)
     s.phong("flat blue, Phong", FLAT_BLUE, 7.0, 3.0, 25.0)
     s.lambert("flat blue, ambience only (diffuse 0)", FLAT_BLUE, 0.0)
+    s.cook("flat blue, Cook-Torrance", [math.pi * d for d in FLAT_BLUE], 1.0, 1.0, 0.3)
     s.ambient(0.001)
     s.light("infinity", 1.0, 1.0, 1.0, 0.0006)
     # World +x is on the viewer's left (left-handed, z out of the screen).
-    s.node("sphere 00 02 1 0.65 0.0 0.0 0.28 x y", "Lambert, on the left")
-    s.node("sphere 00 03 2 0.0 0.0 0.0 0.28 x y", "Phong, in the middle")
-    s.node("sphere 00 00 3 -0.65 0.0 0.0 0.28 x y", "ambience only, on the right")
+    s.node("sphere 00 02 1 0.9 0.0 0.0 0.26 x y", "Lambert, on the left")
+    s.node("sphere 00 03 2 0.3 0.0 0.0 0.26 x y", "Phong")
+    s.node("sphere 00 04 4 -0.3 0.0 0.0 0.26 x y", "Cook-Torrance")
+    s.node("sphere 00 00 3 -0.9 0.0 0.0 0.26 x y", "ambience only, on the right")
+    return s
+
+
+def metals():
+    s = Scene("Cook-Torrance metals beside Phong and Lambert, on a floor they reflect",
+              ["Section 9.9: 'although the Cook-Torrance model accurately predicts the surface",
+               "shading of metal, ... true metallic appearance comes as much from the coherence",
+               "of reflections as from the shading' (Figure 54). Back row, left to right: a",
+               "Lambert and a Phong sphere in the copper's colour, and Cook-Torrance copper",
+               "that reflects nothing; front row: Cook-Torrance copper and gold, reflect 0.8.",
+               "The copper is Appendix 1 section 8's (specular 1.0, m 0.3, reflect 0.8, diffuse",
+               "0.0) with all 66 Fresnel vectors made from the normal reflectance its printed",
+               "first vector gives (the document prints only 2 of the 66; CGL-Q106). The gold's",
+               "normal reflectance comes from measured optical constants (tools/cgl/scenes.py",
+               "names them). The floor is the port's green/blue checkerboard texture."])
+    for p in ["depth 3", "shadows", "ylow 96", "yhigh 416", "aalevel 2"]:
+        s.param(p)
+    s.view("eye 0.0 0.9 3.5")
+    s.view("sight towards 0.0 -0.1 0.0")
+    for v in [(-2, -0.35, -2), (-2, -0.35, 2), (2, -0.35, 2), (2, -0.35, -2)]:
+        s.vertex(*v)
+    s.textured("the floor: the checkerboard texture, 2 x 2 repeats", "lambert",
+               "textures/checkerboard.rle", 2.0, 2.0)
+    s.lambert("copper-coloured Lambert", COPPER, 3.0)
+    s.phong("copper-coloured Phong", COPPER, 3.0, 3.0, 25.0)
+    s.cook("Cook-Torrance copper, reflecting nothing", COPPER, 0.0, 1.0, 0.3)
+    s.cook("reflective copper (Appendix 1 section 8)", COPPER, 0.0, 1.0, 0.3, reflect=0.8)
+    s.cook("reflective gold", GOLD, 0.0, 1.0, 0.3, reflect=0.8)
+    s.ambient(0.0005)
+    s.light("infinity", 0.6, 1.0, 0.6, 0.0006)
+    # World +x is on the viewer's left.
+    s.node("polygon 00 02 1 4 4 3 2 1", "the floor, y = -0.35")
+    s.node("sphere 00 03 2 0.8 0.0 -0.6 0.35 x y", "back left: Lambert")
+    s.node("sphere 00 04 3 0.0 0.0 -0.6 0.35 x y", "back middle: Phong")
+    s.node("sphere 00 05 4 -0.8 0.0 -0.6 0.35 x y", "back right: Cook-Torrance, no reflection")
+    s.node("sphere 00 06 5 0.42 0.0 0.35 0.35 x y", "front left: reflective copper")
+    s.node("sphere 00 00 6 -0.42 0.0 0.35 0.35 x y", "front right: reflective gold")
     return s
 
 
@@ -588,6 +680,7 @@ SCENES = {
     "checkerboard.cgl": checkerboard,
     "ball.cgl": ball,
     "illumination-models.cgl": illumination,
+    "metals.cgl": metals,
     "nine-cubes.cgl": lambda: nine_cubes(False),
     "nine-cubes-boxed.cgl": lambda: nine_cubes(True),
     "primitives.cgl": primitives,

@@ -2,8 +2,9 @@
 // of a CGL scene (a pixel's integer corner, as the build without
 // anti-aliasing traced it; fractions reach the sub-pixel corners of Figure
 // 44), and everything it did: every ray it spawned, what each hit, the
-// texture indices, each light's terms and why a light was skipped, the
-// colour-vector, XYZ and the RGB ToRGB made of it.
+// texture indices, each light's terms (Cook-Torrance: D, G, the
+// Fresnel row and S, and the reflected and transmitted rays as lights) and why a light was skipped,
+// the colour-vector, XYZ and the RGB ToRGB made of it.
 #include <cstdio>
 #include <iostream>
 
@@ -69,14 +70,24 @@ void printReport(const prime::cgl::ProbeReport& r, const prime::cgl::Scene& scen
       std::printf("%s  at the depth limit: reflected and refracted colours are the background\n",
                   indent.c_str());
     for (const auto& l : ray.lights) {
-      std::printf("%s  light %d: L (%.6g, %.6g, %.6g), N.L %.6g", indent.c_str(), l.light + 1,
-                  l.l[0], l.l[1], l.l[2], l.nl);
+      if (l.light == prime::cgl::ProbeLight::kReflectedLight)
+        std::printf("%s  reflected ray as a light (R, dw = k_r %.6g)", indent.c_str(), l.dw);
+      else if (l.light == prime::cgl::ProbeLight::kTransmittedLight)
+        std::printf("%s  transmitted ray as a light (T, dw = k_t %.6g)", indent.c_str(), l.dw);
+      else
+        std::printf("%s  light %d", indent.c_str(), l.light + 1);
+      std::printf(": L (%.6g, %.6g, %.6g), N.L %.6g", l.l[0], l.l[1], l.l[2], l.nl);
       if (!l.skipped.empty()) {
         std::printf(", skipped: %s", l.skipped.c_str());
         if (l.shadowedBy >= 0)
           std::printf(" by object %d (scene node %d)", l.shadowedBy,
                       scene.objects[static_cast<std::size_t>(l.shadowedBy)].node);
         std::printf("\n");
+      } else if (l.cook) {
+        std::printf(
+            ", Cook-Torrance: D %.6g, G %.6g, Fresnel row %d, S/F = DG/(pi(N.L)(N.V)) %.6g, "
+            "diffuse k_d(N.L) %.6g, specular k_s(N.L)S/F %.6g\n",
+            l.d, l.g, l.fresnel, l.s, l.diffuse, l.specular);
       } else {
         std::printf(", diffuse k_d(N.L) %.6g, specular k_s(P.V)^e %.6g\n", l.diffuse, l.specular);
       }

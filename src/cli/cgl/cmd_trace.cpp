@@ -78,7 +78,7 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
   std::printf(
       "rays: %llu (primary %llu, shadow %llu, reflected %llu, refracted %llu), %.0f rays/s; "
       "tests: sphere %llu, cylinder %llu, polygon %llu, super box %llu; shade calls: Lambert "
-      "%llu, Phong %llu%s\n",
+      "%llu, Phong %llu, Cook-Torrance %llu%s\n",
       static_cast<unsigned long long>(s.rays.rays()),
       static_cast<unsigned long long>(s.rays.primaryRays),
       static_cast<unsigned long long>(s.rays.shadowRays),
@@ -88,7 +88,8 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
       static_cast<unsigned long long>(s.tests[0]), static_cast<unsigned long long>(s.tests[1]),
       static_cast<unsigned long long>(s.tests[2]), static_cast<unsigned long long>(s.boxTests),
       static_cast<unsigned long long>(s.shadeCalls[0]),
-      static_cast<unsigned long long>(s.shadeCalls[1]), fractalSummary(s).c_str());
+      static_cast<unsigned long long>(s.shadeCalls[1]),
+      static_cast<unsigned long long>(s.shadeCalls[2]), fractalSummary(s).c_str());
   if (s.spline.calls > 0)  // B-spline surfaces (section 6, Table 6)
     std::printf(
         "splines: %llu intersections, %llu boxes checked, %llu Newton calls, %.2f "

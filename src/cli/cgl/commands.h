@@ -26,6 +26,10 @@ void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
 void addPictureCommands(CLI::App& app, Action& action);   // cmd_picture.cpp: export, view
 void addSplinesCommand(CLI::App& app, Action& action);    // cmd_splines.cpp: Tables 3 and 6
+// The package's utilities (Appendix 1 section 9): `prime cook OUT` and
+// `prime tovector R G B`.
+void addCookCommand(CLI::App& app, Action& action);      // cmd_cook.cpp
+void addTovectorCommand(CLI::App& app, Action& action);  // cmd_tovector.cpp
 
 // The package's own call statement (Appendix 2: `trace -yh 511 -d 3 -s -a 2
 // scene`): its one-dash flags rewritten as this port's long options, so a

@@ -9,7 +9,10 @@ Waterloo CS-85-35, 1985: the camera of Appendix 1 section 6 (screen-right =
 up x sight, the ray through the pixel's integer corner, normalised), the
 sphere of section 2.2, the shading of section 9 (the normal turned to the
 viewer; the ambience k_a((N.V) + 0.5) I_a pi D; Lambert k_d (N.L) D I dw;
-Phong + k_s (P.V)^e I dw with P = 2N - L/(N.L), normalised), the colour of
+Phong + k_s (P.V)^e I dw with P = 2N - L/(N.L), normalised; Cook-Torrance
+(section 9.9) I dw (N.L) (k_s S + k_d D), S = (F/pi) D_m G/((N.L)(N.V)) with
+the Beckmann D_m, G, and F the scene's Fresnel row int(arccos(V.H) * 130/pi),
+the port's reading CGL-Q101), the colour of
 section 9.1 (X = 1360 sum c x-bar, ..., RGB = (1/15) M^-1 XYZ with the
 Electrohome ECM 1301 matrix, clipped to 0..255 and truncated).
 
@@ -118,6 +121,9 @@ def read_scene(path):
         s = {"model": f[1], "kr": float(f[3]), "kt": float(f[4]), "kd": k[0],
              "ks": k[1] if f[1] == "phong" else 0.0, "e": k[2] if f[1] == "phong" else 0.0}
         s["D"] = vector()
+        if f[1] == "cook":  # specular m, then 66 Fresnel vectors, 0 degrees first
+            s["ks"], s["m"] = numbers(next(it))
+            s["F"] = [vector() for _ in range(66)]
         scene["surfaces"].append(s)
     ka = float(next(it).split()[0])
     scene["ambient"] = [ka * math.pi * x for x in vector()]  # k_a pi I_a, section 9.6
@@ -166,6 +172,17 @@ def pixel(scene, x, y):
         nl = dot(n, l)
         if nl < 0:
             continue
+        if sf["model"] == "cook":
+            h = norm(add(v, l))
+            nh, vh = dot(n, h), dot(v, h)
+            m = sf["m"]
+            beckmann = math.exp(-(math.tan(math.acos(nh)) / m) ** 2) / (m * m * nh ** 4)
+            g = min(1, 2 * nh * nv / vh, 2 * nh * nl / vh)
+            row = min(65, int(math.acos(vh) * 130 / math.pi))
+            for i in range(33):
+                s_lambda = sf["F"][row][i] / math.pi * beckmann * g / (nl * nv)
+                z[i] += intensity[i] * nl * dw * (sf["ks"] * s_lambda + sf["kd"] * sf["D"][i])
+            continue
         for i in range(33):
             z[i] += sf["kd"] * nl * sf["D"][i] * intensity[i] * dw
         if sf["model"] == "phong":
@@ -178,8 +195,10 @@ def pixel(scene, x, y):
 
 CHECKS = [  # scene, x, y (pixel corners; the probe traces what aalevel 0 traces)
     ("ball", 256, 256), ("ball", 230, 290), ("ball", 290, 230), ("ball", 225, 285), ("ball", 300, 256),
-    ("illumination-models", 340, 256), ("illumination-models", 256, 270),
-    ("illumination-models", 120, 270), ("illumination-models", 180, 240),
+    ("illumination-models", 91, 256), ("illumination-models", 190, 270),
+    ("illumination-models", 300, 270), ("illumination-models", 330, 240),
+    ("illumination-models", 296, 272), ("illumination-models", 421, 256),
+    ("illumination-models", 440, 280),
 ]
 
 
