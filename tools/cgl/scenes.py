@@ -676,6 +676,71 @@ def spline_mask():
     return s
 
 
+# Stainless steel seen at normal incidence: about 0.55, a little higher in the red (iron's
+# n = 2.9, k = 3.0 at 550 nm give ((n-1)^2 + k^2)/((n+1)^2 + k^2) = 0.52; the port's smooth
+# ramp from 0.50 at 380 nm to 0.60 at 700 nm, for the gallery's steel).
+STEEL = [0.50 + 0.10 * i / 32.0 for i in range(33)]
+
+
+def gallery():
+    s = Scene("a gallery room in the spirit of Figure 54",
+              ["Figure 54: 'View of a gallery room with a spline mask. The mask is rendered in",
+               "copper, and the sphere and cylinder are stainless steel. The copper and steel",
+               "were achieved using the Cook-Torrance illumination model. The sphere and mask",
+               "reflect each other' (about 35 hours on the VAX). The room, the mask and the",
+               "pictures are lost: this is the port's own room. A copper B-spline mask (the",
+               "port's 21 x 21 height field, divisions 2, overlap 0.55) hangs on the left; a",
+               "steel sphere and a steel cylinder stand on the right, and they and the mask",
+               "reflect each other (depth 3); a picture (the port's rings texture) hangs on the",
+               "back wall, on a checkerboard floor. The copper is Appendix 1 section 8's, the",
+               "steel a smooth normal reflectance of about 0.55 (tools/cgl/scenes.py)."])
+    for p in ["depth 3", "shadows", "aalevel 2"]:
+        s.param(p)
+    s.view("eye 0.0 0.15 3.2")
+    s.view("sight towards 0.0 -0.05 0.0")
+    floor = [s.vertex(x, -0.5, z) for x, z in [(-1.6, -1.3), (-1.6, 2.0), (1.6, 2.0), (1.6, -1.3)]]
+    wall = [s.vertex(*v) for v in [(-1.6, -0.5, -1.3), (-1.6, 1.3, -1.3), (1.6, 1.3, -1.3),
+                                   (1.6, -0.5, -1.3)]]
+    picture = [s.vertex(*v) for v in [(-0.45, 0.1, -1.29), (-0.45, 0.75, -1.29),
+                                      (0.45, 0.75, -1.29), (0.45, 0.1, -1.29)]]
+    cyl = [s.vertex(-0.15, -0.5, -0.55), s.vertex(-0.15, 0.55, -0.55)]
+    s.textured("the floor: the checkerboard, 3 x 3", "lambert", "textures/checkerboard.rle", 3.0,
+               3.0, 5.0)
+    s.lambert("the walls: pale", PALE, 4.0)
+    s.textured("the picture: the port's rings", "lambert", "textures/rings.rle", 1.0, 1.0, 6.0)
+    s.cook("the mask: reflective copper (Appendix 1 section 8)", COPPER, 0.0, 1.0, 0.3,
+           reflect=0.8)
+    s.cook("stainless steel", STEEL, 0.0, 1.0, 0.2, reflect=0.7)
+    s.ambient(0.0006)
+    s.light("infinity", 0.4, 1.0, 0.9, 0.0005)
+    s.light("inscene", -0.2, 1.1, 1.2, 0.0003, comment="a lamp above the viewer")
+    s.node("polygon 00 02 1 4 %d %d %d %d" % tuple(floor), "the floor")
+    s.node("polygon 00 03 2 4 %d %d %d %d" % tuple(wall), "the back wall")
+    s.node("polygon 00 04 3 4 %d %d %d %d" % tuple(picture), "the picture on it")
+    s.node("sphere 00 05 5 -0.55 -0.22 0.25 0.28 x y", "the steel sphere, right front")
+    s.node("cylinder 00 06 5 0.13 %d %d" % tuple(cyl), "the steel cylinder, right back")
+    s.node("translate 07 00 0.55 0.12 -0.25", "the mask, left (world +x is on the left)")
+    s.node("rotate 08 00 y -25.0", "turned towards the sphere")
+    s.node("scale 09 00 0.42 0.52 0.42")
+
+    def height(x, y):
+        face = max(0.0, 1.0 - (x / 0.8) ** 2 - (y / 1.0) ** 2)
+        z = 0.45 * math.sqrt(face)
+        z += 0.18 * math.exp(-((x / 0.12) ** 2) - ((y + 0.05) / 0.3) ** 2)  # nose
+        for ex in (-0.3, 0.3):
+            z -= 0.12 * math.exp(-(((x - ex) / 0.16) ** 2) - ((y - 0.25) / 0.11) ** 2)  # eyes
+        z -= 0.08 * math.exp(-((x / 0.3) ** 2) - ((y + 0.5) / 0.08) ** 2)  # mouth
+        return z
+
+    controls = []
+    for j in range(21):
+        y = 1.0 - 2.0 * j / 20.0
+        controls.append([(-1.0 + 2.0 * i / 20.0, y, height(-1.0 + 2.0 * i / 20.0, y))
+                         for i in range(21)])
+    s.spline(4, 21, "triple", 21, "triple", 2, 0.55, controls, comment="the copper mask")
+    return s
+
+
 SCENES = {
     "checkerboard.cgl": checkerboard,
     "ball.cgl": ball,
@@ -701,6 +766,7 @@ SCENES = {
     "spline-donut.cgl": spline_donut,
     "spline-vases.cgl": spline_vases,
     "spline-mask.cgl": spline_mask,
+    "gallery.cgl": gallery,
 }
 
 
