@@ -156,8 +156,9 @@ for label, ms, key in (("shade ray (lamberts law)", 2.99, "lambert"), ("shade ra
                        ("shade ray (cook-torrance)", 3.81, "cook")):
     t = ns["cgl/trace_shade/" + key]
     out.append("| %s | %.2f | trace %s - intersect %s = %s | | | **%.0f** |" % (label, ms, cell(t), cell(i), cell(t - i), ms * 1e6 / (t - i)))
-for label, ms in (("intersect fractal (6 subdivisions)", 12.43), ("intersect spline (bump)", 83.85)):
-    out.append("| %s | %.2f | part 2 of the port | | | |" % (label, ms))
+for label, ms, where in (("intersect fractal (6 subdivisions)", 12.43, "rendering.md, Fractal surfaces"),
+                         ("intersect spline (bump)", 83.85, "splines.md, Table 6")):
+    out.append("| %s | %.2f | not in prime_micro: per call from `prime trace`'s counts in %s | | | |" % (label, ms, where))
 print("\n".join(out))
 PYEOF
 )
