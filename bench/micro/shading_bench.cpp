@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "palette/prime/color_num.h"
-#include "src/prime/geom/uv_mapping_1991.h"
 #include "src/math/vec.h"
+#include "src/prime/geom/uv_mapping_1991.h"
 #include "src/prime/render/hall_1991.h"
 
 namespace {

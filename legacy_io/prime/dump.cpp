@@ -88,7 +88,8 @@ static std::string dumpObj(const std::string& path) {
   const Hue& h = f.header.hue;
   os << path << ": object file, " << f.header.numEntries << " entr"
      << (f.header.numEntries == 1 ? "y" : "ies") << ", bounding volume "
-     << (f.header.boundVol == -1 ? std::string("none") : "prim " + std::to_string(f.header.boundVol))
+     << (f.header.boundVol == -1 ? std::string("none")
+                                 : "prim " + std::to_string(f.header.boundVol))
      << "\n";
   os << "hue: kDR " << num(h.kDR) << "  kDT " << num(h.kDT) << "  fDR " << num(h.fDR[0]) << " "
      << num(h.fDR[1]) << " " << num(h.fDR[2]) << "  tT " << num(h.tT) << "  kRH " << num(h.kRH)
@@ -126,8 +127,10 @@ static std::string dumpObj(const std::string& path) {
     }
     stack.pop_back();
     // Indentation shows the depth; past 32 levels the depth is written instead.
-    if (depth <= 32) os << std::string(2 + 2 * depth, ' ');
-    else os << std::string(2 + 2 * 32, ' ') << "(depth " << depth << ") ";
+    if (depth <= 32)
+      os << std::string(2 + 2 * depth, ' ');
+    else
+      os << std::string(2 + 2 * 32, ' ') << "(depth " << depth << ") ";
     if (i < 0 || i >= n) {
       os << "<entry " << i << " out of range>\n";
       continue;
@@ -142,7 +145,10 @@ static std::string dumpObj(const std::string& path) {
       os << "<cycle back to entry " << i << ">\n";
       continue;
     }
-    const char* name = op == '+' ? "union" : op == '-' ? "difference" : op == '&' ? "intersection" : nullptr;
+    const char* name = op == '+'   ? "union"
+                       : op == '-' ? "difference"
+                       : op == '&' ? "intersection"
+                                   : nullptr;
     if (!name) {
       os << "'" << opcodeText(e) << "' (not an operator) l " << e.l << " r " << e.r << "\n";
       continue;
@@ -176,7 +182,8 @@ static std::string dumpMap(const std::string& path, int maxRows) {
   os << "range: " << num(*lo) << " .. " << num(*hi) << "\n";
   for (int v = 0; v < std::min<int>(f.header.vScale, maxRows); ++v) {
     os << "  v " << v << ":";
-    for (int u = 0; u < std::min<int>(f.header.uScale, 16); ++u) os << " " << num(f.texels[u + f.header.uScale * v]);
+    for (int u = 0; u < std::min<int>(f.header.uScale, 16); ++u)
+      os << " " << num(f.texels[u + f.header.uScale * v]);
     if (f.header.uScale > 16) os << " ...";
     os << "\n";
   }
@@ -188,10 +195,13 @@ static std::string dumpGraph(const std::string& path, int maxRows) {
   const GraphFile f = readGraphFile(path);
   std::ostringstream os;
   os << path << ": graph file, graphType " << f.graphType
-     << (f.graphType == 1 ? " (IBM8514HI)" : f.graphType == 0 ? " (VGA/DETECT)" : "") << ", header "
-     << f.numPixAcross << " x " << f.numPixDown << ", " << f.width() << " x " << f.height()
-     << " pixels stored"
-     << (f.inclusive ? " (the listing's inclusive loops: one more each way than the header)" : " (exact)")
+     << (f.graphType == 1   ? " (IBM8514HI)"
+         : f.graphType == 0 ? " (VGA/DETECT)"
+                            : "")
+     << ", header " << f.numPixAcross << " x " << f.numPixDown << ", " << f.width() << " x "
+     << f.height() << " pixels stored"
+     << (f.inclusive ? " (the listing's inclusive loops: one more each way than the header)"
+                     : " (exact)")
      << "\n";
   std::map<int, long> histogram;
   for (auto p : f.pixels) ++histogram[p];
@@ -214,11 +224,16 @@ static std::string dumpGraph(const std::string& path, int maxRows) {
 
 std::string dumpDatabase(const std::string& path, DatabaseKind kind, int maxRows) {
   switch (kind) {
-    case DatabaseKind::PrimFile: return dumpPrims(path);
-    case DatabaseKind::ObjFile: return dumpObj(path);
-    case DatabaseKind::ObjList: return dumpList(path);
-    case DatabaseKind::MapFile: return dumpMap(path, maxRows);
-    case DatabaseKind::GraphFile: return dumpGraph(path, maxRows);
+    case DatabaseKind::PrimFile:
+      return dumpPrims(path);
+    case DatabaseKind::ObjFile:
+      return dumpObj(path);
+    case DatabaseKind::ObjList:
+      return dumpList(path);
+    case DatabaseKind::MapFile:
+      return dumpMap(path, maxRows);
+    case DatabaseKind::GraphFile:
+      return dumpGraph(path, maxRows);
   }
   return {};
 }

@@ -14,7 +14,7 @@
 namespace prime::io {
 
 struct GraphFile {
-  std::int16_t graphType = 1;  // 0 = VGA (DETECT), 1 = IBM8514HI
+  std::int16_t graphType = 1;                     // 0 = VGA (DETECT), 1 = IBM8514HI
   std::int16_t numPixAcross = 0, numPixDown = 0;  // header values, as written
   bool inclusive = true;                          // pixel grid is (across+1) x (down+1)
   std::vector<std::int16_t> pixels;               // raw 16-bit values (Q12: not masked)
@@ -38,7 +38,8 @@ struct GraphFilePrefix {
   std::size_t pixelsPresent = 0;  // how many the file holds
   bool complete() const { return pixelsPresent == graph.pixels.size(); }
 };
-GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes, const std::string& name);
+GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes,
+                                         const std::string& name);
 GraphFilePrefix readGraphFilePrefix(const std::string& path);
 void writeGraphFile(const std::string& path, const GraphFile& f);
 

@@ -27,9 +27,13 @@ MapFile mapFileFromBytes(std::span<const std::uint8_t> bytes, const std::string&
   return f;
 }
 
-MapFile readMapFile(const std::string& path) { return mapFileFromBytes(readFileBytes(path), path); }
+MapFile readMapFile(const std::string& path) {
+  return mapFileFromBytes(readFileBytes(path), path);
+}
 
-void writeMapFile(const std::string& path, const MapFile& f) { writeFileAtomically(path, toBytes(f)); }
+void writeMapFile(const std::string& path, const MapFile& f) {
+  writeFileAtomically(path, toBytes(f));
+}
 
 std::string mapFileName(int mapNum, int channel) {
   static const char kChannel[3] = {'R', 'G', 'B'};

@@ -27,8 +27,12 @@ ObjFile objFileFromBytes(std::span<const std::uint8_t> bytes, const std::string&
   return f;
 }
 
-ObjFile readObjFile(const std::string& path) { return objFileFromBytes(readFileBytes(path), path); }
+ObjFile readObjFile(const std::string& path) {
+  return objFileFromBytes(readFileBytes(path), path);
+}
 
-void writeObjFile(const std::string& path, const ObjFile& f) { writeFileAtomically(path, toBytes(f)); }
+void writeObjFile(const std::string& path, const ObjFile& f) {
+  writeFileAtomically(path, toBytes(f));
+}
 
 }  // namespace prime::io

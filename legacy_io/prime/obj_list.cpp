@@ -19,8 +19,12 @@ ObjList objListFromBytes(std::span<const std::uint8_t> bytes, const std::string&
   return f;
 }
 
-ObjList readObjList(const std::string& path) { return objListFromBytes(readFileBytes(path), path); }
+ObjList readObjList(const std::string& path) {
+  return objListFromBytes(readFileBytes(path), path);
+}
 
-void writeObjList(const std::string& path, const ObjList& f) { writeFileAtomically(path, toBytes(f)); }
+void writeObjList(const std::string& path, const ObjList& f) {
+  writeFileAtomically(path, toBytes(f));
+}
 
 }  // namespace prime::io

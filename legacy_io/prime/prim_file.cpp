@@ -44,8 +44,12 @@ PrimFile primFileFromBytes(std::span<const std::uint8_t> bytes, const std::strin
   return f;
 }
 
-PrimFile readPrimFile(const std::string& path) { return primFileFromBytes(readFileBytes(path), path); }
+PrimFile readPrimFile(const std::string& path) {
+  return primFileFromBytes(readFileBytes(path), path);
+}
 
-void writePrimFile(const std::string& path, const PrimFile& f) { writeFileAtomically(path, toBytes(f)); }
+void writePrimFile(const std::string& path, const PrimFile& f) {
+  writeFileAtomically(path, toBytes(f));
+}
 
 }  // namespace prime::io

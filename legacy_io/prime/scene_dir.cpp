@@ -20,7 +20,9 @@ bool isPlainFileName(const std::string& name) {
 std::string SceneDir::display(const fs::path& p) const {
   // Lexical only: a symbolic link is shown by its own name, not its target.
   const fs::path rel = p.lexically_relative(root_);
-  return (rel.empty() || *rel.begin() == ".." ? p : root_ / rel).lexically_normal().generic_string();
+  return (rel.empty() || *rel.begin() == ".." ? p : root_ / rel)
+      .lexically_normal()
+      .generic_string();
 }
 
 fs::path SceneDir::file(const std::string& sub, const std::string& name,
@@ -33,9 +35,10 @@ fs::path SceneDir::file(const std::string& sub, const std::string& name,
   // Longer names make every file system call fail (ENAMETOOLONG), which
   // std::filesystem reports as an exception of its own, not as bad input.
   if (name.size() > kMaxFileName)
-    throw InputError({origin, std::nullopt, std::nullopt}, "file name",
-                     "at most " + std::to_string(kMaxFileName) + " bytes (the file system's NAME_MAX)",
-                     std::to_string(name.size()) + " bytes (\"" + name.substr(0, 40) + "...\")");
+    throw InputError(
+        {origin, std::nullopt, std::nullopt}, "file name",
+        "at most " + std::to_string(kMaxFileName) + " bytes (the file system's NAME_MAX)",
+        std::to_string(name.size()) + " bytes (\"" + name.substr(0, 40) + "...\")");
   return root_ / sub / name;
 }
 
@@ -50,7 +53,8 @@ fs::path SceneDir::existingInput(const std::string& sub, const std::string& name
     if (fs::is_symlink(fs::symlink_status(q)))
       throw InputError({display(q), std::nullopt, std::nullopt},
                        "is a symbolic link; scene files must be real files inside the scene "
-                       "directory (named by " + origin + ")");
+                       "directory (named by " +
+                           origin + ")");
   }
   if (!fs::exists(p))
     throw InputError({display(p), std::nullopt, std::nullopt},

@@ -10,9 +10,13 @@ namespace prime::io {
 bool isPrimTypeLetter(char c) {
   return primType(c).has_value();
 }
-bool isLeafOpcode(char c) { return c && std::strchr("CBSNTY", c) != nullptr; }
+bool isLeafOpcode(char c) {
+  return c && std::strchr("CBSNTY", c) != nullptr;
+}
 
-static std::string quoted(char c) { return std::string("'") + c + "'"; }
+static std::string quoted(char c) {
+  return std::string("'") + c + "'";
+}
 
 static Vec3 vec3(TextReader& in, const char* what) {
   const std::string f(what);
@@ -83,12 +87,13 @@ static void checkTree(TextReader& in, const std::vector<CsgEntryText>& entries) 
     if (e.op != '+' && e.op != '-' && e.op != '&') continue;
     for (int child : {e.l, e.r})
       if (child < 0 || child >= n)
-        throw InputError({in.name(), e.line, std::nullopt}, std::string("child index of '") + e.op + "'",
+        throw InputError({in.name(), e.line, std::nullopt},
+                         std::string("child index of '") + e.op + "'",
                          "an entry number 0.." + std::to_string(n - 1), std::to_string(child));
   }
   // Depth first from the root with an explicit stack: a chain of 32767
   // entries is a legal file and must not overflow the call stack.
-  std::vector<int> state(n, 0);  // 0 unvisited, 1 on path, 2 done
+  std::vector<int> state(n, 0);           // 0 unvisited, 1 on path, 2 done
   std::vector<std::pair<int, int>> path;  // entry, how many children followed
   if (n > 0) {
     state[0] = 1;
@@ -127,10 +132,10 @@ ObjText parseObjText(TextReader& in) {
     if (word.size() != 1) {
       const bool glued = word.size() > 1 && isLeafOpcode(word[0]);
       in.fail(field, "one of + - & C B S N T Y O as a word of its own",
-              "\"" + word + "\"" + (glued ? " (write the letter and the number apart, e.g. \"" +
-                                                std::string(1, word[0]) + " " + word.substr(1) +
-                                                "\"; errata K35)"
-                                          : ""));
+              "\"" + word + "\"" +
+                  (glued ? " (write the letter and the number apart, e.g. \"" +
+                               std::string(1, word[0]) + " " + word.substr(1) + "\"; errata K35)"
+                         : ""));
     }
     e.op = word[0];
     const std::string num = "entry " + std::to_string(i) + " ";
@@ -209,10 +214,11 @@ std::vector<ModelCall> parseModelText(const std::string& text, const std::string
     const char* name;
     std::size_t args;
     const char* usage;
-  } kCalls[] = {{"AddObj", 1, "AddObj <object text file, e.g. d1.txt>"},
-                {"AddToObjList", 1, "AddToObjList <object number>"},
-                {"CopyObj", 3, "CopyObj <source object file> <destination object file> <copy file>"},
-                {"AddMap", 1, "AddMap <map text file>"}};
+  } kCalls[] = {
+      {"AddObj", 1, "AddObj <object text file, e.g. d1.txt>"},
+      {"AddToObjList", 1, "AddToObjList <object number>"},
+      {"CopyObj", 3, "CopyObj <source object file> <destination object file> <copy file>"},
+      {"AddMap", 1, "AddMap <map text file>"}};
   std::vector<ModelCall> calls;
   std::istringstream lines(text);
   std::string raw;

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "legacy_io/prime/records.h"
 #include "legacy_io/common/text_reader.h"
+#include "legacy_io/prime/records.h"
 #include "src/math/vec.h"
 
 namespace prime::io {

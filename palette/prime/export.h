@@ -14,9 +14,9 @@
 #include <string_view>
 
 #include "legacy_io/prime/graph_file.h"
+#include "palette/png_image.h"
 #include "palette/prime/color_num.h"
 #include "palette/prime/dac.h"
-#include "palette/png_image.h"
 #include "palette/prime/screen.h"
 
 namespace prime {

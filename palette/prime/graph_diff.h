@@ -10,8 +10,8 @@
 #include <string>
 
 #include "legacy_io/prime/graph_file.h"
-#include "palette/prime/dac.h"
 #include "palette/png_image.h"
+#include "palette/prime/dac.h"
 
 namespace prime {
 

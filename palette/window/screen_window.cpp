@@ -1,8 +1,8 @@
 // The window as `prime` sees it: zoom, keys, the converted picture and
-// screenshots; what the picture is and its own keys belong to the LiveFrame. The SDL calls are in a module,
-// libprime_window_sdl.so (sdl_window_module.cpp, interface in
-// window_module.h), loaded with dlopen() when the first window opens, so
-// that a headless `prime` never loads libSDL2 and its libraries.
+// screenshots; what the picture is and its own keys belong to the LiveFrame. The SDL calls are in a
+// module, libprime_window_sdl.so (sdl_window_module.cpp, interface in window_module.h), loaded with
+// dlopen() when the first window opens, so that a headless `prime` never loads libSDL2 and its
+// libraries.
 #include "palette/window/screen_window.h"
 
 #include <dlfcn.h>

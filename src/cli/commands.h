@@ -14,13 +14,13 @@ void addModelCommand(CLI::App& app, Action& action);
 void addDumpCommand(CLI::App& app, Action& action);
 void addTraceCommand(CLI::App& app, Action& action);
 void addProbeCommand(CLI::App& app, Action& action);
-void addViewCommand(CLI::App& app, Action& action);     // cmd_view.cpp
-void addExportCommand(CLI::App& app, Action& action);   // cmd_export.cpp
-void addDiffCommand(CLI::App& app, Action& action);     // cmd_diff.cpp
-void addPaletteCommand(CLI::App& app, Action& action);  // cmd_palette.cpp
+void addViewCommand(CLI::App& app, Action& action);       // cmd_view.cpp
+void addExportCommand(CLI::App& app, Action& action);     // cmd_export.cpp
+void addDiffCommand(CLI::App& app, Action& action);       // cmd_diff.cpp
+void addPaletteCommand(CLI::App& app, Action& action);    // cmd_palette.cpp
 void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
-void addBenchCommand(CLI::App& app, Action& action);    // cmd_bench.cpp
-void addPlate1Command(CLI::App& app, Action& action);   // cmd_plate1.cpp
-void addStressCommand(CLI::App& app, Action& action);   // cmd_stress.cpp
+void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
+void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
+void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
 
 }  // namespace prime::cli

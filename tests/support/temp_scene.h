@@ -32,14 +32,17 @@ class TempScene {
   }
   void writeBytes(const std::string& rel, const std::vector<std::uint8_t>& bytes) const {
     std::ofstream out(root_ / rel, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
   }
   std::vector<std::uint8_t> read(const std::string& rel) const {
     std::ifstream in(root_ / rel, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
   bool exists(const std::string& rel) const { return std::filesystem::exists(root_ / rel); }
-  std::filesystem::path path(const std::string& rel = "") const { return rel.empty() ? root_ : root_ / rel; }
+  std::filesystem::path path(const std::string& rel = "") const {
+    return rel.empty() ? root_ : root_ / rel;
+  }
 
  private:
   std::filesystem::path root_;

@@ -8,9 +8,9 @@
 #include <memory>
 #include <sstream>
 
+#include "src/cli/commands.h"
 #include "src/prime/bench/bench.h"
 #include "src/prime/bench/scale.h"
-#include "src/cli/commands.h"
 
 namespace prime::cli {
 

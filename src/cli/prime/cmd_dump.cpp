@@ -7,14 +7,16 @@
 namespace prime::cli {
 
 void addDumpCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("dump", "Print a PrimFile, object file, List, map file or graph file");
+  auto* cmd =
+      app.add_subcommand("dump", "Print a PrimFile, object file, List, map file or graph file");
   auto file = std::make_shared<std::string>();
   auto as = std::make_shared<std::string>();
   auto rows = std::make_shared<int>(8);
   cmd->add_option("FILE", *file, "The binary file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--as", *as, "Read it as this kind instead of guessing from its name")
       ->check(CLI::IsMember({"prim", "obj", "list", "map", "graph"}));
-  cmd->add_option("--rows", *rows, "Rows of map/graph data to print")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--rows", *rows, "Rows of map/graph data to print")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([=, &action] {
     action = [=] {
       auto kind = as->empty() ? io::kindFromFileName(*file) : io::kindFromName(*as);

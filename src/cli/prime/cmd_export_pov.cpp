@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "src/cli/prime/camera_options.h"
 #include "src/cli/commands.h"
+#include "src/cli/prime/camera_options.h"
 #include "src/cli/prime/render_options.h"
 #include "src/prime/pov/pov_export.h"
 

@@ -7,7 +7,8 @@
 namespace prime::cli {
 
 void addModelCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand("model", "Build a scene's databases from its text inputs, as Model.c did");
+  auto* cmd =
+      app.add_subcommand("model", "Build a scene's databases from its text inputs, as Model.c did");
   auto dir = std::make_shared<std::string>();
   auto options = std::make_shared<io::ModelOptions>();
   auto quiet = std::make_shared<bool>(false);
@@ -16,8 +17,9 @@ void addModelCommand(CLI::App& app, Action& action) {
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--copy-type-from-source", options->copyTypeFromSource,
                 "Give primitives copied by an O entry their source's type (not the listing: K33)");
-  cmd->add_flag("--no-16bit-limit", [options](std::int64_t) { options->limitPrimFileTo16Bits = false; },
-                "Allow more than 113 primitives (the listing's 16-bit ftell stops there: E40)");
+  cmd->add_flag(
+      "--no-16bit-limit", [options](std::int64_t) { options->limitPrimFileTo16Bits = false; },
+      "Allow more than 113 primitives (the listing's 16-bit ftell stops there: E40)");
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
@@ -27,8 +29,9 @@ void addModelCommand(CLI::App& app, Action& action) {
       for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
       if (!*quiet)
         std::cout << "modelled " << *dir << ": " << model.objects.size() << " object file(s), "
-                  << model.list.objects.size() << " in the object list, " << model.prims.prims.size()
-                  << " primitive record(s), " << model.maps.size() / 3 << " texture map(s)\n";
+                  << model.list.objects.size() << " in the object list, "
+                  << model.prims.prims.size() << " primitive record(s), " << model.maps.size() / 3
+                  << " texture map(s)\n";
       return 0;
     };
   });

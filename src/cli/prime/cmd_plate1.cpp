@@ -5,12 +5,12 @@
 #include <memory>
 
 #include "legacy_io/prime/graph_file.h"
+#include "palette/png_image.h"
 #include "palette/prime/dac.h"
 #include "palette/prime/export.h"
 #include "palette/prime/palettes.h"
-#include "palette/png_image.h"
-#include "src/cli/prime/camera_options.h"
 #include "src/cli/commands.h"
+#include "src/cli/prime/camera_options.h"
 #include "src/prime/plate1/plate1.h"
 
 namespace prime::cli {

@@ -5,9 +5,10 @@
 namespace prime::cli {
 
 void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText) {
-  cmd->add_option("--palette", o.palette,
-                  "Palette: listing, plate3, vga, or a palette file (docs/prime/palette.md); default: " +
-                      defaultText);
+  cmd->add_option(
+      "--palette", o.palette,
+      "Palette: listing, plate3, vga, or a palette file (docs/prime/palette.md); default: " +
+          defaultText);
 }
 
 void addDacOption(CLI::App* cmd, DisplayOptions& o) {

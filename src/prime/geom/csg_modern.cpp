@@ -8,8 +8,10 @@ namespace {
 
 TList walk(std::span<const CsgEntry> entries,
            const std::function<std::optional<PrimHit>(int)>& leaf, int node, int depth) {
-  if (node < 0 || node >= static_cast<int>(entries.size()) || depth > static_cast<int>(entries.size()))
-    throw CsgError(CsgError::Kind::kBadEntryIndex, "CSG entry " + std::to_string(node) + " out of range or in a cycle");
+  if (node < 0 || node >= static_cast<int>(entries.size()) ||
+      depth > static_cast<int>(entries.size()))
+    throw CsgError(CsgError::Kind::kBadEntryIndex,
+                   "CSG entry " + std::to_string(node) + " out of range or in a cycle");
   const CsgEntry& e = entries[node];
   if (e.op == 'P') {
     TList l;
@@ -20,10 +22,14 @@ TList walk(std::span<const CsgEntry> entries,
   if (a.empty() && (e.op == '-' || e.op == '&')) return a;
   const TList b = walk(entries, leaf, e.r, depth + 1);
   switch (e.op) {
-    case '+': return setUnion(a, b);
-    case '-': return setDifference(a, b, NormalConvention::kOutward);
-    case '&': return setIntersection(a, b);
-    default: break;
+    case '+':
+      return setUnion(a, b);
+    case '-':
+      return setDifference(a, b, NormalConvention::kOutward);
+    case '&':
+      return setIntersection(a, b);
+    default:
+      break;
   }
   throw CsgError(CsgError::Kind::kBadOpcode, std::string("unknown CSG opcode '") + e.op + "'");
 }

@@ -9,7 +9,9 @@
 namespace prime {
 
 // Sqr (MathFunc): x*x, with the listing's explicit zero case.
-inline double sqr(double x) { return x == 0.0 ? 0.0 : x * x; }
+inline double sqr(double x) {
+  return x == 0.0 ? 0.0 : x * x;
+}
 
 // UnitVector as repaired by errata E28: divides by the length; a zero vector
 // is left as the caller's `out` was (the listing leaves xUnit untouched).

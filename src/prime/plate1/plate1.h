@@ -15,8 +15,8 @@
 
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/screen.h"
-#include "src/prime/render/camera.h"
 #include "src/prime/plate1/beta_spline.h"
+#include "src/prime/render/camera.h"
 
 namespace prime::spline {
 

@@ -13,8 +13,8 @@
 #include <span>
 #include <vector>
 
-#include "src/prime/render/camera.h"
 #include "src/geom/aabb.h"
+#include "src/prime/render/camera.h"
 
 namespace prime {
 

@@ -24,11 +24,13 @@ Aabb primitiveBox(const ScenePrim& p) {
   }
   Aabb box;
   for (int c = 0; c < 8; ++c)
-    box.add(pointMatrixMul({c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, p.transform));
+    box.add(pointMatrixMul({c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]},
+                           p.transform));
   // Pad by a relative margin far above the rounding of any primitive test
   // (a few ulps of the coordinates) so that the box is conservative.
   double size = 0.0;
-  for (int i = 0; i < 3; ++i) size = std::max({size, std::abs(box.lo[i]), std::abs(box.hi[i]), box.hi[i] - box.lo[i]});
+  for (int i = 0; i < 3; ++i)
+    size = std::max({size, std::abs(box.lo[i]), std::abs(box.hi[i]), box.hi[i] - box.lo[i]});
   const double pad = 1e-7 * size + 1e-9;
   for (int i = 0; i < 3; ++i) {
     box.lo[i] -= pad;

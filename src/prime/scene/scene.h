@@ -7,8 +7,8 @@
 
 #include "legacy_io/prime/records.h"
 #include "legacy_io/prime/text_inputs.h"
-#include "src/prime/geom/csg_1991.h"
 #include "src/math/matrix.h"
+#include "src/prime/geom/csg_1991.h"
 
 namespace prime {
 
@@ -24,9 +24,9 @@ struct ScenePrim {
 };
 
 struct SceneObject {
-  int number = 0;                  // n of obj/O<n>
+  int number = 0;                 // n of obj/O<n>
   std::vector<CsgEntry> entries;  // entry 0 is the CSG root (opcode, l, r)
-  int boundPrim = -1;              // primitive number of the bounding volume, or -1
+  int boundPrim = -1;             // primitive number of the bounding volume, or -1
   io::Hue hue;
 };
 
@@ -40,10 +40,10 @@ struct Scene {
   std::string name;                  // for titles and messages
   std::vector<ScenePrim> prims;      // by primitive number (PrimFile order)
   std::vector<SceneObject> objects;  // in obj/List order (GetObj)
-  std::vector<SceneTexture> maps;      // by map number; uScale == 0 where absent
+  std::vector<SceneTexture> maps;    // by map number; uScale == 0 where absent
   Vec3 ambient{};                    // IA
   std::vector<io::LightSource> lights;
-  Vec3 background{};                 // InitBackground: black
+  Vec3 background{};  // InitBackground: black
 
   const SceneTexture* map(int number) const {
     return number >= 0 && number < static_cast<int>(maps.size()) && maps[number].uScale > 0

@@ -24,9 +24,9 @@ std::string primLabel(int n, const ScenePrim& p) {
 // primitive it uses must have a type byte that names a type (io::primType).
 SceneObject loadObject(const io::SceneDir& dir, int number,
                        const std::vector<io::PrimRecord>& prims) {
-  const fs::path path =
-      dir.existingInput("obj", "O" + std::to_string(number),
-                        dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
+  const fs::path path = dir.existingInput(
+      "obj", "O" + std::to_string(number),
+      dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
   const std::string shown = dir.display(path);
   const io::ObjFile f = io::objFileFromBytes(io::readFileBytes(path.string()), shown);
   SceneObject obj;
@@ -57,7 +57,8 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
         if (!io::primType(prims[e.l].type))
           throw InputError({shown, std::nullopt, at}, field + " primitive " + std::to_string(e.l),
                            "a primitive of type S, B, C, N or Y",
-                           std::string("type byte ") + std::to_string(static_cast<unsigned char>(prims[e.l].type)) +
+                           std::string("type byte ") +
+                               std::to_string(static_cast<unsigned char>(prims[e.l].type)) +
                                " (a primitive copied by an O entry? errata K33; try `prime model "
                                "--copy-type-from-source`)");
         break;
@@ -93,9 +94,11 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
                        "-1 or a primitive number 0.." + std::to_string(prims.size() - 1),
                        std::to_string(obj.boundPrim));
     if (!io::primType(prims[obj.boundPrim].type))
-      throw InputError({shown, std::nullopt, 2}, "bounding volume (primitive " + std::to_string(obj.boundPrim) + ")",
-                       "a primitive type S, B, C, N or Y",
-                       "type byte " + std::to_string(static_cast<unsigned char>(prims[obj.boundPrim].type)));
+      throw InputError(
+          {shown, std::nullopt, 2},
+          "bounding volume (primitive " + std::to_string(obj.boundPrim) + ")",
+          "a primitive type S, B, C, N or Y",
+          "type byte " + std::to_string(static_cast<unsigned char>(prims[obj.boundPrim].type)));
   }
   return obj;
 }
@@ -125,11 +128,13 @@ SceneTexture loadMap(const io::SceneDir& dir, int number) {
 Scene loadScene(const io::SceneDir& dir) {
   Scene scene;
   scene.name = dir.root().filename().string();
-  if (scene.name.empty() || scene.name == ".") scene.name = fs::absolute(dir.root()).lexically_normal().filename().string();
+  if (scene.name.empty() || scene.name == ".")
+    scene.name = fs::absolute(dir.root()).lexically_normal().filename().string();
 
   // Databases are read through existingInput too: no symbolic links.
   const fs::path primPath = dir.existingInput("prim", "PrimFile", "prime trace");
-  const io::PrimFile primFile = io::primFileFromBytes(io::readFileBytes(primPath.string()), dir.display(primPath));
+  const io::PrimFile primFile =
+      io::primFileFromBytes(io::readFileBytes(primPath.string()), dir.display(primPath));
   for (const auto& p : primFile.prims) {
     ScenePrim sp;
     sp.type = io::primType(p.type).value_or(io::PrimType::Sphere);  // see ScenePrim::type
@@ -141,7 +146,8 @@ Scene loadScene(const io::SceneDir& dir) {
   }
 
   const fs::path listPath = dir.existingInput("obj", "List", "prime trace");
-  const io::ObjList list = io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
+  const io::ObjList list =
+      io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
   for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, primFile.prims));
 
   // Every map that a primitive of a listed object can read must exist.
@@ -155,7 +161,8 @@ Scene loadScene(const io::SceneDir& dir) {
           const int m = p.map[s][side];
           const fs::path r = dir.root() / "map" / io::mapFileName(m, 0);
           if (m < 0 || !fs::exists(r))
-            throw InputError({dir.display(dir.root() / "obj" / ("O" + std::to_string(obj.number))), std::nullopt, std::nullopt},
+            throw InputError({dir.display(dir.root() / "obj" / ("O" + std::to_string(obj.number))),
+                              std::nullopt, std::nullopt},
                              primLabel(e.l, p) + " surface " + std::to_string(s) +
                                  (side ? " inside" : " outside") + " map",
                              "a map added by AddMap (map/" + io::mapFileName(m, 0) + ")",
@@ -188,7 +195,8 @@ std::vector<std::string> staleDatabases(const io::SceneDir& dir) {
     if (!fs::is_directory(d)) continue;
     for (const auto& e : fs::directory_iterator(d)) {
       const auto name = e.path().filename().string();
-      const bool input = e.is_regular_file() && (e.path().extension() == ".txt" || e.path().extension() == ".TXT");
+      const bool input =
+          e.is_regular_file() && (e.path().extension() == ".txt" || e.path().extension() == ".TXT");
       if (input && name != "light.txt" && fs::last_write_time(e.path()) > built)
         problems.push_back(dir.display(e.path()) + " is newer than the databases");
     }

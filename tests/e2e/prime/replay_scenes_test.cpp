@@ -247,10 +247,11 @@ TEST_P(ReplayScene, RenderWritesTheGoldenGraphFile) {
   if (readBytes(golden) == readBytes(out)) return;
   const fs::path kept = fs::temp_directory_path() / ("prime-replay-" + scene + ".graph_scr");
   fs::copy_file(out, kept, fs::copy_options::overwrite_existing);
-  ADD_FAILURE() << "`prime " << cmd << " scenes/" << scene << "` no longer writes tests/golden/prime/"
-                << scene << "/graph_scr:\n  " << describeGraphDiff(golden, out)
-                << "  the new file is " << kept.string() << "\n  see what changed: prime diff "
-                << golden.string() << " " << kept.string() << " --image diff.png";
+  ADD_FAILURE() << "`prime " << cmd << " scenes/" << scene
+                << "` no longer writes tests/golden/prime/" << scene << "/graph_scr:\n  "
+                << describeGraphDiff(golden, out) << "  the new file is " << kept.string()
+                << "\n  see what changed: prime diff " << golden.string() << " " << kept.string()
+                << " --image diff.png";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ReplayScene, ::testing::ValuesIn(sceneNames()),

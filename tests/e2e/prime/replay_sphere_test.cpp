@@ -14,11 +14,11 @@
 // (distance 2000), so the silhouette on the window is a circle about
 // (500,500) of radius 1500 * tan(asin(300/2000)) = 225/sqrt(1-0.0225) = 227.575.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
 
 #include "legacy_io/prime/graph_file.h"
 
@@ -28,13 +28,16 @@ namespace fs = std::filesystem;
 
 // A private copy of a test scene (tests may run in parallel).
 fs::path copyScene(const std::string& name, const std::string& tag) {
-  const fs::path dst = fs::temp_directory_path() / ("prime-replay-" + tag + "-" + std::to_string(::getpid()));
+  const fs::path dst =
+      fs::temp_directory_path() / ("prime-replay-" + tag + "-" + std::to_string(::getpid()));
   fs::remove_all(dst);
   fs::copy(fs::path(PRIME_TEST_DATA) / name, dst, fs::copy_options::recursive);
   return dst;
 }
 
-int run(const std::string& args) { return std::system((std::string(PRIME_EXE) + " " + args + " >/dev/null").c_str()); }
+int run(const std::string& args) {
+  return std::system((std::string(PRIME_EXE) + " " + args + " >/dev/null").c_str());
+}
 
 TEST(ReplaySphere, HandCheckedPixels) {
   const fs::path dir = copyScene("sphere", "pixels");

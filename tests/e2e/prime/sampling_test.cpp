@@ -21,7 +21,10 @@ struct Scene {
   }
   prime::io::GraphFile trace(const std::string& flags, const std::string& name) {
     const std::string out = (s.path() / name).string();
-    EXPECT_EQ(std::system((std::string(PRIME_EXE) + " trace -q " + s.path().string() + " --out " + out + " " + flags).c_str()), 0);
+    EXPECT_EQ(std::system((std::string(PRIME_EXE) + " trace -q " + s.path().string() + " --out " +
+                           out + " " + flags)
+                              .c_str()),
+              0);
     return prime::io::readGraphFile(out);
   }
 };
@@ -43,8 +46,8 @@ TEST(Sampling, SupersamplingOnlyChangesPixelsOnTheSilhouette) {
     const auto g = sc.trace(flags, "ss");
     long changed = 0;
     for (std::size_t i = 0; i < g.pixels.size(); ++i) changed += g.pixels[i] != base.pixels[i];
-    EXPECT_GT(changed, 50) << flags;     // the edge is anti-aliased
-    EXPECT_LT(changed, 2500) << flags;   // a perimeter of ~1,400 pixels, nothing more
+    EXPECT_GT(changed, 50) << flags;    // the edge is anti-aliased
+    EXPECT_LT(changed, 2500) << flags;  // a perimeter of ~1,400 pixels, nothing more
     EXPECT_EQ(g.at(174, 384), 68) << flags;
     EXPECT_EQ(g.at(0, 0), 1) << flags;
   }

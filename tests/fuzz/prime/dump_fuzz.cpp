@@ -10,12 +10,18 @@ using namespace prime;
 
 static io::DatabaseKind kindOf(std::uint8_t c) {
   switch (c) {
-    case 'p': return io::DatabaseKind::PrimFile;
-    case 'o': return io::DatabaseKind::ObjFile;
-    case 'l': return io::DatabaseKind::ObjList;
-    case 'm': return io::DatabaseKind::MapFile;
-    case 'g': return io::DatabaseKind::GraphFile;
-    default: return static_cast<io::DatabaseKind>(c % 5);
+    case 'p':
+      return io::DatabaseKind::PrimFile;
+    case 'o':
+      return io::DatabaseKind::ObjFile;
+    case 'l':
+      return io::DatabaseKind::ObjList;
+    case 'm':
+      return io::DatabaseKind::MapFile;
+    case 'g':
+      return io::DatabaseKind::GraphFile;
+    default:
+      return static_cast<io::DatabaseKind>(c % 5);
   }
 }
 
@@ -34,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text = io::dumpDatabase(path, kindOf(data[0]));
     // The listing is for people: it must stay proportionate to the file.
     fuzz::check(text.size() < 4096 + 200 * size, "dump output out of proportion to the file: " +
-                                                      std::to_string(text.size()) + " bytes");
+                                                     std::to_string(text.size()) + " bytes");
   } catch (const io::InputError& e) {
     fuzz::checkBinaryError(e, path, size - 1);
   }

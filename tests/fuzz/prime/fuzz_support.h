@@ -43,7 +43,8 @@ inline void checkBinaryError(const io::InputError& e, const std::string& file, s
 }
 
 // A text reader's error must give the file and a line of the text.
-inline void checkTextError(const io::InputError& e, const std::string& file, std::string_view text) {
+inline void checkTextError(const io::InputError& e, const std::string& file,
+                           std::string_view text) {
   const std::string msg = e.what();
   check(msg.rfind(file + ":", 0) == 0, "message does not start with \"file:\": " + msg);
   check(e.where().line.has_value(), "text error without a line: " + msg);

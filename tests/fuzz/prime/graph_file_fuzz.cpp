@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const io::GraphFile f = io::graphFileFromBytes(bytes, "graph_scr");
     fuzz::check(f.width() >= 0 && f.height() >= 0, "negative size accepted");
-    fuzz::check(f.pixels.size() == static_cast<std::size_t>(f.width()) * static_cast<std::size_t>(f.height()),
+    fuzz::check(f.pixels.size() ==
+                    static_cast<std::size_t>(f.width()) * static_cast<std::size_t>(f.height()),
                 "pixel count is not width x height");
     if (!f.pixels.empty()) (void)f.at(f.width() - 1, f.height() - 1);
     fuzz::check(io::toBytes(f) == std::vector<std::uint8_t>(data, data + size),

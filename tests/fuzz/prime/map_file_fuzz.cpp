@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const io::MapFile f = io::mapFileFromBytes(bytes, "Map1_R.map");
     fuzz::check(f.header.uScale > 0 && f.header.vScale > 0, "non-positive map size accepted");
-    fuzz::check(f.texels.size() == static_cast<std::size_t>(f.header.uScale) * static_cast<std::size_t>(f.header.vScale),
+    fuzz::check(f.texels.size() == static_cast<std::size_t>(f.header.uScale) *
+                                       static_cast<std::size_t>(f.header.vScale),
                 "texel count is not uScale*vScale");
     fuzz::check(io::toBytes(f) == std::vector<std::uint8_t>(data, data + size),
                 "map does not encode back to its bytes");

@@ -19,7 +19,9 @@ namespace {
 
 const std::string kName = "scene/fuzz.txt";
 
-bool finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
 
 void checkPlacement(const io::Placement& p) {
   fuzz::check(finite(p.s) && finite(p.t) && finite(p.r) && finite(p.pivot), "non-finite placement");
@@ -63,24 +65,31 @@ void parse(char which, io::TextReader& in, const std::string& text) {
       checkPlacement(b.place);
       break;
     }
-    case 'a': checkPlacement(io::parsePlacement(in)); break;
-    case 'h': (void)io::parseHueText(in); break;
+    case 'a':
+      checkPlacement(io::parsePlacement(in));
+      break;
+    case 'h':
+      (void)io::parseHueText(in);
+      break;
     case 'd': {
       const io::ObjText o = io::parseObjText(in);
       fuzz::check(!o.entries.empty(), "object without entries accepted");
       const int n = static_cast<int>(o.entries.size());
       for (const auto& e : o.entries)
         if (e.op == '+' || e.op == '-' || e.op == '&')
-          fuzz::check(e.l >= 0 && e.l < n && e.r >= 0 && e.r < n, "child index out of range accepted");
+          fuzz::check(e.l >= 0 && e.l < n && e.r >= 0 && e.r < n,
+                      "child index out of range accepted");
       break;
     }
     case 'm': {
       const io::MapText m = io::parseMapText(in);
       const long long entries = static_cast<long long>(m.header.uScale) * m.header.vScale;
-      fuzz::check(m.mapNum >= 0 && m.header.uScale > 0 && m.header.vScale > 0 && entries <= io::kMaxMapEntries,
+      fuzz::check(m.mapNum >= 0 && m.header.uScale > 0 && m.header.vScale > 0 &&
+                      entries <= io::kMaxMapEntries,
                   "map limits not kept");
       for (const auto& plane : m.planes)
-        fuzz::check(static_cast<long long>(plane.size()) == entries, "plane size is not uScale*vScale");
+        fuzz::check(static_cast<long long>(plane.size()) == entries,
+                    "plane size is not uScale*vScale");
       break;
     }
     case 'l': {
@@ -93,7 +102,9 @@ void parse(char which, io::TextReader& in, const std::string& text) {
         fuzz::check(!call.name.empty() && call.line >= 1, "bad model call");
       break;
     }
-    default: readWords(in); break;
+    default:
+      readWords(in);
+      break;
   }
 }
 

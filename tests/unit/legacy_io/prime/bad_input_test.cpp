@@ -77,7 +77,8 @@ TEST(BadInput, NanAndInf) {
   test::TempScene s;
   goodScene(s);
   s.write("prim/B1.txt", "B\n100 nan 100\n0 0 0\n0 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n");
-  EXPECT_THAT(modelError(s), HasSubstr("prim/B1.txt:2: scale y: expected a finite number, found \"nan\""));
+  EXPECT_THAT(modelError(s),
+              HasSubstr("prim/B1.txt:2: scale y: expected a finite number, found \"nan\""));
   s.write("prim/B1.txt", "B\n100 100 100\n0 0 -inf\n0 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n");
   EXPECT_THAT(modelError(s), HasSubstr("translate z: expected a finite number, found \"-inf\""));
 }
@@ -102,8 +103,9 @@ TEST(BadInput, UnknownOpcode) {
   test::TempScene s;
   goodScene(s);
   s.write("obj/D1.txt", "3\n* 1 2\nB 1\nS 1\nNULL\n");
-  EXPECT_THAT(modelError(s),
-              HasSubstr("obj/D1.txt:2: entry 0 opcode: expected one of + - & C B S N T Y O, found \"*\""));
+  EXPECT_THAT(
+      modelError(s),
+      HasSubstr("obj/D1.txt:2: entry 0 opcode: expected one of + - & C B S N T Y O, found \"*\""));
   s.write("obj/D1.txt", "3\n- 1 2\nB1\nS 1\nNULL\n");
   EXPECT_THAT(modelError(s), HasSubstr("write the letter and the number apart, e.g. \"B 1\""));
 }
@@ -112,8 +114,9 @@ TEST(BadInput, ChildIndexOutOfRange) {
   test::TempScene s;
   goodScene(s);
   s.write("obj/D1.txt", "3\n- 1 3\nB 1\nS 1\nNULL\n");
-  EXPECT_THAT(modelError(s),
-              HasSubstr("obj/D1.txt:2: child index of '-': expected an entry number 0..2, found 3"));
+  EXPECT_THAT(
+      modelError(s),
+      HasSubstr("obj/D1.txt:2: child index of '-': expected an entry number 0..2, found 3"));
 }
 
 TEST(BadInput, ChildIndexCycle) {
@@ -138,11 +141,13 @@ TEST(BadInput, MapDimensions) {
   test::TempScene s;
   goodScene(s);
   s.write("map/m.txt", "1\n0 3\n");
-  EXPECT_THAT(modelError(s), HasSubstr("map/m.txt:2: uScale vScale: expected two sizes > 0, found 0 3"));
+  EXPECT_THAT(modelError(s),
+              HasSubstr("map/m.txt:2: uScale vScale: expected two sizes > 0, found 0 3"));
   s.write("map/m.txt", "1\n200 200\n");
   EXPECT_THAT(modelError(s), HasSubstr("uScale*vScale <= 32767"));
   s.write("map/m.txt", "1\n2 1\n0.1 0.2\n0.3 0.4\n0.5\n");
-  EXPECT_THAT(modelError(s), HasSubstr("B texel 1 (u 1, v 0): expected a number, found end of file"));
+  EXPECT_THAT(modelError(s),
+              HasSubstr("B texel 1 (u 1, v 0): expected a number, found end of file"));
 }
 
 TEST(BadInput, TruncatedBinaryFiles) {
@@ -153,7 +158,8 @@ TEST(BadInput, TruncatedBinaryFiles) {
     graphFileFromBytes(std::vector<std::uint8_t>{1, 0, 5}, "graph_scr");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_THAT(std::string(e.what()), HasSubstr("graph_scr (byte 2): numPixAcross: expected 2 more byte(s)"));
+    EXPECT_THAT(std::string(e.what()),
+                HasSubstr("graph_scr (byte 2): numPixAcross: expected 2 more byte(s)"));
   }
   try {
     objFileFromBytes(std::vector<std::uint8_t>(50, 0), "O1");
@@ -184,7 +190,8 @@ TEST(BadInput, SizesThatAreNotWholeRecords) {
     graphFileFromBytes(graph, "graph_scr");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_THAT(std::string(e.what()), HasSubstr("4 pixels (2 x 2, the listing's inclusive loops) or 1 pixels"));
+    EXPECT_THAT(std::string(e.what()),
+                HasSubstr("4 pixels (2 x 2, the listing's inclusive loops) or 1 pixels"));
   }
   std::vector<std::uint8_t> objHeader(76, 0);
   objHeader[0] = 2;  // numEntries 2, but no records follow
@@ -246,7 +253,8 @@ TEST(BadInput, SingularTransform) {
   test::TempScene s;
   goodScene(s);
   s.write("prim/S1.txt", "S\n60 0 60\n50 50 0\n0 0 0\n0 0 0\n1 1\n0\n");
-  EXPECT_THAT(modelError(s), HasSubstr("prim/S1.txt: transformation: expected an invertible matrix"));
+  EXPECT_THAT(modelError(s),
+              HasSubstr("prim/S1.txt: transformation: expected an invertible matrix"));
 }
 
 }  // namespace

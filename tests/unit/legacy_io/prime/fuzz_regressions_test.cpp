@@ -42,7 +42,8 @@ ObjRecord entry(char op, int l, int r) {
 // "+ i+1 last" and the last entry is a leaf, 32767 entries in all.
 std::string deepChainDFile(int last) {
   std::string text = std::to_string(last + 1) + "\n";
-  for (int i = 0; i < last; ++i) text += "+ " + std::to_string(i + 1) + " " + std::to_string(last) + "\n";
+  for (int i = 0; i < last; ++i)
+    text += "+ " + std::to_string(i + 1) + " " + std::to_string(last) + "\n";
   return text + "S 1\nNULL\n";
 }
 
@@ -70,9 +71,10 @@ TEST(FuzzRegressions, ObjTextDeepChainDoesNotOverflowTheStack) {
   const std::string lastOp = "+ 32766 32766\n";
   cyclic.replace(cyclic.find(lastOp), lastOp.size(), "+ 0 32766\n");
   TextReader bad(cyclic, "obj/D1.txt");
-  EXPECT_EQ(errorOf([&] { parseObjText(bad); }),
-            "obj/D1.txt:32767: child index: expected a tree (no entry may contain itself), found entry "
-            "32765 leads back to entry 0 (a cycle)");
+  EXPECT_EQ(
+      errorOf([&] { parseObjText(bad); }),
+      "obj/D1.txt:32767: child index: expected a tree (no entry may contain itself), found entry "
+      "32765 leads back to entry 0 (a cycle)");
 }
 
 // Found (dump_fuzz, timeout): `prime dump` of an O file whose entries share subtrees (entry i is
@@ -127,9 +129,12 @@ TEST(FuzzRegressions, CopyObjDestinationMustNotReplaceOtherFiles) {
     test::TempScene s;
     goodScene(s);
     s.write("Model.txt", "AddObj d1.txt\nAddToObjList 1\nCopyObj O1 " + dest + " c.txt\n");
-    const std::string msg = errorOf([&] { writeModel(SceneDir(s.path()), buildModel(SceneDir(s.path()))); });
-    EXPECT_THAT(msg, HasSubstr("Model.txt:3: CopyObj destination object: expected a name for a new object "
-                               "file in obj/ like O4 (not List, Copy or a .txt input), found \"" + dest + "\""));
+    const std::string msg =
+        errorOf([&] { writeModel(SceneDir(s.path()), buildModel(SceneDir(s.path()))); });
+    EXPECT_THAT(
+        msg, HasSubstr("Model.txt:3: CopyObj destination object: expected a name for a new object "
+                       "file in obj/ like O4 (not List, Copy or a .txt input), found \"" +
+                       dest + "\""));
     EXPECT_FALSE(s.exists("obj/List"));
     const auto d1 = s.read("obj/D1.txt");
     EXPECT_EQ(std::string(d1.begin(), d1.end()), "3\n- 1 2\nB 1\nS 1\nNULL\n");
@@ -144,7 +149,8 @@ TEST(FuzzRegressions, ObjectCopiesCheckTheEntryLimitBeforeCopying) {
   test::TempScene s;
   goodScene(s);
   std::string d1 = "20000\n";
-  for (int i = 0; i < 19999; ++i) d1 += "+ " + std::to_string(i + 1) + " " + std::to_string(i + 1) + "\n";
+  for (int i = 0; i < 19999; ++i)
+    d1 += "+ " + std::to_string(i + 1) + " " + std::to_string(i + 1) + "\n";
   s.write("obj/D1.txt", d1 + "S 1\nNULL\n");
   s.write("obj/H2.txt", "0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n");
   s.write("obj/D2.txt", "3\n+ 1 2\nO 1 1\nO 1 1\nNULL\n");
@@ -152,9 +158,10 @@ TEST(FuzzRegressions, ObjectCopiesCheckTheEntryLimitBeforeCopying) {
   s.write("Model.txt", "AddObj d1.txt\nAddObj d2.txt\n");
   ModelOptions options;
   options.limitPrimFileTo16Bits = false;
-  EXPECT_THAT(errorOf([&] { buildModel(SceneDir(s.path()), options); }),
-              HasSubstr("obj/D2.txt:4: numEntries: expected at most 32767 entries after copying objects, "
-                        "found 40001 once this O entry copies the 20000 entries of object 1"));
+  EXPECT_THAT(
+      errorOf([&] { buildModel(SceneDir(s.path()), options); }),
+      HasSubstr("obj/D2.txt:4: numEntries: expected at most 32767 entries after copying objects, "
+                "found 40001 once this O entry copies the 20000 entries of object 1"));
 }
 
 // Found (model_builder_fuzz, uncaught filesystem_error): a file name longer than the file system
@@ -165,9 +172,10 @@ TEST(FuzzRegressions, OverlongFileNameIsAnInputError) {
   test::TempScene s;
   goodScene(s);
   s.write("Model.txt", "AddMap " + std::string(300, 'a') + ".txt\n");
-  EXPECT_THAT(errorOf([&] { buildModel(SceneDir(s.path())); }),
-              HasSubstr("Model.txt:1: file name: expected at most 255 bytes (the file system's NAME_MAX), "
-                        "found 304 bytes (\"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\")"));
+  EXPECT_THAT(
+      errorOf([&] { buildModel(SceneDir(s.path())); }),
+      HasSubstr("Model.txt:1: file name: expected at most 255 bytes (the file system's NAME_MAX), "
+                "found 304 bytes (\"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...\")"));
   s.write("Model.txt", "AddObj d" + std::string(300, '1') + ".txt\n");
   EXPECT_THAT(errorOf([&] { buildModel(SceneDir(s.path())); }),
               HasSubstr("Model.txt:1: file name: expected at most 255 bytes"));
@@ -202,7 +210,8 @@ TEST(FuzzRegressions, PartialGraphFileHeaderCannotAskForGigabytes) {
     graphFilePrefixFromBytes(bytes, "x.partial");
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("at most 8192 x 8192 pixels"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at most 8192 x 8192 pixels"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -13,8 +13,8 @@
 #include <cmath>
 
 #include "legacy_io/prime/model_builder.h"
-#include "tests/support/temp_scene.h"
 #include "src/prime/math/listing_matrix.h"
+#include "tests/support/temp_scene.h"
 
 namespace prime::io {
 namespace {
@@ -36,8 +36,10 @@ Model model(const test::TempScene& s, const std::string& modelTxt, ModelOptions 
 void expectMatrix(const Matrix4& m, const Matrix4& expected, double tol = 0.0) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      if (tol == 0.0) EXPECT_EQ(m[i][j], expected[i][j]) << "at [" << i << "][" << j << "]";
-      else EXPECT_NEAR(m[i][j], expected[i][j], tol) << "at [" << i << "][" << j << "]";
+      if (tol == 0.0)
+        EXPECT_EQ(m[i][j], expected[i][j]) << "at [" << i << "][" << j << "]";
+      else
+        EXPECT_NEAR(m[i][j], expected[i][j], tol) << "at [" << i << "][" << j << "]";
     }
 }
 
@@ -49,11 +51,13 @@ TEST(Transform, ScaleThenPivotThenTranslate) {
   s.write("prim/B1.txt", "B\n2 3 4\n10 20 30\n0 0 0\n1 1 1\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n");
   const Model m = model(s, "AddObj d1.txt\n");
   ASSERT_EQ(m.prims.prims.size(), 1u);
-  expectMatrix(m.prims.prims[0].transform, {{{2, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 4, 0}, {8, 17, 26, 1}}});
+  expectMatrix(m.prims.prims[0].transform,
+               {{{2, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, 4, 0}, {8, 17, 26, 1}}});
   // Gauss-Jordan: row r scaled by 1/a[r][r], then row 3 -= a[3][r] * row r:
   // b[3] = (-8*0.5, -17*(1/3), -26*0.25) = (-4, -17*(1/3), -6.5).
-  expectMatrix(m.prims.prims[0].inverse,
-               {{{0.5, 0, 0, 0}, {0, 1.0 / 3.0, 0, 0}, {0, 0, 0.25, 0}, {-4, -17 * (1.0 / 3.0), -6.5, 1}}});
+  expectMatrix(
+      m.prims.prims[0].inverse,
+      {{{0.5, 0, 0, 0}, {0, 1.0 / 3.0, 0, 0}, {0, 0, 0.25, 0}, {-4, -17 * (1.0 / 3.0), -6.5, 1}}});
 }
 
 TEST(Transform, RotateX90IsNotSnappedToExactZeroCosine) {
@@ -116,8 +120,10 @@ TEST(CopyPrim, TranslationOnlyGivesAUnitPrimitiveMovedByT) {
   EXPECT_EQ(o2.entries[0].r, 2);
   EXPECT_EQ(o2.entries[1].l, 2);  // copy of prim 0
   EXPECT_EQ(o2.entries[2].l, 3);  // copy of prim 1
-  expectMatrix(m.prims.prims[2].transform, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {8, 0, 0, 1}}});
-  expectMatrix(m.prims.prims[2].inverse, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {-8, 0, 0, 1}}});
+  expectMatrix(m.prims.prims[2].transform,
+               {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {8, 0, 0, 1}}});
+  expectMatrix(m.prims.prims[2].inverse,
+               {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {-8, 0, 0, 1}}});
   EXPECT_EQ(m.prims.prims[2].map, m.prims.prims[0].map);  // maps and priority copied
   EXPECT_EQ(m.prims.prims[2].priority, 3);
 }
@@ -128,7 +134,8 @@ TEST(CopyPrim, ScaleMultipliesOnlyTheInverseDiagonal) {
   test::TempScene s;
   copyScene(s, "3 1 1\n0 0 0\n0 0 0\n0 0 0\n");
   const Model m = model(s, "AddObj d1.txt\nAddObj d2.txt\n");
-  expectMatrix(m.prims.prims[2].transform, {{{3, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
+  expectMatrix(m.prims.prims[2].transform,
+               {{{3, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
 }
 
 TEST(CopyPrim, RotateZ90) {
@@ -141,9 +148,10 @@ TEST(CopyPrim, RotateZ90) {
   test::TempScene s;
   copyScene(s, "1 1 1\n0 0 0\n0 0 90\n0 0 0\n");
   const Model m = model(s, "AddObj d1.txt\nAddObj d2.txt\n");
-  expectMatrix(m.prims.prims[2].transform,
-               {{{c90, 1, 0, 0}, {-1, c90, 0, 0}, {0, 0, 1, 0}, {30 - 10 * c90, 10 - 20 * c90, 0, 1}}},
-               1e-13);
+  expectMatrix(
+      m.prims.prims[2].transform,
+      {{{c90, 1, 0, 0}, {-1, c90, 0, 0}, {0, 0, 1, 0}, {30 - 10 * c90, 10 - 20 * c90, 0, 1}}},
+      1e-13);
 }
 
 TEST(CopyPrim, TypeIsTheRecycledBlocksUnlessFixed) {
@@ -182,9 +190,11 @@ TEST(TransferObj, ScaleLeavesTheTranslationRowUnscaled) {
   EXPECT_EQ(o2.entries[0].l, 2);
   EXPECT_EQ(o2.header.boundVol, 3);
   EXPECT_EQ(m.objects.at("O1").header.boundVol, 1);
-  expectMatrix(m.prims.prims[2].transform, {{{6, 0, 0, 0}, {0, 6, 0, 0}, {0, 0, 6, 0}, {15, 20, 30, 1}}});
+  expectMatrix(m.prims.prims[2].transform,
+               {{{6, 0, 0, 0}, {0, 6, 0, 0}, {0, 0, 6, 0}, {15, 20, 30, 1}}});
   // The bound diag(4) -> diag(12), row 3 (0,0,0) -> (5,0,0).
-  expectMatrix(m.prims.prims[3].transform, {{{12, 0, 0, 0}, {0, 12, 0, 0}, {0, 0, 12, 0}, {5, 0, 0, 1}}});
+  expectMatrix(m.prims.prims[3].transform,
+               {{{12, 0, 0, 0}, {0, 12, 0, 0}, {0, 0, 12, 0}, {5, 0, 0, 1}}});
   EXPECT_EQ(m.list.objects, (std::vector<std::int16_t>{1, 2}));
 }
 
@@ -192,7 +202,8 @@ TEST(TransferObj, PivotIsSubtractedScaled) {
   // s = (1,1,1), pivot = (1,2,3): row 3 += (-1,-2,-3) -> (9,18,27).
   test::TempScene s;
   const Model m = transferred(s, "1 1 1\n0 0 0\n0 0 0\n1 2 3\n");
-  expectMatrix(m.prims.prims[2].transform, {{{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}, {9, 18, 27, 1}}});
+  expectMatrix(m.prims.prims[2].transform,
+               {{{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}, {9, 18, 27, 1}}});
 }
 
 TEST(TransferObj, RotateY90RotatesTheTranslationRowToo) {
@@ -202,7 +213,10 @@ TEST(TransferObj, RotateY90RotatesTheTranslationRowToo) {
   test::TempScene s;
   const Model m = transferred(s, "1 1 1\n0 0 0\n0 90 0\n0 0 0\n");
   expectMatrix(m.prims.prims[2].transform,
-               {{{2 * c90, 0, -2, 0}, {0, 2, 0, 0}, {2, 0, 2 * c90, 0}, {10 * c90 + 30, 20, 30 * c90 - 10, 1}}},
+               {{{2 * c90, 0, -2, 0},
+                 {0, 2, 0, 0},
+                 {2, 0, 2 * c90, 0},
+                 {10 * c90 + 30, 20, 30 * c90 - 10, 1}}},
                1e-13);
 }
 

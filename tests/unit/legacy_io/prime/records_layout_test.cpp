@@ -24,7 +24,9 @@ const Bytes kQuarter = {0, 0, 0, 0, 0, 0, 0xD0, 0x3F};
 const Bytes kOneAndHalf = {0, 0, 0, 0, 0, 0, 0xF8, 0x3F};
 const Bytes kZero(8, 0);
 
-Bytes slice(const Bytes& b, std::size_t at, std::size_t n) { return Bytes(b.begin() + at, b.begin() + at + n); }
+Bytes slice(const Bytes& b, std::size_t at, std::size_t n) {
+  return Bytes(b.begin() + at, b.begin() + at + n);
+}
 
 TEST(RecordLayout, ObjRecordIsEightBytes) {
   ObjRecord o;
@@ -48,12 +50,12 @@ TEST(RecordLayout, ObjHeaderIs76BytesWithHueAtOffset4) {
   const Bytes& b = w.bytes();
   ASSERT_EQ(b.size(), 76u);
   EXPECT_EQ(slice(b, 0, 4), (Bytes{0x05, 0x00, 0xFF, 0xFF}));
-  EXPECT_EQ(slice(b, 4, 8), kHalf);          // kDR
-  EXPECT_EQ(slice(b, 12, 8), kZero);         // kDT
-  EXPECT_EQ(slice(b, 20, 8), kOne);          // fDR[R]
-  EXPECT_EQ(slice(b, 28, 8), kTwo);          // fDR[G]
-  EXPECT_EQ(slice(b, 36, 8), kQuarter);      // fDR[B]
-  EXPECT_EQ(slice(b, 68, 8), kOneAndHalf);   // indx, last of 9 doubles: 4 + 8*8
+  EXPECT_EQ(slice(b, 4, 8), kHalf);         // kDR
+  EXPECT_EQ(slice(b, 12, 8), kZero);        // kDT
+  EXPECT_EQ(slice(b, 20, 8), kOne);         // fDR[R]
+  EXPECT_EQ(slice(b, 28, 8), kTwo);         // fDR[G]
+  EXPECT_EQ(slice(b, 36, 8), kQuarter);     // fDR[B]
+  EXPECT_EQ(slice(b, 68, 8), kOneAndHalf);  // indx, last of 9 doubles: 4 + 8*8
 }
 
 TEST(RecordLayout, PrimIs291BytesPacked) {
@@ -72,11 +74,11 @@ TEST(RecordLayout, PrimIs291BytesPacked) {
   const Bytes& b = w.bytes();
   ASSERT_EQ(b.size(), 291u);
   EXPECT_EQ(b[0], 'B');
-  EXPECT_EQ(slice(b, 1, 8), kOne);                   // transform[0][0]
-  EXPECT_EQ(slice(b, 1 + 8 * 12, 8), kMinusFive);    // transform[3][0] = element 12
-  EXPECT_EQ(slice(b, 1 + 8 * 15, 8), kOne);          // transform[3][3]
-  EXPECT_EQ(slice(b, 129, 8), kHalf);                // inverse[0][0] at 1 + 128
-  EXPECT_EQ(slice(b, 257, 4), (Bytes{3, 0, 4, 0}));  // map[0][Out], map[0][In]
+  EXPECT_EQ(slice(b, 1, 8), kOne);                         // transform[0][0]
+  EXPECT_EQ(slice(b, 1 + 8 * 12, 8), kMinusFive);          // transform[3][0] = element 12
+  EXPECT_EQ(slice(b, 1 + 8 * 15, 8), kOne);                // transform[3][3]
+  EXPECT_EQ(slice(b, 129, 8), kHalf);                      // inverse[0][0] at 1 + 128
+  EXPECT_EQ(slice(b, 257, 4), (Bytes{3, 0, 4, 0}));        // map[0][Out], map[0][In]
   EXPECT_EQ(slice(b, 277, 4), (Bytes{0xFF, 0xFF, 7, 0}));  // map[5] at 257 + 5*4
   EXPECT_EQ(slice(b, 281, 2), (Bytes{0x02, 0x01}));        // priority
   EXPECT_EQ(slice(b, 283, 8), kZero);                      // indx

@@ -4,13 +4,13 @@
 // misses, touching and equal ends, so every operator branch and E57 occur),
 // with and without Q4's early exit; and the trees csg1991 rejects are not
 // compiled.
+#include "src/prime/geom/csg_program_1991.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
 #include <vector>
-
-#include "src/prime/geom/csg_program_1991.h"
 
 namespace prime {
 namespace {

@@ -3,11 +3,11 @@
 // listing's formulas or from the geometry of the unit primitive; the working is
 // in the comment next to it. Quirks are named by their errata ids
 // (docs/prime/listing-errata.md).
+#include "src/prime/geom/primitives_1991.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "src/prime/geom/primitives_1991.h"
 
 namespace prime {
 namespace {

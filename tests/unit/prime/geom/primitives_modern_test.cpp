@@ -1,19 +1,20 @@
 // Modern-profile primitives: whole-line intervals with outward unit normals,
 // against values worked out by hand.
+#include "src/prime/geom/primitives_modern.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "src/prime/geom/csg_modern.h"
-#include "src/prime/geom/primitives_modern.h"
 
 namespace prime {
 namespace {
 
 using io::PrimType;
 
-void expectInterval(char type, const Ray& r, double tIn, double tOut, const Vec3& nIn, const Vec3& nOut,
-                    double tol = 1e-12) {
+void expectInterval(char type, const Ray& r, double tIn, double tOut, const Vec3& nIn,
+                    const Vec3& nOut, double tol = 1e-12) {
   PrimHit in;
   ASSERT_TRUE(intersectModern(io::primType(type).value(), r, in)) << type;
   EXPECT_NEAR(in.tIn, tIn, tol) << type;
@@ -81,7 +82,8 @@ TEST(PrimitivesModern, PyramidFrontAndBackFaces) {
   // At y = 0.25 the section is z in [0.125, 0.875] (front 0.5y - z <= 0,
   // back 0.5y + z <= 1); normals (0,.5,-1) and (0,.5,1) normalised.
   const double k = 1 / std::sqrt(1.25);
-  expectInterval('Y', {{0.5, 0.25, -1}, {0, 0, 1}}, 1.125, 1.875, {0, 0.5 * k, -k}, {0, 0.5 * k, k});
+  expectInterval('Y', {{0.5, 0.25, -1}, {0, 0, 1}}, 1.125, 1.875, {0, 0.5 * k, -k},
+                 {0, 0.5 * k, k});
   // Up through the base (normal -y) to the apex region: x = z = 0.5 leaves
   // where 0.5y <= 0.5 stops holding, y = 1 (the apex; any side plane).
   PrimHit in;

@@ -3,13 +3,13 @@
 // printed code; where it involves acos, the closed form is written with the
 // listing's constants (PiInv = 0.318309886, TwoPiInv = 0.1591549) and the
 // decimal value is given in the comment.
+#include "src/prime/geom/uv_mapping_1991.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include "src/prime/geom/uv_mapping_1991.h"
 
 namespace prime {
 namespace {

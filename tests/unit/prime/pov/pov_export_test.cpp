@@ -2,13 +2,14 @@
 // in-memory scene, the matrix and camera values worked out by hand, and the
 // texture images.
 #include "src/prime/pov/pov_export.h"
-#include "src/prime/math/listing_matrix.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <regex>
 #include <string>
+
+#include "src/prime/math/listing_matrix.h"
 
 namespace prime {
 namespace {

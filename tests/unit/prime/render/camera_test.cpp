@@ -1,7 +1,7 @@
 // The listing's camera and window (RayTrace 7059-7140, Coords 3110-3216).
-#include <gtest/gtest.h>
-
 #include "src/prime/render/camera.h"
+
+#include <gtest/gtest.h>
 
 namespace prime {
 namespace {

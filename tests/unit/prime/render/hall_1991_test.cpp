@@ -9,7 +9,6 @@
 //  * ACos/Cos go through degrees with Radient = 57.29578 and back, which
 //    returns c to within ~1e-16, far inside the 1e-12 tolerance.
 #include "src/prime/render/hall_1991.h"
-#include "src/prime/math/listing_vec.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +16,8 @@
 #include <cstdint>
 #include <limits>
 #include <vector>
+
+#include "src/prime/math/listing_vec.h"
 
 namespace prime {
 namespace {

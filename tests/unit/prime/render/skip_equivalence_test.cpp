@@ -7,8 +7,8 @@
 #include <cstring>
 #include <random>
 
-#include "src/prime/render/tracer_1991.h"
 #include "src/prime/math/listing_matrix.h"
+#include "src/prime/render/tracer_1991.h"
 
 namespace prime {
 namespace {
@@ -43,7 +43,7 @@ Scene randomScene(unsigned seed, int objects) {
     o.hue = {0.3, 0.2, {0.6, 0.4, 0.2}, 0.999, 3, 3, 1.5};
     if (i % 4 == 1) o.hue.kDR = 1.0;  // kSR = 0: no reflected ray needed
     if (i % 4 == 2) o.hue.kDT = 1.0;  // kST = 0: no transmitted ray needed
-    if (i % 3 == 0) {  // a CSG object: (a op b) with a bound
+    if (i % 3 == 0) {                 // a CSG object: (a op b) with a bound
       const char op = "+-&"[i % 9 / 3];
       const int a = addPrim(types[i % 5]), b = addPrim(types[(i + 2) % 5]);
       o.entries = {CsgEntry{op, 1, 2}, CsgEntry{'P', a, 0}, CsgEntry{'P', b, 0}};
@@ -84,8 +84,8 @@ TEST(SkipEquivalence, BvhAndBoxCullingGiveTheLinearSearchColours) {
       b = fast.castRay(ray, 0, sFast);
       hits += a != scene.background ? 1 : 0;
       ASSERT_EQ(std::memcmp(a.data(), b.data(), sizeof a), 0)
-          << "seed " << seed << " ray " << i << ": (" << a[0] << "," << a[1] << "," << a[2] << ") vs (" << b[0]
-          << "," << b[1] << "," << b[2] << ")";
+          << "seed " << seed << " ray " << i << ": (" << a[0] << "," << a[1] << "," << a[2]
+          << ") vs (" << b[0] << "," << b[1] << "," << b[2] << ")";
     }
     EXPECT_GT(hits, 500);  // the rays do meet objects
     EXPECT_LT(fatal, 40);  // and almost all of them are compared

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "src/prime/math/listing_matrix.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/scene/scene.h"
-#include "src/prime/math/listing_matrix.h"
 
 namespace prime::test {
 

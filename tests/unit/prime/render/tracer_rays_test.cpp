@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "src/prime/render/tracer_1991.h"
 #include "src/prime/math/listing_matrix.h"
+#include "src/prime/render/tracer_1991.h"
 
 namespace prime {
 namespace {
@@ -95,7 +95,8 @@ TEST(TransmittedRay, SphereRotatedSoTheLocalExitNormalReflectsInternally_K5_E46)
   const Tracer1991 tracer(s);
   TraceStats stats;
   double sT = 0;
-  const Ray out = tracer.transmittedRay({{-110, 0, 0}, {1, 0, 0}}, s.objects[0], 10.0, {-1, 0, 0}, 1.5, sT, stats);
+  const Ray out = tracer.transmittedRay({{-110, 0, 0}, {1, 0, 0}}, s.objects[0], 10.0, {-1, 0, 0},
+                                        1.5, sT, stats);
   EXPECT_EQ(stats.totalInternalReflections, 1u);
   EXPECT_EQ(stats.emptyTransmitLists, 1u);
   EXPECT_NEAR(sT, 201.0, 1e-6);
@@ -116,8 +117,8 @@ TEST(TransmittedRay, CapStopsARayTrappedForEver_E59) {
   const Vec3 d{std::sin(M_PI / 3), 0, std::cos(M_PI / 3)};
   TraceStats stats;
   double sT = 0;
-  const Ray out = tracer.transmittedRay({{90 - 10 * d[0], 50, -10 * d[2]}, d}, s.objects[0], 10.0, {0, 0, -1}, 1.5,
-                                        sT, stats);
+  const Ray out = tracer.transmittedRay({{90 - 10 * d[0], 50, -10 * d[2]}, d}, s.objects[0], 10.0,
+                                        {0, 0, -1}, 1.5, sT, stats);
   EXPECT_EQ(stats.cappedTirLoops, 1u);
   expectVec(out.d, {-r3, 0, k});
   expectVec(out.o, {100 + r3 - r3, 50, 10 * sq2 - k + k});  // (exit - d) + d

@@ -1,5 +1,7 @@
 // Bad scene data that only shows at render time is reported when the scene
 // is loaded, naming the object, primitive and file.
+#include "src/prime/scene/scene_loader.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -7,7 +9,6 @@
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/obj_file.h"
 #include "legacy_io/prime/prim_file.h"
-#include "src/prime/scene/scene_loader.h"
 #include "tests/support/temp_scene.h"
 
 namespace prime {
@@ -80,7 +81,8 @@ TEST(SceneLoader, PrimitiveNumberOutOfRange) {
   obj.entries[0].l = 5;
   io::writeObjFile(s.path("obj/O1").string(), obj);
   const std::string msg = loadError(s);
-  EXPECT_THAT(msg, HasSubstr("obj/O1 (byte 76): entry 0 primitive: expected a primitive number 0..0"));
+  EXPECT_THAT(msg,
+              HasSubstr("obj/O1 (byte 76): entry 0 primitive: expected a primitive number 0..0"));
 }
 
 TEST(SceneLoader, CycleInABinaryObjectFile) {
@@ -101,7 +103,8 @@ TEST(SceneLoader, StaleDatabasesAreReported) {
   test::TempScene s;
   sphereScene(s);
   EXPECT_TRUE(staleDatabases(io::SceneDir(s.path())).empty());
-  const auto later = std::filesystem::last_write_time(s.path("prim/PrimFile")) + std::chrono::seconds(5);
+  const auto later =
+      std::filesystem::last_write_time(s.path("prim/PrimFile")) + std::chrono::seconds(5);
   std::filesystem::last_write_time(s.path("prim/S1.txt"), later);
   const auto stale = staleDatabases(io::SceneDir(s.path()));
   ASSERT_EQ(stale.size(), 1u);
