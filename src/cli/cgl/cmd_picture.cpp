@@ -9,6 +9,7 @@
 #include "palette/png_image.h"
 #include "palette/window/live_rgb_frame.h"
 #include "src/cli/cgl/commands.h"
+#include "src/cli/cgl/picture.h"
 #include "src/cli/live_render.h"
 #include "src/cli/view_8514.h"
 
@@ -29,18 +30,6 @@ std::string lowerExtension(const std::string& path) {
 Frame readPicture(const std::string& path, const std::string& format) {
   const bool raw = format == "raw" || (format.empty() && lowerExtension(path) == ".raw");
   return raw ? prime::cgl::readRawFile(path) : prime::cgl::readRleFile(path);
-}
-
-Image8 toImage8(const Frame& frame) {
-  Image8 img;
-  img.width = img.height = Frame::kSize;
-  img.rgb.reserve(frame.words.size() * 3);
-  for (std::uint32_t w : frame.words) {
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::redOf(w)));
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::greenOf(w)));
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::blueOf(w)));
-  }
-  return img;
 }
 
 }  // namespace
@@ -78,7 +67,7 @@ void addPictureCommands(CLI::App& app, Action& action) {
           write8514Png(*out, prime::cgl::toRgbImage(frame));
           what = "PNG on the 8514/A palette";
         } else {
-          writePng(*out, toImage8(frame));
+          writePng(*out, frameImage(frame));
           what = "PNG";
         }
         if (!*quiet)

@@ -16,6 +16,7 @@
 #include "palette/window/live_rgb_frame.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/cgl/picture.h"
 #include "src/cli/live_render.h"
 #include "src/cli/view_8514.h"
 
@@ -24,18 +25,6 @@ namespace prime::cli::cgl {
 namespace {
 
 using prime::cgl::Frame;
-
-Image8 toImage8(const Frame& frame) {
-  Image8 img;
-  img.width = img.height = Frame::kSize;
-  img.rgb.reserve(frame.words.size() * 3);
-  for (std::uint32_t w : frame.words) {
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::redOf(w)));
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::greenOf(w)));
-    img.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::blueOf(w)));
-  }
-  return img;
-}
 
 // The program's report of its parameters (Appendix 1 section 5: `quiet`
 // suppresses "the report of parameters, object list and memory allocation").
@@ -200,7 +189,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
         wrote(*raw);
       }
       if (!png->empty()) {
-        writePng(*png, toImage8(result.frame));
+        writePng(*png, frameImage(result.frame));
         wrote(*png);
       }
       if (!png8514->empty()) {
