@@ -645,6 +645,24 @@ def spline_vases():
     return s
 
 
+def mask_controls(count, nose, eye_width, eye_height, mouth):
+    """A face as a height field over [-1, 1]^2 (the port's stand-in for the lost digitized
+    Halloween mask of Figure 53): count x count control vertices, z the height."""
+    def height(x, y):
+        face = max(0.0, 1.0 - (x / 0.8) ** 2 - (y / 1.0) ** 2)
+        z = 0.45 * math.sqrt(face)
+        z += 0.18 * math.exp(-((x / nose) ** 2) - ((y + 0.05) / 0.3) ** 2)  # nose
+        for ex in (-0.3, 0.3):
+            z -= 0.12 * math.exp(-(((x - ex) / eye_width) ** 2) - ((y - 0.25) / eye_height) ** 2)
+        z -= 0.08 * math.exp(-((x / 0.3) ** 2) - ((y + 0.5) / mouth) ** 2)  # mouth
+        return z
+
+    last = count - 1
+    return [[(-1.0 + 2.0 * i / last, 1.0 - 2.0 * j / last,
+              height(-1.0 + 2.0 * i / last, 1.0 - 2.0 * j / last)) for i in range(count)]
+            for j in range(count)]
+
+
 def spline_mask():
     s = Scene("a mask-sized mesh of 2,025 vertices (Tables 3 and 6)",
               ["Sweeney 1985, Tables 3 and 6, the 'mask' of Figure 53 (a Halloween mask, cut into",
@@ -658,20 +676,7 @@ def spline_mask():
     s.ambient(0.0005)
     s.light("infinity", 0.5, 0.7, 1.0, 0.0006)
 
-    def height(x, y):
-        face = max(0.0, 1.0 - (x / 0.8) ** 2 - (y / 1.0) ** 2)
-        z = 0.45 * math.sqrt(face)
-        z += 0.18 * math.exp(-((x / 0.09) ** 2) - ((y + 0.05) / 0.3) ** 2)  # nose
-        for ex in (-0.3, 0.3):
-            z -= 0.12 * math.exp(-(((x - ex) / 0.14) ** 2) - ((y - 0.25) / 0.09) ** 2)  # eyes
-        z -= 0.08 * math.exp(-((x / 0.3) ** 2) - ((y + 0.5) / 0.06) ** 2)  # mouth
-        return z
-
-    controls = []
-    for j in range(41):
-        y = 1.0 - 2.0 * j / 40.0
-        controls.append([(-1.0 + 2.0 * i / 40.0, y, height(-1.0 + 2.0 * i / 40.0, y))
-                         for i in range(41)])
+    controls = mask_controls(41, 0.09, 0.14, 0.09, 0.06)
     s.spline(1, 41, "triple", 41, "triple", 2, 0.55, controls)
     return s
 
@@ -723,20 +728,7 @@ def gallery():
     s.node("rotate 08 00 y -25.0", "turned towards the sphere")
     s.node("scale 09 00 0.42 0.52 0.42")
 
-    def height(x, y):
-        face = max(0.0, 1.0 - (x / 0.8) ** 2 - (y / 1.0) ** 2)
-        z = 0.45 * math.sqrt(face)
-        z += 0.18 * math.exp(-((x / 0.12) ** 2) - ((y + 0.05) / 0.3) ** 2)  # nose
-        for ex in (-0.3, 0.3):
-            z -= 0.12 * math.exp(-(((x - ex) / 0.16) ** 2) - ((y - 0.25) / 0.11) ** 2)  # eyes
-        z -= 0.08 * math.exp(-((x / 0.3) ** 2) - ((y + 0.5) / 0.08) ** 2)  # mouth
-        return z
-
-    controls = []
-    for j in range(21):
-        y = 1.0 - 2.0 * j / 20.0
-        controls.append([(-1.0 + 2.0 * i / 20.0, y, height(-1.0 + 2.0 * i / 20.0, y))
-                         for i in range(21)])
+    controls = mask_controls(21, 0.12, 0.16, 0.11, 0.08)
     s.spline(4, 21, "triple", 21, "triple", 2, 0.55, controls, comment="the copper mask")
     return s
 
