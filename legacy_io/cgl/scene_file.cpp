@@ -64,20 +64,9 @@ std::string joined(const std::vector<std::string>& list) {
   return s;
 }
 
-// Control bytes escaped, long words cut, quoted: what a message shows.
+// Control bytes escaped, long words cut, quoted: what a message shows. (legacy_io/common/error.h)
 std::string shown(std::string_view word) {
-  std::string out;
-  for (unsigned char c : word) {
-    if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  if (out.size() > 60) out = out.substr(0, 60) + "...";
-  return "'" + out + "'";
+  return io::quotedWord(word, 60);
 }
 
 bool allDigits(std::string_view w) {

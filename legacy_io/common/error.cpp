@@ -1,6 +1,23 @@
 #include "legacy_io/common/error.h"
 
+#include <cstdio>
+
 namespace prime::io {
+
+std::string quotedWord(std::string_view word, std::size_t maxChars) {
+  std::string out;
+  for (unsigned char c : word) {
+    if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (out.size() > maxChars) out = out.substr(0, maxChars) + "...";
+  return "'" + out + "'";
+}
 
 std::string describe(const InputLocation& where) {
   std::string s = where.file;

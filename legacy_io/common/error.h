@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace prime::io {
 
@@ -32,6 +33,11 @@ class InputError : public std::runtime_error {
   InputLocation where_;
   std::string field_, expected_, found_;
 };
+
+// A word of an input as an error message shows it: quoted, control bytes
+// escaped as \xNN (a NUL must not cut the message), cut after `maxChars`
+// characters with "...".
+std::string quotedWord(std::string_view word, std::size_t maxChars);
 
 // "file:line: ", "file:line:column (token N): ", "file (byte N): " or "file: ".
 std::string describe(const InputLocation& where);

@@ -85,20 +85,9 @@ std::string fieldName(const Field& f, int component) {
                                     : std::string(xyz[component]));
 }
 
-// Escapes control bytes so that a message shows what the file holds.
+// Escapes control bytes so that a message shows what the file holds. (legacy_io/common/error.h)
 std::string shown(std::string_view word) {
-  std::string out;
-  for (unsigned char c : word) {
-    if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  if (out.size() > 40) out = out.substr(0, 40) + "...";
-  return "'" + out + "'";
+  return io::quotedWord(word, 40);
 }
 
 std::string FieldRef::name() const {
