@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace prime {
@@ -70,6 +72,10 @@ TEST(RenderRows, TheFirstErrorStopsTheRenderAndIsRethrown) {
                           [&](int row, int) -> std::uint64_t {
                             ++started;
                             if (row == 3) throw std::runtime_error("row 3 failed");
+                            // Rows take a while, so the other thread cannot finish
+                            // all 1000 before the error reaches it (under a
+                            // sanitizer, empty rows sometimes did: a flaky test).
+                            std::this_thread::sleep_for(std::chrono::microseconds(200));
                             return 0;
                           }),
                std::runtime_error);
