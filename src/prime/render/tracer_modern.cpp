@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "src/prime/geom/csg_modern.h"
 #include "src/prime/geom/primitives_modern.h"
@@ -118,6 +120,15 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
   inverse_.reserve(scene.prims.size());
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
+  programs_.reserve(scene.objects.size());
+  for (const SceneObject& obj : scene.objects) {
+    try {
+      programs_.push_back(compileModern(obj.entries));
+    } catch (const CsgError& e) {  // (loadScene refuses such trees: a scene built in code)
+      throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
+                               std::to_string(obj.number) + "): " + e.what());
+    }
+  }
 }
 
 TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
@@ -134,7 +145,7 @@ TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, Trac
     if (!ok) return std::nullopt;
     return in;
   };
-  TList list = csgModern(obj.entries, leaf);
+  TList list = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())].runModern(leaf);
   if (probe) probe->csgList(depth, obj.number, list);
   return list;
 }

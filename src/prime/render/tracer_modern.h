@@ -14,6 +14,7 @@
 #include <array>
 #include <vector>
 
+#include "src/prime/geom/csg_program_1991.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/probe.h"
 #include "src/prime/render/trace_options.h"
@@ -67,7 +68,8 @@ class TracerModern {
   RayTreeOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
-  std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform
+  std::vector<Matrix4> inverse_;          // accurateInverse of every primitive's transform
+  std::vector<CsgProgram1991> programs_;  // per object: its tree compiled (compileModern)
 };
 
 // The inverse of an affine row-vector transform, accurate to about one

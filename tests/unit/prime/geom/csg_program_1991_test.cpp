@@ -1,16 +1,20 @@
 // The flattened CSG program must return exactly what the tree walk csg1991
-// returns: same lists node for node, same leaves asked in the same order,
-// same errors. Checked on random trees with random leaf intervals (hits,
-// misses, touching and equal ends, so every operator branch and E57 occur),
-// with and without Q4's early exit; and the trees csg1991 rejects are not
-// compiled.
+// returns: same lists node for node, same leaves asked in the same order
+// (a shared subtree's leaves only on its first use, M30), same errors. Checked on random trees with
+// random leaf intervals (hits, misses, touching and equal ends, so every operator branch and E57
+// occur), with and without Q4's early exit; and the trees csg1991 rejects are not compiled.
 #include "src/prime/geom/csg_program_1991.h"
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
+#include <set>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include "src/prime/geom/csg_modern.h"
 
 namespace prime {
 namespace {
@@ -51,6 +55,13 @@ std::vector<CsgEntry> randomTree(std::mt19937& rng, int leaves, bool share) {
   return e;
 }
 
+bool isSubsequence(const std::vector<int>& part, const std::vector<int>& whole) {
+  std::size_t i = 0;
+  for (int w : whole)
+    if (i < part.size() && part[i] == w) ++i;
+  return i == part.size();
+}
+
 struct Outcome {
   TList list;
   std::vector<int> asked;  // leaves in the order asked
@@ -74,7 +85,7 @@ Outcome outcome(Run&& run, const std::vector<std::optional<PrimHit>>& leafHits) 
 
 TEST(CsgProgram1991, RandomTreesGiveTheTreeWalksLists) {
   std::mt19937 rng(1991);
-  int compared = 0, errors = 0, skipsTaken = 0, nonEmpty = 0;
+  int compared = 0, errors = 0, skipsTaken = 0, nonEmpty = 0, fewerAsked = 0;
   for (int trial = 0; trial < 6000; ++trial) {
     const int leaves = 1 + static_cast<int>(rng() % 7);
     const auto entries = randomTree(rng, leaves, trial % 3 == 0);
@@ -92,7 +103,18 @@ TEST(CsgProgram1991, RandomTreesGiveTheTreeWalksLists) {
     const Outcome walk = outcome([&](LeafFn f) { return csg1991(entries, f, options); }, hits);
     const Outcome flat = outcome([&](LeafFn f) { return program->run(f); }, hits);
     ASSERT_EQ(flat.error, walk.error) << "trial " << trial;
-    ASSERT_EQ(flat.asked, walk.asked) << "trial " << trial;
+    if (program->sharedSubtrees() == 0) {
+      ASSERT_EQ(flat.asked, walk.asked) << "trial " << trial;
+    } else if (flat.error.empty()) {
+      // M30: the repeated uses of a shared subtree ask nothing again, so the
+      // program's questions are the walk's with some left out, in order,
+      // and every primitive the walk asked about is asked once at least.
+      ASSERT_TRUE(isSubsequence(flat.asked, walk.asked)) << "trial " << trial;
+      ASSERT_EQ(std::set<int>(flat.asked.begin(), flat.asked.end()),
+                std::set<int>(walk.asked.begin(), walk.asked.end()))
+          << "trial " << trial;
+      fewerAsked += flat.asked.size() < walk.asked.size();
+    }
     ASSERT_TRUE(!walk.error.empty() || flat.list == walk.list) << "trial " << trial << "\n"
                                                                << flat.list << "\n"
                                                                << walk.list;
@@ -106,6 +128,7 @@ TEST(CsgProgram1991, RandomTreesGiveTheTreeWalksLists) {
   EXPECT_GT(errors, 50);       // E57 (Difference's double Kill) is met ...
   EXPECT_GT(nonEmpty, 2000);   // ... and so are real lists
   EXPECT_GT(skipsTaken, 200);  // and Q4 skips right subtrees
+  EXPECT_GT(fewerAsked, 100);  // and shared subtrees are evaluated once
 }
 
 TEST(CsgProgram1991, TreesTheWalkRejectsAreNotCompiled) {
@@ -133,11 +156,13 @@ TEST(CsgProgram1991, TreesTheWalkRejectsAreNotCompiled) {
 }
 
 TEST(CsgProgram1991, SharedSubtreesAreFlattenedOncePerReference) {
-  // (a - a) with the same entry twice: two leaf steps, one Difference.
+  // (a - a) with the same LEAF twice: two leaf steps, one Difference, the
+  // end (a shared leaf is asked again: only operators are stored, M30).
   const std::vector<CsgEntry> e = {{'-', 1, 1}, {'P', 3, 0}};
   const auto p = CsgProgram1991::compile(e);
   ASSERT_TRUE(p.has_value());
-  EXPECT_EQ(p->size(), 3u);
+  EXPECT_EQ(p->size(), 4u);
+  EXPECT_EQ(p->sharedSubtrees(), 0u);
   std::vector<int> asked;
   auto leaf = [&](int prim) -> std::optional<PrimHit> {
     asked.push_back(prim);
@@ -154,6 +179,102 @@ TEST(CsgProgram1991, SharedSubtreesAreFlattenedOncePerReference) {
   EXPECT_THROW(csg1991(e, leaf), CsgError);
   asked.resize(2);
   EXPECT_EQ(asked, (std::vector<int>{3, 3}));
+}
+
+// M30: an operator used twice is evaluated once per ray; the list is the
+// walk's. (b & c) + (b & c): the walk asks 1, 2, 1, 2; the program 1, 2.
+TEST(CsgProgram1991, ASharedOperatorIsEvaluatedOncePerRay) {
+  const std::vector<CsgEntry> e = {{'+', 1, 1}, {'&', 2, 3}, {'P', 1, 0}, {'P', 2, 0}};
+  const std::vector<std::optional<PrimHit>> hits = {std::nullopt, PrimHit{1, 4, {}, {}},
+                                                    PrimHit{2, 6, {}, {}}};
+  const auto p = CsgProgram1991::compile(e);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(p->sharedSubtrees(), 1u);
+  EXPECT_EQ(p->expandedVisits(), 7u);  // root + 2 x (& + 2 leaves)
+  const Outcome walk = outcome([&](LeafFn f) { return csg1991(e, f); }, hits);
+  for (int ray = 0; ray < 3; ++ray) {  // stored lists are per ray: the same each time
+    const Outcome flat = outcome([&](LeafFn f) { return p->run(f); }, hits);
+    EXPECT_EQ(walk.asked, (std::vector<int>{1, 2, 1, 2}));
+    EXPECT_EQ(flat.asked, (std::vector<int>{1, 2}));
+    EXPECT_EQ(flat.list, walk.list);
+    // [2,4] from the intersection, united with itself: the printed Union
+    // keeps [2,4] (equal pairs, I13's union counterpart).
+    ASSERT_FALSE(flat.list.empty());
+    EXPECT_EQ(flat.list[0].t, 2.0);
+  }
+}
+
+// 40 nested doublings: 2^41 - 1 entry visits for the listing's walk.
+std::vector<CsgEntry> doublings(int levels) {
+  std::vector<CsgEntry> e;
+  for (int i = 0; i < levels; ++i) e.push_back({'+', i + 1, i + 1});
+  e.push_back({'P', 0, 0});
+  return e;
+}
+
+TEST(CsgProgram1991, NestedSharingPastTheBudgetIsLeftToTheWalk) {
+  // The 1991 profile keeps the listing's visit limit: past maxVisits the
+  // program is not compiled and csg1991 throws kTooManyVisits as before.
+  const auto e = doublings(40);
+  EXPECT_FALSE(CsgProgram1991::compile(e).has_value());
+  EXPECT_EQ(csgExpandedVisits(e), (std::uint64_t{1} << 41) - 1);
+  try {
+    (void)CsgProgram1991::compileChecked(e);
+    ADD_FAILURE() << "compiled";
+  } catch (const CsgError& err) {
+    EXPECT_EQ(err.kind(), CsgError::Kind::kTooManyVisits);
+  }
+  // Without a budget (the modern profile) it compiles, with entries 1..39
+  // as stored subtrees, and asks the one leaf twice per ray (entry 39 uses
+  // it twice, and leaves are not stored) instead of 2^40 times.
+  Csg1991Options unlimited;
+  unlimited.maxVisits = std::numeric_limits<std::size_t>::max();
+  const auto p = CsgProgram1991::compile(e, unlimited);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(p->sharedSubtrees(), 39u);  // entries 1..39 (entry 40 is the leaf)
+  int asked = 0;
+  auto leaf = [&](int) -> std::optional<PrimHit> {
+    ++asked;
+    return PrimHit{1, 2, {}, {}};
+  };
+  const TList l = p->runModern(leaf);
+  EXPECT_EQ(asked, 2);
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[0].t, 1.0);
+  EXPECT_EQ(l[1].t, 2.0);
+}
+
+// M31: chains far deeper than any stack could recurse, on a thread with the
+// default stack: compile and run are iterative. Left chain: ((p0 + p1) + p2)
+// + ...; right chain: p1 - (p2 - (... - (pD - p0))).
+TEST(CsgProgram1991, DeepChainsNeedNoStack) {
+  constexpr int kDepth = 200000;
+  std::vector<CsgEntry> left, right;
+  for (int i = 0; i < kDepth; ++i) left.push_back({'+', i + 1, kDepth + 1 + i});
+  left.push_back({'P', 0, 0});
+  for (int i = 0; i < kDepth; ++i) left.push_back({'P', i + 1, 0});
+  for (int i = 0; i < kDepth; ++i) right.push_back({'-', kDepth + 1 + i, i + 1});
+  right.push_back({'P', 0, 0});
+  for (int i = 0; i < kDepth; ++i) right.push_back({'P', i + 1, 0});
+  // Primitive k covers [k, k + 1.5]: the union is [0, kDepth + 1.5]. In the
+  // right chain pD - p0 = [D, D + 1.5], so p(D-1) - that = [D - 1, D], and
+  // down the chain pk - (...) = [k, k + 1]: the root's list is [1, 2].
+  auto leaf = [](int prim) -> std::optional<PrimHit> {
+    return PrimHit{static_cast<double>(prim), prim + 1.5, {}, {}};
+  };
+  TList unionList, differenceList;
+  std::thread t([&] {
+    unionList = csgModern(left, leaf);
+    differenceList = csgModern(right, leaf);
+  });
+  t.join();
+  ASSERT_EQ(unionList.size(), 2u);
+  EXPECT_EQ(unionList[0].t, 0.0);
+  EXPECT_EQ(unionList[1].t, kDepth + 1.5);
+  ASSERT_FALSE(differenceList.empty());
+  ASSERT_EQ(differenceList.size(), 2u);
+  EXPECT_EQ(differenceList[0].t, 1.0);
+  EXPECT_EQ(differenceList[1].t, 2.0);
 }
 
 }  // namespace
