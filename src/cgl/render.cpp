@@ -176,6 +176,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
         const int imageRow = Frame::kSize - 1 - y;
         if (!tables.empty()) tables[static_cast<std::size_t>(thread)].startScanline(y);
         for (int x = p.xleft; x <= p.xright; ++x) {
+          checkAbort(callbacks.abort);  // R9
           Rgb8 c;
           if (tables.empty()) {
             // Figure 41 (CGL-Q1): one ray through the pixel's corner (x, y).

@@ -30,7 +30,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
       [&](int row, int thread) -> std::uint64_t {
         TraceStats& stats = perThread[static_cast<std::size_t>(thread)];
         const std::uint64_t before = stats.rays();
-        for (int x = 0; x < width; ++x) result.raster.at(row, x) = tracer.pixel(x, row, stats);
+        for (int x = 0; x < width; ++x) {
+          checkAbort(callbacks.abort);  // R9
+          result.raster.at(row, x) = tracer.pixel(x, row, stats);
+        }
         return stats.rays() - before;
       },
       rowCallbacks);

@@ -51,6 +51,8 @@ RowsRun renderRows(int rows, int threads,
       if (row >= rows) break;
       try {
         raysSoFar += renderRow(row, thread);
+      } catch (const RowAborted&) {
+        break;  // the abort flag is set: the row is left unfinished
       } catch (...) {
         {
           std::lock_guard lock(mutex);

@@ -1,6 +1,7 @@
 // The one row scheduler of every system: rows handed out to a pool of
 // threads, progress reported on the calling thread, an abort flag honoured
-// between rows, and the first exception stopping everyone and rethrown.
+// between rows and, through checkAbort, between pixels (R9), and the first
+// exception stopping everyone and rethrown.
 // Each row is rendered by exactly one call and writes only its own pixels,
 // so the picture is the same bytes for any thread count.
 #pragma once
@@ -21,6 +22,17 @@ struct RowCallbacks {
   const std::atomic<bool>* abort = nullptr;
 };
 
+// Thrown by checkAbort inside a row: renderRows abandons the row (it is not
+// finished: no rowDone, not counted) and ends the run as aborted.
+struct RowAborted {};
+
+// For a row's pixel loop (R9): one relaxed load per call, so Ctrl-C or Esc
+// stops a render within one pixel instead of one row (a row of a heavy
+// scene can take minutes). Throws RowAborted when `abort` is set.
+inline void checkAbort(const std::atomic<bool>* abort) {
+  if (abort && abort->load(std::memory_order_relaxed)) throw RowAborted{};
+}
+
 struct RowsRun {
   double seconds = 0;
   int threads = 1;
@@ -40,7 +52,7 @@ int threadCount(int requested, int rows);
 // threadCount(threads, rows) threads; `thread` (0..threads-1) indexes the
 // caller's per-thread state (statistics, caches). renderRow returns the rays
 // it cast, for progress. The first exception stops all threads and is
-// rethrown here.
+// rethrown here; RowAborted (checkAbort) only abandons its row.
 RowsRun renderRows(int rows, int threads,
                    const std::function<std::uint64_t(int row, int thread)>& renderRow,
                    const RowCallbacks& callbacks = {});

@@ -51,6 +51,8 @@ void addProbeCommand(CLI::App& app, Action& action) {
       } else {
         r.o = {(*ray)[0], (*ray)[1], (*ray)[2]};
         r.d = {(*ray)[3], (*ray)[4], (*ray)[5]};
+        if (r.d == Vec3{0, 0, 0})  // R10: no direction, no ray
+          throw CLI::ValidationError("--ray", "the direction is 0 0 0; give a non-zero direction");
         where = "ray from " + fmt(r.o) + " towards " + fmt(r.d);
       }
       // The tracer of the chosen profile; only the modern one says so (the

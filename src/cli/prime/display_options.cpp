@@ -1,6 +1,9 @@
 #include "src/cli/prime/display_options.h"
 
+#include <cstdint>
 #include <iostream>
+
+#include "legacy_io/common/error.h"
 
 namespace prime::cli {
 
@@ -74,6 +77,17 @@ Geometry geometryOf(const DisplayOptions& o) {
 
 io::GraphFilePrefix readGraphForDisplay(const std::string& path, const Geometry& g, bool quiet) {
   io::GraphFilePrefix f = io::readGraphFilePrefix(path);
+  // G30: only the .partial file an aborted trace leaves may stop early; a
+  // short graph_scr (a truncated copy, a full disk) is refused rather than
+  // shown full-size with its missing rows black.
+  const bool partialName = path.size() >= 8 && path.compare(path.size() - 8, 8, ".partial") == 0;
+  if (!f.complete() && !partialName)
+    throw io::InputError(
+        {path, std::nullopt, 6 + 2 * static_cast<std::uint64_t>(f.pixelsPresent)}, "pixel data",
+        std::to_string(f.graph.pixels.size()) + " pixels (" +
+            std::to_string(6 + 2 * f.graph.pixels.size()) +
+            " bytes) for its header's size; only a .partial file (an aborted trace) may be short",
+        std::to_string(f.pixelsPresent) + " whole pixels: the file is truncated");
   if (quiet) return f;
   const int w = f.graph.width();
   if (!f.complete())

@@ -4,6 +4,7 @@
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/prime/model_builder.h"
+#include "src/prime/render/probe.h"
 #include "src/prime/scene/scene_loader.h"
 
 namespace prime::cli {
@@ -50,6 +51,19 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
 
 void finishRenderOptions(RenderOptions& o) {
   applyCameraOptions(o.camera, o.settings.camera);
+  // R10: a window of no size casts every primary ray in one direction (or
+  // none); the listing would have drawn one flat colour and exited 0. The
+  // window runs across from --window-left to --window-right, and down from
+  // --window-left to the origin (K23).
+  const CameraSettings& c = o.settings.camera;
+  if (c.windowLeft == c.windowRight)
+    throw CLI::ValidationError("--window-left/--window-right",
+                               "the window has zero width: both corners are " + fmt(c.windowLeft));
+  if (c.windowLeft == Vec3{0, 0, 0})
+    throw CLI::ValidationError(
+        "--window-left",
+        "the window has zero height: its top-left corner is the origin (the window runs down "
+        "from it to the origin, errata K23)");
   o.settings.mapping = o.palette == "plate3" ? ColorMapping::Plate3 : ColorMapping::Listing;
   o.settings.profile = o.profile == "modern" ? Profile::Modern : Profile::Listing1991;
   if (o.samples > 1) {

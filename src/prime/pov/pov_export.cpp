@@ -7,6 +7,8 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/records.h"
@@ -266,7 +268,39 @@ class Exporter {
 
   void object(const SceneObject& obj) {
     const ObjectLook L = look(obj);
-    std::string body = csg(obj, L, 0, 0, 0);
+    const Tree tree = treeOf(obj);
+    // M32: an operator entry the tree uses more than once is written once,
+    // as a #declare (one per side it is seen from), before the object; its
+    // uses are `object { name }`. Declarations come children first (post-order).
+    std::map<std::pair<int, int>, std::string> declared;  // (entry, inside) -> name
+    std::vector<std::pair<int, int>> pending, all;
+    auto nameOf = [&](int entry, int inside) {
+      const auto key = std::make_pair(entry, inside);
+      auto it = declared.find(key);
+      if (it != declared.end()) return it->second;
+      const std::string name = "PrimeO" + std::to_string(obj.number) + "_E" +
+                               std::to_string(entry) + (inside ? "_In" : "");
+      declared.emplace(key, name);
+      pending.push_back(key);
+      all.push_back(key);
+      return name;
+    };
+    std::string body = csg(obj, L, tree, 0, 0, nameOf);
+    std::map<std::pair<int, int>, std::string> text;
+    while (!pending.empty()) {
+      const auto [entry, inside] = pending.back();
+      pending.pop_back();
+      text[{entry, inside}] = csg(obj, L, tree, entry, inside, nameOf);
+    }
+    std::sort(all.begin(), all.end(), [&](const auto& a, const auto& b) {
+      return std::make_pair(tree.rank[static_cast<std::size_t>(a.first)], a.second) <
+             std::make_pair(tree.rank[static_cast<std::size_t>(b.first)], b.second);
+    });
+    for (const auto& key : all)
+      out_ << "#declare " << declared[key] << " =  // entry " << key.first << " of object "
+           << obj.number << ", used " << tree.refs[static_cast<std::size_t>(key.first)] << " times"
+           << (key.second ? " (seen from inside)" : "") << "\n"
+           << text[key];
     if (obj.boundPrim >= 0 && obj.boundPrim < static_cast<int>(scene_.prims.size())) {
       const ScenePrim& b = scene_.prims[obj.boundPrim];
       std::string bound =
@@ -274,46 +308,103 @@ class Exporter {
           "\n" +
           indentLines(shapeOpen(b.type) + "\n  " + matrixText(povMatrix(b.transform)) + "\n}", 2) +
           "}\n";
-      // Insert before the root's closing brace.
+      // Insert before the root's closing brace (a shared root cannot be: the
+      // root has no parent).
       const std::size_t close = body.rfind('}');
       body = body.substr(0, close) + indentLines(bound, 2) + body.substr(close);
     }
     out_ << body << "\n";
   }
 
-  // Entry `i` of the object's CSG tree; `inverted` counts how many '-' right
-  // operands lie on the path from the root (an odd count shows the inside).
-  std::string csg(const SceneObject& obj, const ObjectLook& L, int i, int inverted, int depth) {
-    if (depth > static_cast<int>(obj.entries.size()))
-      throw std::invalid_argument("object " + std::to_string(obj.number) + ": cyclic CSG tree");
-    if (i < 0 || i >= static_cast<int>(obj.entries.size()))
-      throw std::invalid_argument("object " + std::to_string(obj.number) + ": CSG entry " +
-                                  std::to_string(i) + " out of range");
-    const CsgEntry& e = obj.entries[i];
-    const std::string tag = "  // entry " + std::to_string(i);
-    const char* op = nullptr;
-    switch (e.op) {
-      case '+':
-        // Roth's union keeps only the outer boundary: merge for see-through objects.
-        op = L.transparent ? "merge" : "union";
-        break;
-      case '-':
-        op = "difference";
-        break;
-      case '&':
-        op = "intersection";
-        break;
-      case 'P':
-        return primitive(e.l, L, inverted % 2 == 1, tag);
-      default:
-        throw std::invalid_argument("object " + std::to_string(obj.number) + ": CSG entry " +
-                                    std::to_string(i) + " has operator '" + e.op + "'");
+  // The object's tree checked (entries in range, no cycle, known operators),
+  // with each entry's position in post-order and its number of uses.
+  struct Tree {
+    std::vector<int> rank, refs;
+  };
+  Tree treeOf(const SceneObject& obj) const {
+    const int n = static_cast<int>(obj.entries.size());
+    auto fail = [&](const std::string& what) {
+      throw std::invalid_argument("object " + std::to_string(obj.number) + ": " + what);
+    };
+    if (n == 0) fail("CSG entry 0 out of range");
+    Tree t{std::vector<int>(static_cast<std::size_t>(n), -1),
+           std::vector<int>(static_cast<std::size_t>(n), 0)};
+    std::vector<char> onPath(static_cast<std::size_t>(n), 0);
+    std::vector<std::pair<int, int>> stack{{0, 0}};
+    int next = 0;
+    onPath[0] = 1;
+    while (!stack.empty()) {
+      auto& [i, child] = stack.back();
+      const CsgEntry& e = obj.entries[static_cast<std::size_t>(i)];
+      if (e.op != 'P' && e.op != '+' && e.op != '-' && e.op != '&')
+        fail("CSG entry " + std::to_string(i) + " has operator '" + e.op + "'");
+      if (e.op != 'P' && child < 2) {
+        const int c = child++ == 0 ? e.l : e.r;
+        if (c < 0 || c >= n) fail("CSG entry " + std::to_string(c) + " out of range");
+        if (onPath[static_cast<std::size_t>(c)]) fail("cyclic CSG tree");
+        if (t.refs[static_cast<std::size_t>(c)]++ == 0) {
+          onPath[static_cast<std::size_t>(c)] = 1;
+          stack.emplace_back(c, 0);  // (`i`, `child` are not used after)
+        }
+        continue;
+      }
+      t.rank[static_cast<std::size_t>(i)] = next++;
+      onPath[static_cast<std::size_t>(i)] = 0;
+      stack.pop_back();
     }
-    std::string s = std::string(op) + " {" + tag + " " + e.op + " " + std::to_string(e.l) + " " +
-                    std::to_string(e.r) + "\n";
-    s += indentLines(csg(obj, L, e.l, inverted, depth + 1), 2);
-    s += indentLines(csg(obj, L, e.r, inverted + (e.op == '-' ? 1 : 0), depth + 1), 2);
-    return s + "}\n";
+    return t;
+  }
+
+  // The text of entry `root` of the object's CSG tree, without recursion
+  // (M31); `inside` is 1 when an odd number of '-' right operands lie on the
+  // path from the object's root (the primitive shows its inside). A shared
+  // operator entry below `root` becomes `object { nameOf(entry, inside) }`.
+  // Indentation stops growing after kMaxIndent levels, so a deep chain's
+  // text stays linear in its length.
+  template <class NameOf>
+  std::string csg(const SceneObject& obj, const ObjectLook& L, const Tree& tree, int root,
+                  int inside, NameOf&& nameOf) {
+    constexpr int kMaxIndent = 32;
+    struct Item {
+      int entry, inside, depth, stage;
+    };
+    std::string s;
+    std::vector<Item> stack{{root, inside, 0, 0}};
+    while (!stack.empty()) {
+      Item& it = stack.back();
+      const CsgEntry& e = obj.entries[static_cast<std::size_t>(it.entry)];
+      const int indent = 2 * std::min(it.depth, kMaxIndent);
+      const std::string tag = "  // entry " + std::to_string(it.entry);
+      if (e.op != 'P' && it.entry != root && tree.refs[static_cast<std::size_t>(it.entry)] > 1) {
+        s += std::string(static_cast<std::size_t>(indent), ' ') + "object { " +
+             nameOf(it.entry, it.inside) + " }" + tag + "\n";
+        stack.pop_back();
+        continue;
+      }
+      if (e.op == 'P') {
+        s += indentLines(primitive(e.l, L, it.inside == 1, tag), indent);
+        stack.pop_back();
+        continue;
+      }
+      const Item item = it;
+      if (item.stage == 0) {
+        // Roth's union keeps only the outer boundary: merge for see-through objects.
+        const char* op = e.op == '+'   ? (L.transparent ? "merge" : "union")
+                         : e.op == '-' ? "difference"
+                                       : "intersection";
+        s += std::string(static_cast<std::size_t>(indent), ' ') + op + " {" + tag + " " + e.op +
+             " " + std::to_string(e.l) + " " + std::to_string(e.r) + "\n";
+        it.stage = 1;
+        stack.push_back({e.l, item.inside, item.depth + 1, 0});
+      } else if (item.stage == 1) {
+        it.stage = 2;
+        stack.push_back({e.r, e.op == '-' ? 1 - item.inside : item.inside, item.depth + 1, 0});
+      } else {
+        s += std::string(static_cast<std::size_t>(indent), ' ') + "}\n";
+        stack.pop_back();
+      }
+    }
+    return s;
   }
 
   std::string primitive(int p, const ObjectLook& L, bool inside, const std::string& tag) {

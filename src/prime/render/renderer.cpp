@@ -102,6 +102,7 @@ void renderWith(const Tracer& tracer, const ListingCamera& camera,
     const std::uint64_t raysBefore = stats.rays();
     SampleLattice* lattice = local.lattice ? &*local.lattice : nullptr;
     for (int j = 0; j < columns; ++j) {
+      checkAbort(callbacks.abort);  // R9
       const PixelTracer<Tracer> pixel{tracer, mask && !mask->mayHit(i, j)};
       const Rgb color = samplePixel(
           settings.sampling, lattice, [&] { return pixel.castPrimary(camera, i, j, stats); },

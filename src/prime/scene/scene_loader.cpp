@@ -1,5 +1,6 @@
 #include "src/prime/scene/scene_loader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -16,6 +17,54 @@ using io::InputError;
 
 namespace {
 
+// M33: the text parsers refuse NaN and infinities, so a binary database
+// holding one was not written by them: corrupt. A non-finite matrix element,
+// hue or texel is refused where it is read, naming the record, the field and
+// its byte, instead of tracing garbage with exit 0.
+void checkFinite(double v, const std::string& file, std::uint64_t at, const std::string& field) {
+  if (std::isfinite(v)) return;
+  throw InputError({file, std::nullopt, at}, field,
+                   "a finite number (the text inputs refuse NaN and infinities: the database is "
+                   "corrupt; rebuild it with prime model)",
+                   std::isnan(v) ? "NaN"
+                   : v > 0       ? "+infinity"
+                                 : "-infinity");
+}
+
+// Byte offsets of a Hue inside its record (records.h: eight Turbo C doubles).
+void checkHue(const io::Hue& h, const std::string& file, std::uint64_t at,
+              const std::string& record) {
+  checkFinite(h.kDR, file, at + 0, record + " hue kDR");
+  checkFinite(h.kDT, file, at + 8, record + " hue kDT");
+  for (int c = 0; c < 3; ++c)
+    checkFinite(h.fDR[static_cast<std::size_t>(c)], file, at + 16 + 8 * static_cast<unsigned>(c),
+                record + " hue fDR[" + std::to_string(c) + "]");
+  checkFinite(h.tT, file, at + 40, record + " hue tT");
+  checkFinite(h.kRH, file, at + 48, record + " hue kRH");
+  checkFinite(h.kTH, file, at + 56, record + " hue kTH");
+  checkFinite(h.indx, file, at + 64, record + " hue indx");
+}
+
+// The transform and inverse of PrimFile record `n` (the primitive an
+// object uses): 16 doubles each, after the type byte (and its pad byte in
+// the word-aligned layout).
+void checkPrimMatrices(const io::PrimRecord& p, int n, io::PrimLayout layout,
+                       const std::string& file) {
+  const bool packed = layout == io::PrimLayout::Packed;
+  const std::uint64_t record =
+      static_cast<std::uint64_t>(n) * (packed ? io::kPrimSizePacked : io::kPrimSizeAligned);
+  const std::uint64_t first = record + (packed ? 1 : 2);
+  for (int m = 0; m < 2; ++m)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        checkFinite(
+            (m == 0 ? p.transform
+                    : p.inverse)[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)],
+            file, first + 128 * static_cast<unsigned>(m) + 8 * static_cast<unsigned>(4 * i + j),
+            "PrimFile record " + std::to_string(n) + (m == 0 ? " transform[" : " inverse[") +
+                std::to_string(i) + "][" + std::to_string(j) + "]");
+}
+
 std::string primLabel(int n, const ScenePrim& p) {
   return "primitive " + std::to_string(n) + " (" + io::primTypeName(p.type) + ")";
 }
@@ -31,6 +80,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
   const io::ObjFile f = io::objFileFromBytes(io::readFileBytes(path.string()), shown);
   SceneObject obj;
   obj.number = number;
+  checkHue(f.header.hue, shown, 4, "ObjHeader");  // after numEntries and boundVol
   obj.hue = f.header.hue;
   obj.boundPrim = f.header.boundVol;
   const int n = static_cast<int>(f.entries.size());
@@ -115,6 +165,11 @@ SceneTexture loadMap(const io::SceneDir& dir, int number) {
                        std::to_string(f.header.uScale) + " x " + std::to_string(f.header.vScale));
     m.uScale = f.header.uScale;
     m.vScale = f.header.vScale;
+    for (std::size_t i = 0; i < f.texels.size(); ++i)
+      checkFinite(f.texels[i], dir.display(path), io::kMapHeaderSize + 8 * i,
+                  "texel " + std::to_string(i) + " (u " +
+                      std::to_string(i % static_cast<std::size_t>(f.header.uScale)) + ", v " +
+                      std::to_string(i / static_cast<std::size_t>(f.header.uScale)) + ")");
     m.channel[c] = f.texels;
   }
   m.constant = true;
@@ -149,6 +204,15 @@ Scene loadScene(const io::SceneDir& dir) {
   const io::ObjList list =
       io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
   for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, primFile.prims));
+  std::set<int> used;  // every primitive an object traces (leaf or bound)
+  for (const auto& obj : scene.objects) {
+    if (obj.boundPrim >= 0) used.insert(obj.boundPrim);
+    for (const auto& e : obj.entries)
+      if (e.op == 'P') used.insert(e.l);
+  }
+  for (int n : used)
+    checkPrimMatrices(primFile.prims[static_cast<std::size_t>(n)], n, primFile.layout,
+                      dir.display(primPath));
 
   // Every map that a primitive of a listed object can read must exist.
   std::set<int> mapsNeeded;

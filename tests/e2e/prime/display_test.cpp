@@ -159,6 +159,29 @@ TEST(PrimeExport, BrokenAndPartialGraphFiles) {
   EXPECT_EQ(at(img, 5, 2), shown("listing", 0));  // not in the file: index 0
 }
 
+// G30: a truncated graph file that is not a .partial is refused (exit 1,
+// nothing written), by export and by view; a 7-byte one too.
+TEST(PrimeExport, TruncatedGraphFileIsRefused) {
+  prime::test::TempScene d;
+  auto bytes = prime::io::toBytes(smallGraph());
+  bytes.resize(6 + 2 * 12 * 2 + 2 * 5);  // two rows and five pixels of 6 x 12
+  d.writeBytes("graph_scr", bytes);
+  Outcome r = prime({"export", d.path("graph_scr").string(), d.path("x.png").string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("graph_scr (byte 64): pixel data"));
+  EXPECT_THAT(r.err, HasSubstr("29 whole pixels: the file is truncated"));
+  EXPECT_FALSE(std::filesystem::exists(d.path("x.png")));
+  bytes.resize(7);
+  d.writeBytes("seven", bytes);
+  r = prime({"export", d.path("seven").string(), d.path("y.png").string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("the file is truncated"));
+  EXPECT_FALSE(std::filesystem::exists(d.path("y.png")));
+  r = prime({"view", d.path("seven").string(), "--no-window"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("the file is truncated"));
+}
+
 TEST(PrimeDiff, ExitStatusCountsAndImage) {
   prime::test::TempScene d;
   const prime::io::GraphFile a = smallGraph();

@@ -98,5 +98,48 @@ TEST(RenderRows, AbortStopsBeforeTheLastRow) {
   EXPECT_LT(rendered.load(), 10000);
 }
 
+// R9: an abort inside a row stops it within a pixel. One row of "pixels"
+// that would take 1000 s (a million pixels of 1 ms); the flag is set from
+// another thread after 50 ms. The run ends as aborted, the row is not
+// reported done, and it took nowhere near the row's time.
+TEST(RenderRows, AbortInsideARowStopsWithinAPixel) {
+  std::atomic<bool> abort{false};
+  RowCallbacks cb;
+  cb.abort = &abort;
+  std::atomic<int> done{0}, pixels{0};
+  cb.rowDone = [&](int) { ++done; };
+  std::thread setter([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    abort = true;
+  });
+  const auto start = std::chrono::steady_clock::now();
+  const RowsRun run = renderRows(
+      1, 1,
+      [&](int, int) -> std::uint64_t {
+        for (int x = 0; x < 1000000; ++x) {
+          checkAbort(cb.abort);
+          ++pixels;
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        return 0;
+      },
+      cb);
+  setter.join();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(run.aborted);
+  EXPECT_EQ(done.load(), 0);
+  EXPECT_GT(pixels.load(), 0);
+  EXPECT_LT(seconds, 10.0);  // (a loaded machine: 0.05 s expected)
+}
+
+TEST(RenderRows, CheckAbortThrowsOnlyWhenSet) {
+  EXPECT_NO_THROW(checkAbort(nullptr));
+  std::atomic<bool> flag{false};
+  EXPECT_NO_THROW(checkAbort(&flag));
+  flag = true;
+  EXPECT_THROW(checkAbort(&flag), RowAborted);
+}
+
 }  // namespace
 }  // namespace prime

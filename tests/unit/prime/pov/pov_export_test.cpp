@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <regex>
 #include <string>
@@ -316,6 +317,58 @@ TEST(PovExport, PyramidIsAClosedSolidThroughItsCorners) {
     ++planes;
   }
   EXPECT_EQ(planes, 5);
+}
+
+// M32: a subtree used twice is written once, as a #declare before the
+// object, and seen from both sides it gets two declarations (the subtracted
+// use shows its inside). Object 1: e1 = (p0 + p1); root = e2 - e1 with e2 =
+// (e1 & e1): e1 is used three times (twice by e2, once as a subtracted
+// right operand).
+TEST(PovExport, SharedSubtreeIsDeclaredOnce) {
+  Scene s = smallScene();
+  s.objects[0].entries = {{'-', 2, 1}, {'+', 3, 4}, {'&', 1, 1}, {'P', 0, 0}, {'P', 1, 0}};
+  const std::string pov = exportPov(s).pov;
+  const auto count = [&](const std::string& key) {
+    std::size_t n = 0;
+    for (auto at = pov.find(key); at != std::string::npos; at = pov.find(key, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("#declare PrimeO1_E1 ="), 1u) << pov;
+  EXPECT_EQ(count("#declare PrimeO1_E1_In ="), 1u) << pov;
+  EXPECT_EQ(count("object { PrimeO1_E1 }"), 2u) << pov;     // both operands of e2
+  EXPECT_EQ(count("object { PrimeO1_E1_In }"), 1u) << pov;  // the subtracted use
+  // e1's two leaves are written once per declaration: 2 boxes in all.
+  EXPECT_EQ(count("box {"), 2u) << pov;
+  // Declared before use.
+  EXPECT_LT(pov.find("#declare PrimeO1_E1 ="), pov.find("object { PrimeO1_E1 }"));
+}
+
+// M31, M32: 30 nested doublings would be 2^30 leaves written out; a 20,000
+// entry chain recursed 20,000 deep and indented quadratically. Both now
+// give text linear in the entries, without recursion.
+TEST(PovExport, NestedSharingAndDeepChainsStayLinear) {
+  Scene s = smallScene();
+  std::vector<CsgEntry> doubling;
+  for (int i = 0; i < 30; ++i) doubling.push_back({'+', i + 1, i + 1});
+  doubling.push_back({'P', 0, 0});
+  s.objects[0].entries = doubling;
+  const std::string shared = exportPov(s).pov;
+  EXPECT_LT(shared.size(), 100000u);
+  EXPECT_NE(shared.find("#declare PrimeO1_E29 ="), std::string::npos);
+
+  constexpr int kDepth = 20000;
+  std::vector<CsgEntry> chain;
+  for (int i = 0; i < kDepth; ++i) chain.push_back({'+', i + 1, kDepth + 1});
+  chain.push_back({'P', 0, 0});
+  chain.push_back({'P', 1, 0});
+  s.objects[0].entries = chain;
+  // (p1 is used by every level: a leaf, so it is written each time.)
+  const std::string deep = exportPov(s).pov;
+  EXPECT_LT(deep.size(), std::size_t{kDepth} * 1000);  // ~ 600 bytes per level
+  const auto opens = static_cast<std::size_t>(std::count(deep.begin(), deep.end(), '{'));
+  const auto closes = static_cast<std::size_t>(std::count(deep.begin(), deep.end(), '}'));
+  EXPECT_EQ(opens, closes);
+  EXPECT_NE(deep.find("  // entry 19999"), std::string::npos);
 }
 
 }  // namespace
