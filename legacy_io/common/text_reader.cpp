@@ -5,13 +5,19 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
+#include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
 
 namespace prime::io {
 
 TextReader::TextReader(std::string text, std::string display)
-    : text_(std::move(text)), display_(std::move(display)) {}
+    : text_(std::move(text)), display_(std::move(display)) {
+  // M35: a UTF-8 byte order mark (an editor's, never the listing's) is
+  // skipped, as the Malone and CGL readers skip it.
+  if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;
+}
 
 TextReader TextReader::open(const std::string& path, const std::string& display) {
   InputFileOptions options;
@@ -33,7 +39,11 @@ std::string TextReader::peekWord() const {
          end - pos_ < 40)
     ++end;
   if (end == pos_) return "end of file";
-  return "\"" + text_.substr(pos_, end - pos_) + "\"";
+  // Control bytes and NUL escaped (M35): a NUL must not cut the message.
+  // (In double quotes, as this reader's messages always showed words.)
+  std::string word = quotedWord(std::string_view(text_).substr(pos_, end - pos_), 40);
+  word.front() = word.back() = '"';
+  return word;
 }
 
 void TextReader::fail(const std::string& field, const std::string& expected,
@@ -70,6 +80,10 @@ double TextReader::number(const std::string& field) {
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
   // "+-5": one sign only (from_chars would read the '-' after the skipped '+').
+  // M35: 1e309 and 1e-400 are numbers, out of double's range.
+  if (ec == std::errc::result_out_of_range && endsCleanly && !(plus && *begin == '-'))
+    fail(field, "a number within double's range (about 2.2e-308 to 1.8e308 in size, or 0)",
+         peekWord() + " (out of range)");
   if (ec != std::errc() || !endsCleanly || (plus && *begin == '-'))
     fail(field, "a number", peekWord());
   if (!std::isfinite(value)) fail(field, "a finite number", peekWord() + " (NaN/Inf not allowed)");
@@ -88,6 +102,9 @@ std::int16_t TextReader::int16(const std::string& field) {
   long long value = 0;
   auto [ptr, ec] = std::from_chars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
+  if (ec == std::errc::result_out_of_range && endsCleanly && !(plus && *begin == '-'))
+    fail(field, "an integer in -32768..32767 (Turbo C's 16-bit int)",
+         peekWord() + " (out of range)");
   if (ec != std::errc() || !endsCleanly || (plus && *begin == '-'))
     fail(field, "an integer", peekWord());
   if (value < -32768 || value > 32767)
@@ -98,12 +115,13 @@ std::int16_t TextReader::int16(const std::string& field) {
 }
 
 char TextReader::firstChar(const std::string& field) {
-  if (text_.empty()) fail(field, "a type letter at the very start of the file", "an empty file");
-  const char c = text_[0];
+  if (pos_ >= text_.size())
+    fail(field, "a type letter at the very start of the file", "an empty file");
+  const char c = text_[pos_];  // (after a byte order mark, M35)
   if (std::isspace(static_cast<unsigned char>(c)))
     fail(field, "a type letter as the file's first byte (the listing reads it with %c, K36)",
          "a blank");
-  pos_ = 1;
+  ++pos_;
   return c;
 }
 

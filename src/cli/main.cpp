@@ -137,7 +137,10 @@ std::string nearestCommand(const CLI::App& app, const std::string& word) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The whole command line; with `parseOnly`, everything but the chosen
+// command's action (the CLI fuzz target, tests/fuzz/prime/cli_fuzz.cpp,
+// calls it so, in-process).
+int primeMain(int argc, char** argv, bool parseOnly) {
   std::vector<char*> args(argv, argv + argc);
   // `prime help CMD` is `prime CMD --help`.
   std::string helpFlag = "--help";
@@ -219,6 +222,7 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  if (parseOnly) return 0;
   try {
     return action ? action() : 0;
   } catch (const prime::io::InputError& e) {
@@ -229,3 +233,9 @@ int main(int argc, char** argv) {
     return 1;
   }
 }
+
+#ifndef PRIME_NO_MAIN
+int main(int argc, char** argv) {
+  return primeMain(argc, argv, false);
+}
+#endif

@@ -88,7 +88,9 @@ Scene prepareScene(const std::string& dir, bool model) {
     msg += "\nrun `prime model " + dir + "` first, or add --model";
     throw io::InputError({dir, std::nullopt, std::nullopt}, msg);
   }
-  return loadScene(scene);
+  Scene loaded = loadScene(scene);
+  for (const auto& w : sharedSubtreeWarnings(loaded)) std::cerr << "prime: warning: " << w << "\n";
+  return loaded;
 }
 
 }  // namespace prime::cli

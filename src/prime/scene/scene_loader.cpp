@@ -9,6 +9,7 @@
 #include "legacy_io/prime/obj_file.h"
 #include "legacy_io/prime/obj_list.h"
 #include "legacy_io/prime/prim_file.h"
+#include "src/prime/geom/csg_program_1991.h"
 
 namespace prime {
 
@@ -266,6 +267,26 @@ std::vector<std::string> staleDatabases(const io::SceneDir& dir) {
     }
   }
   return problems;
+}
+
+std::vector<std::string> sharedSubtreeWarnings(const Scene& scene) {
+  std::vector<std::string> out;
+  const std::size_t budget = Csg1991Options{}.maxVisits;
+  for (const SceneObject& obj : scene.objects) {
+    const std::optional<std::uint64_t> visits = csgExpandedVisits(obj.entries);
+    if (!visits || *visits <= kLargeExpansion) continue;
+    const bool capped = *visits >= CsgProgram1991::kExpansionCap;
+    out.push_back("object " + std::to_string(obj.number) + " (obj/O" + std::to_string(obj.number) +
+                  "): its " + std::to_string(obj.entries.size()) +
+                  " CSG entries share subtrees; walked per reference they are " +
+                  (capped ? std::string("over 2^62") : std::to_string(*visits)) +
+                  " entry visits per ray. The modern profile evaluates each shared subtree once "
+                  "per ray; the 1991 profile walks every reference as the listing did" +
+                  (*visits > budget ? " and stops the render with an error (more than " +
+                                          std::to_string(budget) + " visits)"
+                                    : ", slowly"));
+  }
+  return out;
 }
 
 }  // namespace prime
