@@ -5,7 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "legacy_io/common/error.h"
+#include "legacy_io/prime/map_file.h"
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/obj_file.h"
 #include "legacy_io/prime/prim_file.h"
@@ -111,6 +114,79 @@ TEST(SceneLoader, StaleDatabasesAreReported) {
   EXPECT_THAT(stale[0], HasSubstr("prim/S1.txt is newer than the databases"));
   std::filesystem::remove(s.path("obj/List"));
   EXPECT_THAT(staleDatabases(io::SceneDir(s.path()))[0], HasSubstr("obj/List does not exist"));
+}
+
+// M33: NaN and infinities in a binary database are refused, naming the
+// record, the field and its byte. Offsets by hand (records.h): a packed Prim
+// is the type byte, then the transform's 16 doubles, then the inverse's, so
+// transform[1][2] of record 0 is at 1 + 8 * (4 + 2) = 49 and inverse[3][3]
+// at 1 + 128 + 8 * 15 = 249; an ObjHeader's hue starts at byte 4 (after
+// numEntries and boundVol), fDR[2] 8 * 4 = 32 bytes in: byte 36; texel 0 of
+// a map follows its 4-byte header.
+TEST(SceneLoader, NonFiniteNumbersInTheDatabasesAreRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  {
+    test::TempScene s;
+    sphereScene(s);
+    auto prims = io::readPrimFile(s.path("prim/PrimFile").string());
+    prims.prims[0].transform[1][2] = nan;
+    io::writePrimFile(s.path("prim/PrimFile").string(), prims);
+    const std::string msg = loadError(s);
+    EXPECT_THAT(msg, HasSubstr("PrimFile (byte 49): PrimFile record 0 transform[1][2]"));
+    EXPECT_THAT(msg, HasSubstr("found NaN"));
+  }
+  {
+    test::TempScene s;
+    sphereScene(s);
+    auto prims = io::readPrimFile(s.path("prim/PrimFile").string());
+    prims.prims[0].inverse[3][3] = -inf;
+    io::writePrimFile(s.path("prim/PrimFile").string(), prims);
+    EXPECT_THAT(
+        loadError(s),
+        HasSubstr("PrimFile (byte 249): PrimFile record 0 inverse[3][3]: expected a finite"));
+  }
+  {
+    test::TempScene s;
+    sphereScene(s);
+    auto obj = io::readObjFile(s.path("obj/O1").string());
+    obj.header.hue.fDR[2] = inf;
+    io::writeObjFile(s.path("obj/O1").string(), obj);
+    const std::string msg = loadError(s);
+    EXPECT_THAT(msg, HasSubstr("obj/O1 (byte 36): ObjHeader hue fDR[2]"));
+    EXPECT_THAT(msg, HasSubstr("found +infinity"));
+  }
+  {
+    test::TempScene s;
+    sphereScene(s);
+    for (const char* c : {"R", "G", "B"}) {
+      const std::string name = std::string("map/Map1_") + c + ".map";
+      auto m = io::readMapFile(s.path(name).string());
+      if (*c == 'G') m.texels[0] = nan;
+      io::writeMapFile(s.path(name).string(), m);
+    }
+    EXPECT_THAT(loadError(s), HasSubstr("Map1_G.map (byte 4): texel 0 (u 0, v 0)"));
+  }
+}
+
+// M34: 20 nested doublings (2^21 - 1 visits per ray when walked per
+// reference) get a warning naming the object; a plain tree gets none.
+TEST(SceneLoader, LargeSharedSubtreesAreWarnedAbout) {
+  Scene scene;
+  SceneObject o;
+  o.number = 3;
+  for (int i = 0; i < 20; ++i) o.entries.push_back({'+', i + 1, i + 1});
+  o.entries.push_back({'P', 0, 0});
+  scene.objects.push_back(o);
+  SceneObject plain;
+  plain.number = 4;
+  plain.entries = {{'+', 1, 2}, {'P', 0, 0}, {'P', 0, 0}};
+  scene.objects.push_back(plain);
+  const auto warnings = sharedSubtreeWarnings(scene);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("object 3 (obj/O3): its 21 CSG entries share subtrees"));
+  EXPECT_THAT(warnings[0], HasSubstr("2097151 entry visits per ray"));
+  EXPECT_THAT(warnings[0], HasSubstr("stops the render with an error (more than 1048576 visits)"));
 }
 
 }  // namespace
