@@ -65,6 +65,37 @@ TEST(BadInput, TooFewNumbers) {
   EXPECT_THAT(msg, HasSubstr("found end of file (too few numbers)"));
 }
 
+// M35: the offending word with its NUL and control bytes escaped, numbers
+// beyond double's range called out of range, a byte order mark skipped.
+TEST(BadInput, MessagesNameTheRealProblem) {
+  {
+    test::TempScene s;
+    goodScene(s);
+    const char text[] = "0.1 0.2\n0.3 ab\0cd\x01 0.4 0.5 0.999 2 2 1.5\n";
+    s.write("obj/H1.txt", std::string(text, sizeof text - 1));
+    EXPECT_THAT(modelError(s),
+                HasSubstr("obj/H1.txt:2: fDR[G]: expected a number, found \"ab\\x00cd\\x01\""));
+  }
+  for (const char* big : {"1e309", "1e-400", "-1e309"}) {
+    test::TempScene s;
+    goodScene(s);
+    s.write("obj/H1.txt", std::string("0.1 0.2\n0.3 ") + big + " 0.4 0.5 0.999 2 2 1.5\n");
+    const std::string msg = modelError(s);
+    EXPECT_THAT(msg, HasSubstr("obj/H1.txt:2: fDR[G]: expected a number within double's range"));
+    EXPECT_THAT(msg, HasSubstr(std::string("found \"") + big + "\" (out of range)"));
+  }
+  {
+    test::TempScene s;
+    goodScene(s);
+    writeModel(SceneDir(s.path()), buildModel(SceneDir(s.path())));
+    const auto plain = s.read("prim/PrimFile");
+    // The type letter is the file's first byte (K36): after the BOM.
+    s.write("prim/S1.txt", "\xEF\xBB\xBFS\n60 60 60\n50 50 0\n0 0 0\n0 0 0\n1 1\n0\n");
+    writeModel(SceneDir(s.path()), buildModel(SceneDir(s.path())));
+    EXPECT_EQ(s.read("prim/PrimFile"), plain);  // the BOM changes nothing
+  }
+}
+
 TEST(BadInput, NonNumericText) {
   test::TempScene s;
   goodScene(s);
