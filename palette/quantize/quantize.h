@@ -2,7 +2,7 @@
 // at most 256 palette entries that a DAC of `dacBits` bits per channel can
 // load (the IBM 8514/A's: 6), with or without dithering. Shared by every
 // system; no system's quirks. docs/prime/quantization.md explains each choice
-// (ids T50-T79 in docs/prime/deviations.md).
+// (ids T50-T60 in docs/prime/deviations.md).
 //
 //   popularity   the most frequent colours of the picture (4.4.2, T51)
 //   median-cut   Heckbert's boxes, split at the median of their longest side

@@ -52,14 +52,6 @@ void addQuantizeCommand(CLI::App& app, Action& action) {
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing but the report");
   cmd->callback([=, &action] {
     action = [=] {
-      io::checkOutputPath(*out);
-      Image8 image;
-      try {
-        image = readPng(*in);
-      } catch (const std::runtime_error& e) {
-        throw io::InputError({*in, std::nullopt, std::nullopt},
-                             std::string("not a PNG that can be read: ") + e.what());
-      }
       const quantize::Dither d = *quantize::ditherFromName(*dither);
       // Usage errors (exit 2, as CLI11's).
       if (*method == "listing" && d != quantize::Dither::None) {
@@ -71,6 +63,14 @@ void addQuantizeCommand(CLI::App& app, Action& action) {
         std::cerr << "prime: --dither: libimagequant has no ordered dithering (prime quantize "
                      "--help)\n";
         return 2;
+      }
+      io::checkOutputPath(*out);
+      Image8 image;
+      try {
+        image = readPng(*in);
+      } catch (const std::runtime_error& e) {
+        throw io::InputError({*in, std::nullopt, std::nullopt},
+                             std::string("not a PNG that can be read: ") + e.what());
       }
       std::vector<double> seconds;
       quantize::Result r;
