@@ -22,5 +22,6 @@ void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
 void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
+void addQuantizeCommand(CLI::App& app, Action& action);   // cmd_quantize.cpp (every system's PNG)
 
 }  // namespace prime::cli

@@ -183,6 +183,7 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   prime::cli::addBenchCommand(app, action);
   prime::cli::addPlate1Command(app, action);
   prime::cli::addStressCommand(app, action);
+  prime::cli::addQuantizeCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);

@@ -64,6 +64,7 @@ ALLOW = [
     (re.compile(r"\bX11\b"), "the X Window System (SDL's video driver), not errata X11"),
     (re.compile(r"\bG2 continuity\b"),
      "geometric continuity of the beta-splines, not display decision G2"),
+    (re.compile(r"\bD65\b"), "the CIE standard illuminant D65 (sRGB's white), not a Difference branch"),
 ]
 
 CPP_EXTENSIONS = (".c", ".cc", ".cpp", ".cxx", ".h", ".hh", ".hpp", ".hxx", ".inl", ".ipp")

@@ -18,6 +18,7 @@
 #include "src/cli/cgl/options.h"
 #include "src/cli/cgl/picture.h"
 #include "src/cli/live_render.h"
+#include "src/cli/quantize_options.h"
 #include "src/cli/view_8514.h"
 
 namespace prime::cli::cgl {
@@ -104,6 +105,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto raw = std::make_shared<std::string>();
   auto png = std::make_shared<std::string>();
   auto png8514 = std::make_shared<std::string>();
+  auto quant = std::make_shared<QuantizeOptions>();
   auto timings = std::make_shared<bool>(false);
   auto live = std::make_shared<LiveOptions>();
   addCglOptions(cmd, *o);
@@ -116,6 +118,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   cmd->add_option("--png-8514", *png8514,
                   "Write the picture as PRIME's IBM 8514/A (1991) would have shown it: ColorNum's "
                   "fixed 256-colour palette");
+  addQuantizeOptions(cmd, *quant, "the --png picture");
   cmd->add_flag("--no-window", live->noWindow, "Do not open a window (also without a DISPLAY)");
   cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
   cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
@@ -189,7 +192,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
         wrote(*raw);
       }
       if (!png->empty()) {
-        writePng(*png, frameImage(result.frame));
+        writePng(*png, quantizedImage(frameImage(result.frame), *quant));
         wrote(*png);
       }
       if (!png8514->empty()) {

@@ -22,12 +22,14 @@ void addExportCommand(CLI::App& app, Action& action) {
   addDacOption(cmd, *o);
   addAreaOption(cmd, *o, "--area");
   addGeometryOptions(cmd, *o);
+  addInfoOption(cmd, *o);
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
-      const Geometry g = geometryOf(*o);
+      const std::optional<GraphInfo> info = graphInfoFor(*o, *file);
+      const Geometry g = geometryOf(*o, info);
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, *quiet);
-      const Palette palette = paletteOf(*o, paletteNameForGraphType(f.graph.graphType));
+      const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       Screen screen(g.width, g.height);
       drawGraph(screen, f.graph, g.at, f.pixelsPresent);
       const Image8 img = exportImage(screen, f.graph, f.pixelsPresent, g.at,

@@ -12,15 +12,18 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/export.h"
+#include "palette/prime/graph_info.h"
 #include "palette/prime/live_screen.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
 #include "src/cli/prime/display_options.h"
 #include "src/cli/prime/render_options.h"
+#include "src/cli/quantize_options.h"
 
 namespace prime::cli {
 
@@ -55,12 +58,55 @@ void printSummary(const RenderResult& r, const std::string& out) {
       static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
+// The companion file beside a graph file (G7): what view and export need to
+// show it as the render did. Written after the graph file, each through
+// OutputFile; a companion that does not match its graph file's bytes is
+// ignored by view and export (G9).
+void writeCompanion(const std::string& graphPath, const io::GraphFile& graph,
+                    const RenderSettings& settings, const std::string& profile, Placement at,
+                    const Palette& palette, bool inlinePalette) {
+  GraphInfo info;
+  const std::vector<std::uint8_t> bytes = io::toBytes(graph);
+  info.graphBytes = bytes.size();
+  info.graphHash = fnv1a64(bytes);
+  info.profile = profile;
+  info.screenWidth = settings.camera.screenWidth;
+  info.screenHeight = settings.camera.screenHeight;
+  info.at = at;
+  info.palette = palette;
+  info.inline_ = inlinePalette;
+  writeGraphInfo(graphInfoPath(graphPath), info);
+}
+
+// --quantize (thesis 4.4, T59): every pixel of the graph file (the listing's
+// off-screen column and row too) from its unquantised colour, by the chosen
+// quantizer; the indices replace ColorNum's and the palette is returned.
+Palette quantizeGraph(RenderResult& result, const QuantizeOptions& q) {
+  Image8 whole{result.graph.width(), result.graph.height(), {}};
+  whole.rgb.reserve(result.rgb.pixels.size() * 3);
+  for (const Rgb& c : result.rgb.pixels) {
+    const Rgb8 t = trueColour(c);
+    whole.rgb.insert(whole.rgb.end(), {t.r, t.g, t.b});
+  }
+  const quantize::Result r = quantize::quantize(whole, settingsOf(q));
+  for (std::size_t i = 0; i < r.indices.size(); ++i)
+    result.graph.pixels[i] = static_cast<std::int16_t>(r.indices[i]);
+  Palette p;
+  p.name = "quantized";
+  p.description = q.method + ", dither " + q.dither + ", " +
+                  std::to_string(r.palette.levels.size()) + " colours (thesis 4.4)";
+  for (std::size_t i = 0; i < r.palette.levels.size(); ++i)
+    p.dac[i] = {r.palette.levels[i][0], r.palette.levels[i][1], r.palette.levels[i][2]};
+  return p;  // entries past the palette's size stay black
+}
+
 // An aborted render never writes its target: a previous good render there is
 // kept (an interrupted re-render must not cost the last finished picture),
 // and `partial` gets the header and the rows finished from the top, as the
 // listing's exit(1) would have left them.
 void writeAborted(const RenderResult& result, const std::vector<char>& finished,
-                  const std::string& target, const std::string& partial) {
+                  const std::string& target, const std::string& partial,
+                  const std::function<void(const io::GraphFile&)>& companion) {
   std::size_t prefix = 0;
   while (prefix < finished.size() && finished[prefix]) ++prefix;
   std::error_code ec;
@@ -68,6 +114,7 @@ void writeAborted(const RenderResult& result, const std::vector<char>& finished,
   io::GraphFile head = result.graph;
   head.pixels.resize(prefix * static_cast<std::size_t>(head.width()));
   io::writeGraphFile(partial, head);
+  companion(head);
   const auto rowsFinished = std::count(finished.begin(), finished.end(), 1);
   std::cerr << "prime: trace aborted after " << rowsFinished << " of " << finished.size()
             << " rows: " << target << " not written" << (kept ? " (the previous one is kept)" : "")
@@ -106,6 +153,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   auto noWait = std::make_shared<bool>(false);
   auto options = std::make_shared<RenderOptions>();
   auto display = std::make_shared<DisplayOptions>();
+  auto quant = std::make_shared<QuantizeOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
   auto format = std::make_shared<std::string>("prime");
   cmd->add_option("--format", *format,
@@ -131,22 +179,24 @@ void addTraceCommand(CLI::App& app, Action& action) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
   addRenderOptions(cmd, *options);
+  addQuantizeOptions(cmd, *quant, "the graph file (its companion file carries the palette)");
   cmd->callback([=, &action] {
     action = [=] {
       finishRenderOptions(*options);
       const Scene scene = prepareScene(*dir, options->model);
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
       const std::string partial = target + ".partial";
+      const bool quantizing = !quant->method.empty();
       options->settings.keepColours =
-          !trueColourPng->empty();  // only the true-colour PNG reads them
+          !trueColourPng->empty() || quantizing;  // only these read them
       const RenderSettings& settings = options->settings;
       const ListingCamera camera(settings.camera);
       const Placement at{camera.screenX(0), camera.screenY(0)};
       const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
-      const Palette palette =
-          paletteOf(*display, settings.mapping == ColorMapping::Plate3
-                                  ? "plate3"
-                                  : paletteNameForGraphType(settings.graphType));
+      const std::string mappingPalette = settings.mapping == ColorMapping::Plate3
+                                             ? "plate3"
+                                             : paletteNameForGraphType(settings.graphType);
+      Palette palette = paletteOf(*display, mappingPalette);
 
       // The emulated screen, in a window if there can be one.
       display::LiveScreen screen(screenW, screenH, windowPalettes(palette), dacOf(*display));
@@ -167,14 +217,27 @@ void addTraceCommand(CLI::App& app, Action& action) {
 
       if (result.aborted) {
         live.closeWindow();  // ExitOnEsc: the screen goes at once
-        writeAborted(result, finished, target, partial);
+        writeAborted(result, finished, target, partial, [&](const io::GraphFile& head) {
+          writeCompanion(partial, head, settings, options->profile, at,
+                         *findBuiltinPalette(mappingPalette), false);
+        });
         if (!*quiet) printSummary(result, partial);
         return 1;  // as ExitOnEsc's exit(1)
       }
 
-      io::writeGraphFile(target, result.graph);
+      if (quantizing) {
+        const Palette quantized = quantizeGraph(result, *quant);
+        if (display->palette.empty()) palette = quantized;
+        io::writeGraphFile(target, result.graph);
+        writeCompanion(target, result.graph, settings, options->profile, at, quantized, true);
+      } else {
+        io::writeGraphFile(target, result.graph);
+        writeCompanion(target, result.graph, settings, options->profile, at,
+                       *findBuiltinPalette(mappingPalette), false);
+      }
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's
+      std::filesystem::remove(graphInfoPath(partial), ec);
       writePngs(result, settings, at, palette, *display, *png, *trueColourPng);
       if (!*quiet) printSummary(result, target);
       std::fflush(stdout);

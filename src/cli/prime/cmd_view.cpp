@@ -24,15 +24,17 @@ void addViewCommand(CLI::App& app, Action& action) {
   addPaletteOption(cmd, *o, "from the file's graphType (0: vga, else listing)");
   addDacOption(cmd, *o);
   addGeometryOptions(cmd, *o);
+  addInfoOption(cmd, *o);
   addWindowOptions(cmd, *o);
   cmd->add_option("--rows-per-second", *rate,
                   "Replay row by row at this rate (default 0: all at once)")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([=, &action] {
     action = [=] {
-      const Geometry g = geometryOf(*o);
+      const std::optional<GraphInfo> info = graphInfoFor(*o, *file);
+      const Geometry g = geometryOf(*o, info);
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, false);
-      const Palette palette = paletteOf(*o, paletteNameForGraphType(f.graph.graphType));
+      const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       auto headless = display::headlessReason(o->noWindow);
       display::LiveScreen live(g.width, g.height, windowPalettes(palette), dacOf(*o));
       std::unique_ptr<display::ScreenWindow> window;

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 
 namespace prime::cli {
 
@@ -73,6 +74,35 @@ Geometry geometryOf(const DisplayOptions& o) {
   }
   g.at = o.at.size() == 2 ? Placement{o.at[0], o.at[1]} : listingPlacement(g.width, g.height);
   return g;
+}
+
+void addInfoOption(CLI::App* cmd, DisplayOptions& o) {
+  cmd->add_flag("--no-info", o.noInfo,
+                "Ignore the companion file FILE.info (screen, placement, palette) beside the graph "
+                "file");
+}
+
+std::optional<GraphInfo> graphInfoFor(const DisplayOptions& o, const std::string& graphPath) {
+  if (o.noInfo) return std::nullopt;
+  const std::vector<std::uint8_t> bytes =
+      io::readInputFile(graphPath, {io::kDefaultInputCap, "a PRIME graph file", ""});
+  FoundGraphInfo found = findGraphInfo(graphPath, bytes);
+  if (!found.stale.empty()) std::cerr << "prime: warning: " << found.stale << "\n";
+  return std::move(found.info);
+}
+
+Geometry geometryOf(const DisplayOptions& o, const std::optional<GraphInfo>& info) {
+  if (!info) return geometryOf(o);
+  DisplayOptions withInfo = o;
+  if (withInfo.screen.size() != 2) withInfo.screen = {info->screenWidth, info->screenHeight};
+  if (withInfo.at.size() != 2) withInfo.at = {info->at.left, info->at.top};
+  return geometryOf(withInfo);
+}
+
+Palette paletteOf(const DisplayOptions& o, const std::optional<GraphInfo>& info,
+                  const std::string& impliedName) {
+  if (o.palette.empty() && info) return info->palette;
+  return paletteOf(o, impliedName);
 }
 
 io::GraphFilePrefix readGraphForDisplay(const std::string& path, const Geometry& g, bool quiet) {

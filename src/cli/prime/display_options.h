@@ -10,6 +10,7 @@
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/dac.h"
 #include "palette/prime/export.h"
+#include "palette/prime/graph_info.h"
 #include "palette/prime/palettes.h"
 #include "palette/prime/screen.h"
 
@@ -23,6 +24,7 @@ struct DisplayOptions {
   std::vector<int> screen;     // --screen W H (view, export)
   int zoom = 1;
   bool noWindow = false;
+  bool noInfo = false;  // --no-info: ignore the graph file's companion (G8)
 };
 
 void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText);
@@ -46,6 +48,19 @@ struct Geometry {
 };
 // --screen (default 1024 x 768) and --at (default: the listing's placement).
 Geometry geometryOf(const DisplayOptions& o);
+
+// --no-info (view, export).
+void addInfoOption(CLI::App* cmd, DisplayOptions& o);
+// The companion beside a graph file (palette/prime/graph_info.h), unless
+// --no-info; a stale one is ignored with a warning on stderr (G9), a damaged
+// one is an io::InputError (G8).
+std::optional<GraphInfo> graphInfoFor(const DisplayOptions& o, const std::string& graphPath);
+// The geometry with the companion's screen and placement where --screen and
+// --at are not given (G10).
+Geometry geometryOf(const DisplayOptions& o, const std::optional<GraphInfo>& info);
+// --palette if given, else the companion's palette, else `impliedName` (G10).
+Palette paletteOf(const DisplayOptions& o, const std::optional<GraphInfo>& info,
+                  const std::string& impliedName);
 
 // Reads a graph file, complete or cut short; says on stderr when it is partial
 // and when the image does not fit the screen (beyond the listing's off-screen

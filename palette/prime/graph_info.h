@@ -1,0 +1,60 @@
+// The graph file's companion (docs/prime/file-formats.md, G7-G11): a small
+// text file beside every graph file the port writes, `graph_scr.info` beside
+// `graph_scr` (the graph file's name plus ".info"), recording what the graph
+// file cannot: the screen and the place the picture was drawn at, the palette
+// its indices mean (a built-in name, or the 256 DAC entries of a quantized
+// render), the profile, and the graph file's size and FNV-1a hash so that a
+// companion left beside another graph file is recognised. The graph file
+// itself stays byte-exact.
+//
+//   prime-graph-info 1
+//   graph 537606 fnv1a64 8f3c0d1e2a4b5c6d
+//   profile 1991
+//   screen 1024 768
+//   at 675 0
+//   palette listing                      or: palette inline DESCRIPTION...
+//   dac 0 0 0 0                          with `inline` only: 256 lines
+//   ...                                  INDEX R G B, 0..63, in index order
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "palette/prime/palettes.h"
+#include "palette/prime/screen.h"
+
+namespace prime {
+
+struct GraphInfo {
+  std::uint64_t graphBytes = 0;  // the graph file's size
+  std::uint64_t graphHash = 0;   // FNV-1a (64 bits) of its bytes
+  std::string profile = "1991";  // one word
+  int screenWidth = Screen::kWidth, screenHeight = Screen::kHeight;
+  Placement at;
+  Palette palette;       // name: a built-in name, or the inline table's description
+  bool inline_ = false;  // the DAC entries are in the file (a quantized render)
+};
+
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes);
+std::string graphInfoPath(const std::string& graphPath);  // graphPath + ".info"
+
+std::string formatGraphInfo(const GraphInfo& info);
+// Every mistake is an io::InputError naming the file, the line and the field.
+GraphInfo parseGraphInfo(std::string_view text, const std::string& fileName);
+// Written through io::OutputFile (a temporary renamed into place).
+void writeGraphInfo(const std::string& path, const GraphInfo& info);
+
+// What `prime view` and `prime export` find beside a graph file: nothing
+// (no companion), or the companion if it describes these bytes. A companion
+// that describes other bytes (a graph file replaced by another program) is
+// ignored with a warning in `stale`; a damaged one is an io::InputError.
+struct FoundGraphInfo {
+  std::optional<GraphInfo> info;
+  std::string stale;  // non-empty: why the companion there was not used
+};
+FoundGraphInfo findGraphInfo(const std::string& graphPath,
+                             std::span<const std::uint8_t> graphBytes);
+
+}  // namespace prime
