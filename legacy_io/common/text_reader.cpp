@@ -10,8 +10,23 @@
 
 namespace prime::io {
 
+std::string normalizeLineBreaks(std::string text) {
+  if (text.find('\r') == std::string::npos) return text;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r') {
+      text[out++] = '\n';
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CR LF: one break
+    } else {
+      text[out++] = text[i];
+    }
+  }
+  text.resize(out);
+  return text;
+}
+
 TextReader::TextReader(std::string text, std::string display)
-    : text_(std::move(text)), display_(std::move(display)) {}
+    : text_(normalizeLineBreaks(std::move(text))), display_(std::move(display)) {}
 
 TextReader TextReader::open(const std::string& path, const std::string& display) {
   InputFileOptions options;
