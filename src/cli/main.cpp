@@ -12,6 +12,7 @@
 
 #include "legacy_io/cgl/scene_file.h"
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/run_inputs.h"
 #include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
@@ -220,6 +221,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    // Every input the command reads is recorded: no output may replace one.
+    const prime::io::RunInputs inputs;
     return action ? action() : 0;
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";

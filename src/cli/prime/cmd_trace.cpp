@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/export.h"
 #include "palette/prime/live_screen.h"
@@ -137,6 +138,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const Scene scene = prepareScene(*dir, options->model);
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
       const std::string partial = target + ".partial";
+      // Found before the render: a missing directory, a directory, an input (M23).
+      for (const std::string& path : {target, partial, *png, *trueColourPng})
+        if (!path.empty()) io::checkOutputPath(path);
       options->settings.keepColours =
           !trueColourPng->empty();  // only the true-colour PNG reads them
       const RenderSettings& settings = options->settings;
