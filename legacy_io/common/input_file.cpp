@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/run_inputs.h"
 
 namespace prime::io {
 
@@ -52,6 +53,7 @@ Buffer readWhole(const std::string& path, const InputFileOptions& o) {
   if (::fstat(fd.get(), &st) != 0)
     throw InputError(where, std::string("cannot read ") + o.what + ": " + std::strerror(errno));
   if (!S_ISREG(st.st_mode)) throw InputError(where, "is " + kindOf(st.st_mode) + ", not " + o.what);
+  noteInput(st.st_dev, st.st_ino, shown);  // no output of this run may replace it
   const auto size = static_cast<std::uint64_t>(st.st_size);
   // The byte named is the first one past the cap.
   const InputLocation past{shown, std::nullopt, o.maxBytes};

@@ -1,14 +1,22 @@
 #include "legacy_io/common/output_file.h"
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <vector>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/run_inputs.h"
 
 namespace prime::io {
 
@@ -29,7 +37,127 @@ std::string kindOf(mode_t mode) {
   return "not a regular file";
 }
 
+// The live temporaries, for the signal handler: chunks of slots that are
+// never freed (a handler may walk them at any instant), each slot free (0),
+// being filled (1) or holding a temporary's path (2).
+struct Slot {
+  std::atomic<int> state{0};
+  char path[PATH_MAX]{};
+};
+struct Chunk {
+  static constexpr int kSlots = 64;
+  Slot slots[kSlots];
+  Chunk* next = nullptr;
+};
+std::atomic<Chunk*> chunks{nullptr};
+std::mutex chunkMutex;  // adding a chunk, and installing the handlers (never in a handler)
+const int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+extern "C" void removeTemporariesAndDie(int sig) {
+  const int saved = errno;
+  for (Chunk* c = chunks.load(); c != nullptr; c = c->next)
+    for (Slot& s : c->slots)
+      if (s.state.load() == 2) ::unlink(s.path);  // async-signal-safe
+  errno = saved;
+  // Die of the signal, as without the handler (the exit status says which).
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+void installHandlers() {
+  static bool installed = false;  // under chunkMutex
+  if (installed) return;
+  installed = true;
+  for (int sig : kSignals) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+    struct sigaction sa {};
+    sa.sa_handler = removeTemporariesAndDie;
+    sigemptyset(&sa.sa_mask);
+    for (int other : kSignals) sigaddset(&sa.sa_mask, other);
+    ::sigaction(sig, &sa, nullptr);
+  }
+}
+
+// Returns a slot index (chunk-major), or -1 when the path does not fit.
+int registerTemporary(const std::string& path) {
+  if (path.size() >= PATH_MAX) return -1;
+  for (;;) {
+    int index = 0;
+    for (Chunk* c = chunks.load(); c != nullptr; c = c->next)
+      for (Slot& s : c->slots) {
+        int expected = 0;
+        if (s.state.compare_exchange_strong(expected, 1)) {
+          std::memcpy(s.path, path.c_str(), path.size() + 1);
+          s.state.store(2);
+          return index;
+        }
+        ++index;
+      }
+    std::lock_guard lock(chunkMutex);
+    installHandlers();
+    auto* c = new Chunk;  // never freed: a handler may be reading the list
+    c->next = chunks.load();
+    chunks.store(c);
+  }
+}
+
+void unregisterTemporary(int slot) {
+  if (slot < 0) return;
+  int index = 0;
+  for (Chunk* c = chunks.load(); c != nullptr; c = c->next) {
+    if (slot < index + Chunk::kSlots) {
+      c->slots[slot - index].state.store(0);
+      return;
+    }
+    index += Chunk::kSlots;
+  }
+}
+
+// TARGETNAME.prime-tmp.<pid>.XXXXXX -> pid, or 0.
+pid_t ownerOf(std::string_view name, std::string_view target) {
+  if (name.size() <= target.size() + kTempInfix.size() || !name.starts_with(target)) return 0;
+  name.remove_prefix(target.size());
+  if (!name.starts_with(kTempInfix)) return 0;
+  name.remove_prefix(kTempInfix.size());
+  long long pid = 0;
+  auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), pid);
+  if (ec != std::errc() || end == name.data() + name.size() || *end != '.' || pid <= 0) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+bool processIsGone(pid_t pid) {
+  return ::kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+int removeStale(const std::string& dir, const std::string& target) {
+  DIR* d = ::opendir(dir.empty() ? "." : dir.c_str());
+  if (d == nullptr) return 0;
+  int removed = 0;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string_view name = e->d_name;
+    const std::size_t infix = name.find(kTempInfix);
+    if (infix == std::string_view::npos) continue;
+    const std::string_view owner = target.empty() ? name.substr(0, infix) : target;
+    const pid_t pid = ownerOf(name, owner);
+    if (pid == 0 || pid == ::getpid() || !processIsGone(pid)) continue;
+    const std::string path = (dir.empty() ? std::string() : dir + "/") + std::string(name);
+    if (::unlink(path.c_str()) == 0) ++removed;
+  }
+  ::closedir(d);
+  return removed;
+}
+
 }  // namespace
+
+int removeStaleTemporaries(const std::string& target) {
+  const fs::path p(target);
+  return removeStale(p.parent_path().string(), p.filename().string());
+}
+
+int removeStaleTemporariesIn(const std::string& dir) {
+  return removeStale(dir, "");
+}
 
 void checkOutputPath(const std::string& path) {
   struct stat st {};
@@ -44,17 +172,20 @@ void checkOutputPath(const std::string& path) {
   std::error_code ec;
   if (!dir.empty() && !fs::is_directory(dir, ec))
     refuse(path, "cannot be written: the directory " + dir.string() + " does not exist");
+  refuseIfInput(path);
 }
 
 OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   checkOutputPath(path_);
+  removeStaleTemporaries(path_);  // of an earlier run that was killed
   // mkstemp: a name nobody can predict, created with O_CREAT | O_EXCL.
-  std::string pattern = path_ + ".prime-tmp.XXXXXX";
+  std::string pattern = path_ + std::string(kTempInfix) + std::to_string(::getpid()) + ".XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
   if (fd < 0) fail("cannot create a temporary beside it", errno);
   temp_ = name.data();
+  slot_ = registerTemporary(temp_);
   // mkstemp makes the file 0600; outputs are ordinary files (0666 & ~umask).
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -69,18 +200,23 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
 
 OutputFile::~OutputFile() {
   if (file_ != nullptr) std::fclose(file_);
-  if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
+  if (!committed_) dropTemporary();
+}
+
+void OutputFile::dropTemporary() {
+  if (!temp_.empty()) ::unlink(temp_.c_str());
+  unregisterTemporary(slot_);
+  slot_ = -1;
+  temp_.clear();
 }
 
 void OutputFile::fail(const std::string& what, int error) {
+  // The reason is the step's (`error`, taken before any cleanup).
   if (file_ != nullptr) {
     std::fclose(file_);
     file_ = nullptr;
   }
-  if (!temp_.empty()) {
-    ::unlink(temp_.c_str());
-    temp_.clear();
-  }
+  dropTemporary();
   refuse(path_, what + ": " + std::strerror(error));
 }
 
@@ -94,15 +230,32 @@ void OutputFile::write(std::string_view text) {
   write(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
-void OutputFile::commit() {
+void OutputFile::finish() {
+  if (file_ == nullptr) return;
   errno = 0;
   if (std::fflush(file_) != 0) fail("write failed", errno != 0 ? errno : EIO);
+  // On a full disk the data may only fail here (delayed allocation).
+  if (::fsync(::fileno(file_)) != 0 && errno != EINVAL) fail("write failed", errno);
   std::FILE* f = file_;
   file_ = nullptr;
   if (std::fclose(f) != 0) fail("write failed", errno != 0 ? errno : EIO);
+}
+
+std::string OutputFile::release() {
+  finish();
+  unregisterTemporary(slot_);
+  slot_ = -1;
+  committed_ = true;
+  return temp_;
+}
+
+void OutputFile::commit() {
+  finish();
   // The target may have changed kind while we wrote: check again.
   checkOutputPath(path_);
   if (::rename(temp_.c_str(), path_.c_str()) != 0) fail("cannot be replaced", errno);
+  unregisterTemporary(slot_);
+  slot_ = -1;
   committed_ = true;
 }
 

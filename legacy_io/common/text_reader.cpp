@@ -12,8 +12,23 @@
 
 namespace prime::io {
 
+std::string normalizeLineBreaks(std::string text) {
+  if (text.find('\r') == std::string::npos) return text;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r') {
+      text[out++] = '\n';
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CR LF: one break
+    } else {
+      text[out++] = text[i];
+    }
+  }
+  text.resize(out);
+  return text;
+}
+
 TextReader::TextReader(std::string text, std::string display)
-    : text_(std::move(text)), display_(std::move(display)) {
+    : text_(normalizeLineBreaks(std::move(text))), display_(std::move(display)) {
   // M35: a UTF-8 byte order mark (an editor's, never the listing's) is
   // skipped, as the Malone and CGL readers skip it.
   if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;

@@ -11,9 +11,15 @@
 
 namespace prime::io {
 
+// Line breaks made uniform for every text reader: CR LF (DOS, Turbo C's text
+// files) and a lone CR (classic Mac OS) become LF, so a file is read the same
+// whatever wrote it, and line numbers in messages count its lines (M21).
+std::string normalizeLineBreaks(std::string text);
+
 class TextReader {
  public:
   // `display` is the name used in messages (e.g. "scene/prim/S1.txt").
+  // Line breaks are normalized (normalizeLineBreaks).
   TextReader(std::string text, std::string display);
   static TextReader open(const std::string& path, const std::string& display);
 

@@ -8,6 +8,7 @@
 
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
+#include "legacy_io/prime/model_commit.h"
 #include "legacy_io/prime/turbo_c.h"
 #include "src/prime/math/listing_matrix.h"
 
@@ -307,8 +308,18 @@ class Modeller {
 Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
                  const ModelOptions& options) {
   Modeller m(scene, options);
-  m.run(calls, scene.display(scene.root() / "Model.txt"));
-  return m.take();
+  const std::string origin = scene.display(scene.root() / "Model.txt");
+  m.run(calls, origin);
+  Model model = m.take();
+  if (model.objects.empty() && !options.allowEmpty)  // M22
+    throw InputError({origin, std::nullopt, std::nullopt}, "objects",
+                     "at least one AddObj or CopyObj (a Model.txt with no objects would replace "
+                     "the databases with an empty scene; prime model --allow-empty builds one "
+                     "anyway)",
+                     calls.empty()
+                         ? "no calls at all (an empty file, or only comments)"
+                         : std::to_string(calls.size()) + " call(s), none making an object");
+  return model;
 }
 
 Model buildModel(const SceneDir& scene, const ModelOptions& options) {
@@ -320,29 +331,16 @@ Model buildModel(const SceneDir& scene, const ModelOptions& options) {
                     options);
 }
 
-void writeModel(const SceneDir& scene, const Model& model) {
-  // Encode everything first; then write all temporaries; then rename all.
-  std::vector<std::pair<fs::path, std::vector<std::uint8_t>>> files;
-  files.emplace_back(scene.root() / "prim" / "PrimFile", toBytes(model.prims));
-  files.emplace_back(scene.root() / "obj" / "List", toBytes(model.list));
-  for (const auto& [name, obj] : model.objects)
-    files.emplace_back(scene.root() / "obj" / name, toBytes(obj));
-  for (const auto& [name, map] : model.maps)
-    files.emplace_back(scene.root() / "map" / name, toBytes(map));
-
-  // Every temporary written first (each a fresh mkstemp name beside its
-  // target: a planted link is never followed), then all renamed; any
-  // failure before the renames removes every temporary.
-  std::vector<std::unique_ptr<OutputFile>> outs;
-  for (const auto& [path, bytes] : files) {
-    fs::create_directories(path.parent_path());
-    if (fs::is_symlink(fs::symlink_status(path)))
-      throw InputError({scene.display(path), std::nullopt, std::nullopt},
-                       "is a symbolic link; refusing to write through it");
-    outs.push_back(std::make_unique<OutputFile>(path.string()));
-    outs.back()->write(bytes);
-  }
-  for (auto& out : outs) out->commit();
+void writeModel(const SceneDir& scene, const Model& model, const DirLock* held) {
+  std::unique_ptr<DirLock> lock;
+  if (held == nullptr) lock = lockForModel(scene, /*wait=*/false);
+  // Encode everything first; then switch them all at once.
+  std::vector<DatabaseFile> files;
+  files.push_back({"prim/PrimFile", toBytes(model.prims)});
+  files.push_back({"obj/List", toBytes(model.list)});
+  for (const auto& [name, obj] : model.objects) files.push_back({"obj/" + name, toBytes(obj)});
+  for (const auto& [name, map] : model.maps) files.push_back({"map/" + name, toBytes(map)});
+  commitDatabases(scene, files);
 }
 
 }  // namespace prime::io

@@ -7,13 +7,15 @@
 // Model.txt, one per line, in the order main() made them (errata E32).
 //
 // The whole model is built in memory first; only when every input has been
-// read and checked are the databases written (each through a temporary file
-// renamed into place), so a failed run leaves the previous databases intact.
+// read and checked are the databases written, all of them as one switch
+// (model_commit.h, M19) under the scene's lock (M20), so a failed or killed
+// run leaves the previous databases intact, or the new ones complete.
 #pragma once
 #include <map>
 #include <string>
 #include <vector>
 
+#include "legacy_io/common/dir_lock.h"
 #include "legacy_io/prime/map_file.h"
 #include "legacy_io/prime/obj_file.h"
 #include "legacy_io/prime/obj_list.h"
@@ -32,6 +34,9 @@ struct ModelOptions {
   // NewPrimNum keeps ftell() in a 16-bit int (E40, K37): past 32767 bytes the
   // original failed. false lifts that limit (not the 1991 behaviour).
   bool limitPrimFileTo16Bits = true;
+  // A Model.txt that builds no object (empty, all comments) is refused (M22): it would replace the
+  // databases with an empty scene.
+  bool allowEmpty = false;
 };
 
 struct Model {
@@ -47,7 +52,9 @@ Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
                  const ModelOptions& options = {});
 // Reads <scene>/Model.txt and builds from it.
 Model buildModel(const SceneDir& scene, const ModelOptions& options = {});
-// Writes every database of `model` into `scene` (temporary files, then renames).
-void writeModel(const SceneDir& scene, const Model& model);
+// Writes every database of `model` into `scene` as one switch (M19). `held`:
+// the scene's lock, taken by the caller with lockForModel; null: taken here
+// (and "busy" if another run holds it).
+void writeModel(const SceneDir& scene, const Model& model, const DirLock* held = nullptr);
 
 }  // namespace prime::io

@@ -62,4 +62,17 @@ fs::path SceneDir::existingInput(const std::string& sub, const std::string& name
   return p;
 }
 
+std::vector<fs::path> SceneDir::inputFiles() const {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  if (fs::is_regular_file(root_ / "Model.txt", ec)) files.push_back(root_ / "Model.txt");
+  for (const char* sub : {"prim", "bound", "obj", "obj/Copy", "map", "light"}) {
+    const fs::path d = root_ / sub;
+    if (fs::is_symlink(fs::symlink_status(d, ec)) || !fs::is_directory(d, ec)) continue;
+    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
+      if (it->is_regular_file(ec)) files.push_back(it->path());
+  }
+  return files;
+}
+
 }  // namespace prime::io

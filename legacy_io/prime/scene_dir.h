@@ -6,6 +6,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace prime::io {
 
@@ -24,6 +25,10 @@ class SceneDir {
   // How a path inside the scene is shown in messages: "<scene>/prim/S1.txt".
   std::string display(const std::filesystem::path& p) const;
   const std::filesystem::path& root() const { return root_; }
+  // Every regular file a scene is made of: Model.txt and the files of prim/,
+  // bound/, obj/, obj/Copy/, map/ and light/ (text inputs and databases), the
+  // files no output of a run may replace (run_inputs.h). Not graph_scr.
+  std::vector<std::filesystem::path> inputFiles() const;
 
  private:
   std::filesystem::path root_;

@@ -220,7 +220,7 @@ std::vector<ModelCall> parseModelText(const std::string& text, const std::string
       {"CopyObj", 3, "CopyObj <source object file> <destination object file> <copy file>"},
       {"AddMap", 1, "AddMap <map text file>"}};
   std::vector<ModelCall> calls;
-  std::istringstream lines(text);
+  std::istringstream lines(normalizeLineBreaks(text));  // CR-only is lines too (M21)
   std::string raw;
   int lineNo = 0;
   while (std::getline(lines, raw)) {

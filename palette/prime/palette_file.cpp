@@ -10,6 +10,7 @@
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
+#include "legacy_io/common/text_reader.h"
 
 namespace prime {
 
@@ -188,7 +189,8 @@ class Parser {
 }  // namespace
 
 Palette parsePaletteText(std::string_view text, const std::string& fileName) {
-  return Parser(text, fileName).parse();
+  const std::string lines = io::normalizeLineBreaks(std::string(text));  // CR-only too (M21)
+  return Parser(lines, fileName).parse();
 }
 
 Palette readPaletteFile(const std::string& path) {

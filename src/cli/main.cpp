@@ -12,6 +12,7 @@
 
 #include "legacy_io/cgl/scene_file.h"
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/run_inputs.h"
 #include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
@@ -225,6 +226,8 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   }
   if (parseOnly) return 0;
   try {
+    // Every input the command reads is recorded: no output may replace one.
+    const prime::io::RunInputs inputs;
     return action ? action() : 0;
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";

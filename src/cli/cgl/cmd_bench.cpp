@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "src/bench/measure.h"
 #include "src/cgl/render.h"
 #include "src/cli/cgl/commands.h"
@@ -129,6 +130,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
           "per CPU second with %d thread(s))\n",
           *runs, threads->front());
       if (!csv->empty()) {
+        io::checkOutputPath(*csv);  // not an input of the run, its directory exists
         std::ofstream out(*csv);
         out << "scene,pixels,aalevel,depth,read_ms,build_ms";
         for (int n : *threads) out << ",cpu_s_" << n << ",wall_s_" << n;

@@ -8,6 +8,9 @@
 #include <stdexcept>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
+#include "legacy_io/common/output_file.h"
+#include "legacy_io/common/text_reader.h"
 #include "src/cgl/cook.h"
 #include "src/cli/cgl/commands.h"
 
@@ -29,8 +32,9 @@ prime::cgl::Spectrum reflectanceOf(const std::vector<std::string>& args) {
   double v = 0;
   if (args.size() == 1 && !isNumber(args[0], v)) {
     where = args[0];
-    std::ifstream in(args[0]);
-    if (!in) throw io::InputError(io::InputLocation{args[0]}, "cannot open the reflectance file");
+    io::InputFileOptions input;
+    input.what = "a reflectance file";
+    std::istringstream in(io::normalizeLineBreaks(io::readInputText(args[0], input)));
     std::string line;
     int lineNo = 0;
     while (std::getline(in, line)) {
@@ -100,10 +104,9 @@ void addCookCommand(CLI::App& app, Action& action) {
       prime::cgl::CookDescriptor desc = *d;
       desc.reflectance = reflectanceOf(*refl);
       const std::string text = prime::cgl::cookDescriptorText(desc);
-      std::ofstream f(*out, std::ios::binary);
-      f << text;
-      f.close();
-      if (!f) throw std::runtime_error("cannot write " + *out);
+      io::OutputFile f(*out);  // never over the reflectance file (an input), never half written
+      f.write(text);
+      f.commit();
       return 0;
     };
   });

@@ -137,6 +137,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const prime::cgl::SceneFile file = readCgl(*o, o->quiet);
       const auto t1 = Clock::now();
       const prime::cgl::Scene scene = buildCgl(*o, file);
+      // Again now that the inputs (scene, texture maps) are known: none may be an output.
+      for (const std::string* out : {rle.get(), raw.get(), png.get(), png8514.get()})
+        if (!out->empty()) io::checkOutputPath(*out);
       const auto t2 = Clock::now();
       const bool quiet = file.program.quiet;
       if (!quiet) {

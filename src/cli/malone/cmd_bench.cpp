@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "src/bench/measure.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
@@ -99,6 +100,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
         std::printf("\n");
       }
       if (!csv->empty()) {
+        io::checkOutputPath(*csv);  // not an input of the run, its directory exists
         std::ofstream out(*csv);
         out << "scene,pixels,read_ms,build_ms";
         for (int n : *threads) out << ",cpu_s_" << n << ",wall_s_" << n;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "legacy_io/malone/ppm.h"
 #include "palette/png_image.h"
 #include "palette/window/live_rgb_frame.h"
@@ -96,6 +97,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
       }
       LoadTimings load;
       const prime::malone::Scene scene = loadMalone(*o, &load);
+      // Found before the render: a missing directory, a directory, an input.
+      for (const std::string* out : {ppm.get(), png.get(), png8514.get()})
+        if (!out->empty()) io::checkOutputPath(*out);
       const int width = scene.viewer.xRes, height = scene.viewer.yRes;
       display::LiveRgbFrame frame(width, height);
       LiveOptions options = *live;

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "legacy_io/prime/model_builder.h"
+#include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
 
 namespace prime::cli {
@@ -12,6 +13,8 @@ void addModelCommand(CLI::App& app, Action& action) {
   auto dir = std::make_shared<std::string>();
   auto options = std::make_shared<io::ModelOptions>();
   auto quiet = std::make_shared<bool>(false);
+  auto wait = std::make_shared<bool>(false);
+  auto verify = std::make_shared<bool>(false);
   cmd->add_option("DIR", *dir, "Scene directory (holds Model.txt, prim/, obj/, map/ ...)")
       ->required()
       ->check(CLI::ExistingDirectory);
@@ -20,12 +23,29 @@ void addModelCommand(CLI::App& app, Action& action) {
   cmd->add_flag(
       "--no-16bit-limit", [options](std::int64_t) { options->limitPrimFileTo16Bits = false; },
       "Allow more than 113 primitives (the listing's 16-bit ftell stops there: E40)");
+  cmd->add_flag("--allow-empty", options->allowEmpty,
+                "Build databases even if Model.txt lists no object (refused otherwise: M22)");
+  cmd->add_flag("--wait", *wait,
+                "If another prime model is writing DIR, wait for it (default: say busy, M20)");
+  cmd->add_flag("--verify", *verify,
+                "Build nothing: finish an interrupted run and check the databases against "
+                "DIR/prime-model.stamp (M19)");
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
       const io::SceneDir scene(*dir);
+      const auto lock = io::lockForModel(scene, *wait);
+      if (*verify) {
+        const bool finished = io::settleModel(scene);
+        io::verifyModel(scene);
+        if (!*quiet)
+          std::cout << "verified " << *dir << ": "
+                    << (finished ? "finished an interrupted prime model run; " : "")
+                    << "the databases are the ones the last run wrote\n";
+        return 0;
+      }
       const io::Model model = io::buildModel(scene, *options);
-      io::writeModel(scene, model);
+      io::writeModel(scene, model, lock.get());
       for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
       if (!*quiet)
         std::cout << "modelled " << *dir << ": " << model.objects.size() << " object file(s), "

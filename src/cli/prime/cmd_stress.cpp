@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "src/cli/commands.h"
 #include "src/prime/stress/stress.h"
 
@@ -77,6 +78,7 @@ void addStressCommand(CLI::App& app, Action& action) {
       const auto results = stress::runStress(opts);
       std::cout << stress::formatTable(results, *markdown);
       if (!csv->empty()) {
+        io::checkOutputPath(*csv);  // not an input of the run, its directory exists
         std::ofstream f(*csv);
         f << stress::formatCsv(results);
         if (!f) {

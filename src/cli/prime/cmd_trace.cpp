@@ -15,6 +15,7 @@
 #include <functional>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/graph_file.h"
 #include "palette/prime/export.h"
 #include "palette/prime/graph_info.h"
@@ -187,6 +188,10 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
       const std::string partial = target + ".partial";
       const bool quantizing = !quant->method.empty();
+      // Found before the render: a missing directory, a directory, an input (M23).
+      for (const std::string& path : {target, partial, graphInfoPath(target),
+                                      graphInfoPath(partial), *png, *trueColourPng})
+        if (!path.empty()) io::checkOutputPath(path);
       options->settings.keepColours =
           !trueColourPng->empty() || quantizing;  // only these read them
       const RenderSettings& settings = options->settings;

@@ -3,8 +3,10 @@
 #include <iostream>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/run_inputs.h"
 #include "legacy_io/prime/model_builder.h"
 #include "src/prime/render/probe.h"
+#include "legacy_io/prime/model_commit.h"
 #include "src/prime/scene/scene_loader.h"
 
 namespace prime::cli {
@@ -79,10 +81,16 @@ void finishRenderOptions(RenderOptions& o) {
 Scene prepareScene(const std::string& dir, bool model) {
   const io::SceneDir scene(dir);
   if (model) {
+    const auto lock = io::lockForModel(scene, /*wait=*/false);
     const io::Model built = io::buildModel(scene);
-    io::writeModel(scene, built);
+    io::writeModel(scene, built, lock.get());
     for (const auto& w : built.warnings) std::cerr << "prime: warning: " << w << "\n";
-  } else if (auto stale = staleDatabases(scene); !stale.empty()) {
+  }
+  // Held while the databases are read: no prime model switches them meanwhile.
+  const auto reading = io::openModelForReading(scene);  // M19
+  // No output of this run may overwrite a text input or database of the scene.
+  for (const auto& f : scene.inputFiles()) io::protectInput(f.string(), scene.display(f));
+  if (auto stale = model ? std::vector<std::string>{} : staleDatabases(scene); !stale.empty()) {
     std::string msg = "the scene's databases are not up to date:";
     for (const auto& s : stale) msg += "\n  " + s;
     msg += "\nrun `prime model " + dir + "` first, or add --model";

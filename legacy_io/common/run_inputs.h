@@ -1,0 +1,34 @@
+// No output of a run may overwrite one of its inputs (`trace --out
+// DIR/prim/PrimFile`, `export G G`, `--png DIR/Model.txt`).
+//
+// While a RunInputs scope exists (the CLI opens one around every command),
+// every file read through readInputFile is recorded by device and inode, and
+// a command may add files it protects without reading them (a PRIME scene's
+// text inputs and databases). checkOutputPath, and so every OutputFile,
+// refuses a target that resolves to a recorded file: the same inode, reached
+// by the same name, another name, a hard link or a symbolic link. A target
+// that does not exist yet cannot be an input. Outside a scope (unit tests
+// that write, read and rewrite the same file) nothing is recorded.
+#pragma once
+#include <string>
+
+namespace prime::io {
+
+class RunInputs {
+ public:
+  RunInputs();
+  ~RunInputs();
+  RunInputs(const RunInputs&) = delete;
+  RunInputs& operator=(const RunInputs&) = delete;
+};
+
+// Records the file at `path` (shown as `display` in messages) as an input of
+// the current run, if a RunInputs scope is open and the file exists.
+void protectInput(const std::string& path, const std::string& display = "");
+// The same for an already open file (readInputFile calls it with its fstat).
+void noteInput(unsigned long long device, unsigned long long inode, const std::string& display);
+// Throws InputError naming both files if `output` resolves to an input of the
+// current run.
+void refuseIfInput(const std::string& output);
+
+}  // namespace prime::io
