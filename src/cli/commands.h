@@ -22,5 +22,7 @@ void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
 void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
+void addCheckCommand(CLI::App& app, Action& action);      // cmd_check.cpp
+void addNewCommand(CLI::App& app, Action& action);        // cmd_new.cpp
 
 }  // namespace prime::cli

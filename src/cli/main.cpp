@@ -15,6 +15,7 @@
 #include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
+#include "src/cli/live_render.h"
 #include "src/cli/malone/commands.h"
 
 namespace {
@@ -180,6 +181,8 @@ int main(int argc, char** argv) {
   prime::cli::addBenchCommand(app, action);
   prime::cli::addPlate1Command(app, action);
   prime::cli::addStressCommand(app, action);
+  prime::cli::addCheckCommand(app, action);
+  prime::cli::addNewCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
@@ -220,7 +223,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    return action ? action() : 0;
+    const int status = action ? action() : 0;
+    // Ctrl-C (or SIGTERM) that aborted a render: 130 (143), as the shell
+    // reports a process the signal ended, not the 1 of Esc (ExitOnEsc).
+    const int sig = prime::cli::interruptingSignal();
+    return status != 0 && sig != 0 ? 128 + sig : status;
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";
     return 1;
