@@ -25,7 +25,14 @@ def run(prime, *args):
     r = subprocess.run([prime, *args], capture_output=True, text=True, env=env)
     if r.returncode != 0:
         sys.exit(f"gen_cli_docs: {prime} {' '.join(args)} exited {r.returncode}: {r.stderr}")
-    return r.stdout
+    # CLI11 shows argv[0]: the page shows the command's name.
+    return r.stdout.replace(prime + " ", "prime ")
+
+
+# Commands that serve several systems: the scene picks the system, and each
+# system's options (`prime trace --format malone --help`) complete too.
+SYSTEMS = {"trace": ["malone", "cgl"], "probe": ["malone", "cgl"], "bench": ["malone", "cgl"],
+           "export-pov": ["malone", "cgl"], "export": ["rle"], "view": ["rle"]}
 
 
 def section(text, title):
@@ -145,6 +152,13 @@ def main():
     cmds = commands(prime)
     helps = {c: run(prime, "help", c) for c, _ in cmds}
     table = {c: options(helps[c]) for c, _ in cmds}
+    for c, formats in SYSTEMS.items():
+        if c not in helps:
+            continue
+        for f in formats:
+            other = run(prime, c, "--format", f, "--help")
+            helps[c] += f"\n(--format {f}, or a scene that is one)\n" + other
+            table[c] += [o for o in options(other) if o not in table[c]]
     if out == "--list":
         for c, opts in table.items():
             print(" ".join([c, *opts]))

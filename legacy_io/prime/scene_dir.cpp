@@ -77,10 +77,10 @@ fs::path SceneDir::resolve(const fs::path& dir, const std::string& part) const {
   std::vector<std::string> names = hit->second;
   if (names.size() > 1) {
     std::sort(names.begin(), names.end());
-    throw InputError({display(dir / names[0]), std::nullopt, std::nullopt},
-                     "and " + display(dir / names[1]) +
-                         " differ only by case; PRIME looks its files up without regard to case "
-                         "(decision M40): remove or rename one");
+    throw InputError({display(dir), std::nullopt, std::nullopt},
+                     "two entries differ only by case, " + names[0] + " and " + names[1] +
+                         "; PRIME looks its files up without regard to case (decision M40): "
+                         "remove or rename one");
   }
   return dir / names.front();
 }

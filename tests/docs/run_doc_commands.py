@@ -14,7 +14,7 @@ anywhere but under out/ and the scene directories (scenes/*/*/, where
 `prime model` and `prime trace` write the databases and graph_scr, as the
 listing did).
 
-usage: run_doc_commands.py PRIME_EXECUTABLE [--repo DIR] [--keep]
+usage: run_doc_commands.py PRIME_EXECUTABLE [--repo DIR] [--keep] [--page PAGE ...]
 """
 
 import argparse
@@ -29,7 +29,7 @@ import time
 # The pages whose ```sh blocks run (docs/contributing notes in README.md).
 PAGES = ["README.md"]
 
-NOT_RUN = "<!-- not run -->"
+NOT_RUN = "<!-- not run"  # "<!-- not run -->" or "<!-- not run: why -->"
 
 
 def blocks(text):
@@ -86,6 +86,8 @@ def main():
     ap.add_argument("prime")
     ap.add_argument("--repo", default=os.path.join(os.path.dirname(__file__), "..", ".."))
     ap.add_argument("--keep", action="store_true", help="keep the scratch copy")
+    ap.add_argument("--page", action="append",
+                    help="run these pages (relative to the repository) instead of PAGES")
     args = ap.parse_args()
     repo = os.path.abspath(args.repo)
     exe = os.path.abspath(args.prime)
@@ -111,7 +113,7 @@ def main():
         for v in ("DISPLAY", "WAYLAND_DISPLAY"):
             env.pop(v, None)
         env["B"] = "build/release/src/cli/prime"
-        for page in PAGES:
+        for page in args.page or PAGES:
             with open(os.path.join(scratch, page), encoding="utf-8") as fh:
                 found = blocks(fh.read())
             for line, code in found:

@@ -19,16 +19,15 @@ using prime::io::SceneDir;
 using ::testing::HasSubstr;
 
 TEST(SceneDirCase, FindsUpperCaseNamesAndKeepsTheirSpelling) {
-  prime::test::TempScene s;
-  fs::create_directories(s.path("OBJ"));
-  s.write("OBJ/LIST", "x");
-  s.write("prim/PRIMFILE", "x");
-  s.write("MODEL.TXT", "x");
-  const SceneDir dir(s.path());
-  EXPECT_EQ(dir.find("obj", "List"), s.path("OBJ/LIST"));
-  EXPECT_EQ(dir.find("prim", "PrimFile"), s.path("prim/PRIMFILE"));
-  EXPECT_EQ(dir.find(".", "Model.txt"), s.path("MODEL.TXT"));
-  EXPECT_EQ(dir.existingInput("obj", "List", "test"), s.path("OBJ/LIST"));
+  prime::test::TempScene s;  // its own prim/, obj/ ...: the DOS scene goes in DOS/
+  s.write("DOS/OBJ/LIST", "x");
+  s.write("DOS/prim/PRIMFILE", "x");
+  s.write("DOS/MODEL.TXT", "x");
+  const SceneDir dir(s.path("DOS"));
+  EXPECT_EQ(dir.find("obj", "List"), s.path("DOS/OBJ/LIST"));
+  EXPECT_EQ(dir.find("prim", "PrimFile"), s.path("DOS/prim/PRIMFILE"));
+  EXPECT_EQ(dir.find(".", "Model.txt"), s.path("DOS/MODEL.TXT"));
+  EXPECT_EQ(dir.existingInput("obj", "List", "test"), s.path("DOS/OBJ/LIST"));
 }
 
 TEST(SceneDirCase, TheExactNameIsFoundAndAMissingOneIsCanonical) {
@@ -59,8 +58,7 @@ TEST(SceneDirCase, TwoNamesThatDifferOnlyByCaseAreRefusedNamingBoth) {
     dir.find("obj", "List");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("obj/LIST"));
-    EXPECT_THAT(e.what(), HasSubstr("obj/List"));
+    EXPECT_THAT(e.what(), HasSubstr("obj: two entries differ only by case, LIST and List"));
     EXPECT_THAT(e.what(), HasSubstr("M40"));
   }
   // A clash of directories too.
