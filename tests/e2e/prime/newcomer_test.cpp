@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "legacy_io/prime/graph_file.h"
 #include "tests/support/run_prime.h"
@@ -172,6 +174,43 @@ TEST(New, RefusesANonEmptyDirectory) {
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("non-empty directory"));
   EXPECT_FALSE(s.exists("Model.txt"));
+}
+
+// Every command that writes a file names it on a line "wrote PATH" (not with
+// -q): PRIME's trace and plate1, Malone's and CGL's trace.
+TEST(WroteLines, EveryWrittenFileIsNamedOnceUnlessQuiet) {
+  TempScene s;
+  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path("sphere"), fs::copy_options::recursive);
+  const fs::path scenes = fs::path(PRIME_SCENES).parent_path();
+  const std::string g = s.path("g.scr").string(), png = s.path("a.png").string(),
+                    t = s.path("t.png").string(), ppm = s.path("m.ppm").string(),
+                    rle = s.path("c.rle").string();
+  struct Case {
+    std::string args;
+    std::vector<std::string> files;
+  };
+  const std::vector<Case> cases = {
+      {"trace " + q(s.path("sphere")) + " --model --out " + g + " --png " + png +
+           " --true-color-png " + t,
+       {g, png, t}},
+      {"plate1 " + q(scenes / "prime/plate1") + " --out " + g + " --png " + png, {g, png}},
+      {"trace " + q(scenes / "malone/glass.mal") + " --ppm " + ppm + " --png " + png, {ppm, png}},
+      {"trace " + q(scenes / "cgl/checkerboard.cgl") + " --rle " + rle + " --png " + png,
+       {rle, png}},
+  };
+  for (const Case& c : cases) {
+    auto r = runPrime(c.args);
+    ASSERT_EQ(r.status, 0) << c.args << "\n" << r.output;
+    for (const std::string& f : c.files) {
+      const std::string line = "\nwrote " + f + "\n";
+      const auto at = r.output.find(line);
+      EXPECT_NE(at, std::string::npos) << c.args << "\n" << r.output;
+      EXPECT_EQ(r.output.find(line, at + 1), std::string::npos) << "twice: " << line;
+    }
+    r = runPrime(c.args + " -q");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_THAT(r.output, Not(HasSubstr("wrote "))) << c.args;
+  }
 }
 
 }  // namespace
