@@ -1,6 +1,7 @@
 // prime: the command-line front end. Every error a user can cause (bad scene
 // data, missing files) is reported on stderr as "prime: <file:line: ...>" with
-// exit status 1; usage errors exit with CLI11's status (106 and friends).
+// exit status 1; usage errors exit 2; a render that Ctrl-C (SIGINT) or SIGTERM
+// aborted exits 128 + the signal (130, 143), as a shell reports it.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
