@@ -1,5 +1,7 @@
 #include "legacy_io/prime/scene_dir.h"
 
+#include <algorithm>
+#include <cctype>
 #include <vector>
 
 #include "legacy_io/common/error.h"
@@ -42,12 +44,61 @@ fs::path SceneDir::file(const std::string& sub, const std::string& name,
   return root_ / sub / name;
 }
 
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+// M40: `part` inside `dir`, matched without regard to (ASCII) case. The
+// directory is listed once and again only when a name is not in the listing
+// (a file written since), so a scene of n objects costs n lookups, not n scans.
+fs::path SceneDir::resolve(const fs::path& dir, const std::string& part) const {
+  if (part == "." || part.empty()) return dir;
+  const std::string key = lower(part);
+  std::lock_guard lock(listing_->mutex);
+  const std::string dirKey = dir.string();
+  auto scan = [&] {
+    auto& entries = listing_->byDir[dirKey];
+    entries.clear();
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+      entries[lower(it->path().filename().string())].push_back(it->path().filename().string());
+    return &entries;
+  };
+  auto found = listing_->byDir.find(dirKey);
+  const auto* entries = found == listing_->byDir.end() ? scan() : &found->second;
+  if (entries->find(key) == entries->end()) entries = scan();
+  const auto hit = entries->find(key);
+  if (hit == entries->end()) return dir / part;  // canonical: does not exist
+  std::vector<std::string> names = hit->second;
+  if (names.size() > 1) {
+    std::sort(names.begin(), names.end());
+    throw InputError({display(dir), std::nullopt, std::nullopt},
+                     "two entries differ only by case, " + names[0] + " and " + names[1] +
+                         "; PRIME looks its files up without regard to case (decision M40): "
+                         "remove or rename one");
+  }
+  return dir / names.front();
+}
+
+fs::path SceneDir::find(const std::string& sub, const std::string& name) const {
+  fs::path dir = root_;
+  for (const auto& part : fs::path(sub)) dir = resolve(dir, part.string());
+  return resolve(dir, name);
+}
+
 fs::path SceneDir::existingInput(const std::string& sub, const std::string& name,
                                  const std::string& origin) const {
-  const fs::path p = file(sub, name, origin);
+  file(sub, name, origin);  // the name checks
+  const fs::path p = find(sub, name);
   std::vector<fs::path> chain;
   fs::path dir = root_;
-  for (const auto& part : fs::path(sub)) chain.push_back(dir /= part);
+  for (const auto& part : fs::path(sub))
+    if (part != ".") chain.push_back(dir = resolve(dir, part.string()));
   chain.push_back(p);
   for (const fs::path& q : chain) {
     if (fs::is_symlink(fs::symlink_status(q)))

@@ -3,8 +3,17 @@
 // Every file name that comes from scene data goes through here, and here only
 // plain names are accepted: no "..", no absolute paths, no separators, no
 // symbolic links, so no scene file can make prime read or write elsewhere.
+//
+// Reading finds each name without regard to case (decision M40): a scene copied
+// from a DOS disk has PRIM/PRIMFILE, OBJ/LIST, MAP/MAP1_R.MAP, LIGHT/LIGHT.TXT,
+// and a case-sensitive file system must still find them. Two entries of one
+// directory that differ only by case are refused, naming both. Writing keeps
+// the canonical names (prim/PrimFile, ...).
 #pragma once
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -19,9 +28,14 @@ class SceneDir {
   // (e.g. "scene/Model.txt:3"). Throws InputError for an unsafe name.
   std::filesystem::path file(const std::string& sub, const std::string& name,
                              const std::string& origin) const;
-  // The same, additionally refusing a path that exists as a symbolic link.
+  // The same, additionally refusing a path that exists as a symbolic link,
+  // found without regard to case (M40): the path as it is on disk.
   std::filesystem::path existingInput(const std::string& sub, const std::string& name,
                                       const std::string& origin) const;
+  // The path of sub/name as it is on disk, each part matched without regard
+  // to case (M40); the canonical path when a part does not exist. Throws
+  // InputError when two entries of a directory differ only by case.
+  std::filesystem::path find(const std::string& sub, const std::string& name) const;
   // How a path inside the scene is shown in messages: "<scene>/prim/S1.txt".
   std::string display(const std::filesystem::path& p) const;
   const std::filesystem::path& root() const { return root_; }
@@ -31,7 +45,14 @@ class SceneDir {
   std::vector<std::filesystem::path> inputFiles() const;
 
  private:
+  // A directory's entries by lower-case name, read once (and again on a miss).
+  struct Listing {
+    std::mutex mutex;
+    std::map<std::string, std::map<std::string, std::vector<std::string>>> byDir;
+  };
+  std::filesystem::path resolve(const std::filesystem::path& dir, const std::string& part) const;
   std::filesystem::path root_;
+  std::shared_ptr<Listing> listing_ = std::make_shared<Listing>();
 };
 
 // Longest file name SceneDir::file accepts (NAME_MAX on Linux).

@@ -78,11 +78,16 @@ OpenWindow loadModule() {
       throw WindowError("cannot load the window module " + where +
                         " (PRIME_WINDOW_MODULE): " + dlerrorText());
   } else {
-    // Next to the executable (the build tree, or an install that keeps them
-    // together); failing that, by name from the library path.
+    // Next to the executable (the build tree), or in ../lib/prime/ from it
+    // (where `cmake --install` puts it, whatever the prefix); failing that,
+    // by name from the library path.
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    const fs::path beside = ec ? fs::path() : self.parent_path() / name;
+    fs::path beside = ec ? fs::path() : self.parent_path() / name;
+    if (!beside.empty() && !fs::exists(beside, ec)) {
+      const fs::path installed = self.parent_path() / ".." / "lib" / "prime" / name;
+      if (fs::exists(installed, ec)) beside = installed.lexically_normal();
+    }
     if (!beside.empty() && fs::exists(beside, ec)) {
       where = beside.string();
       handle = dlopen(where.c_str(), RTLD_NOW | RTLD_LOCAL);

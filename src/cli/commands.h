@@ -23,5 +23,7 @@ void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
 void addQuantizeCommand(CLI::App& app, Action& action);   // cmd_quantize.cpp (every system's PNG)
+void addCheckCommand(CLI::App& app, Action& action);      // cmd_check.cpp
+void addNewCommand(CLI::App& app, Action& action);        // cmd_new.cpp
 
 }  // namespace prime::cli

@@ -17,7 +17,9 @@ namespace {
 // Headless Ctrl-C / SIGTERM: set the render's abort flag (an atomic store is
 // async-signal-safe). With a window, SDL turns both into a quit event instead.
 std::atomic<bool>* gAbortOnSignal = nullptr;
-extern "C" void abortOnSignal(int) {
+volatile sig_atomic_t gSignal = 0;  // the signal that aborted, for the exit status
+extern "C" void abortOnSignal(int sig) {
+  gSignal = sig;
   if (gAbortOnSignal != nullptr) gAbortOnSignal->store(true);
 }
 
@@ -45,6 +47,10 @@ class SignalsAbort {
 };
 
 }  // namespace
+
+int interruptingSignal() {
+  return gSignal;
+}
 
 LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     : options_(std::move(options)), tty_(isatty(STDERR_FILENO) && !options_.quiet) {

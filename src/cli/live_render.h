@@ -28,6 +28,10 @@ struct LiveOptions {
   std::string keys;         // the frame's own keys, for the first message ("P palette, D DAC")
 };
 
+// The signal (SIGINT, SIGTERM) that aborted a headless render, or 0: main()
+// exits with 128 + it, as a shell reports a process the signal ended.
+int interruptingSignal();
+
 class LiveRender {
  public:
   // Opens a window on `frame` unless there can be none (no DISPLAY,

@@ -1,6 +1,7 @@
 // prime: the command-line front end. Every error a user can cause (bad scene
 // data, missing files) is reported on stderr as "prime: <file:line: ...>" with
-// exit status 1; usage errors exit with CLI11's status (106 and friends).
+// exit status 1; usage errors exit 2; a render that Ctrl-C (SIGINT) or SIGTERM
+// aborted exits 128 + the signal (130, 143), as a shell reports it.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -16,6 +17,7 @@
 #include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
+#include "src/cli/live_render.h"
 #include "src/cli/malone/commands.h"
 
 namespace {
@@ -185,6 +187,8 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   prime::cli::addPlate1Command(app, action);
   prime::cli::addStressCommand(app, action);
   prime::cli::addQuantizeCommand(app, action);
+  prime::cli::addCheckCommand(app, action);
+  prime::cli::addNewCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
@@ -228,7 +232,11 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   try {
     // Every input the command reads is recorded: no output may replace one.
     const prime::io::RunInputs inputs;
-    return action ? action() : 0;
+    const int status = action ? action() : 0;
+    // Ctrl-C (or SIGTERM) that aborted a render: 130 (143), as the shell
+    // reports a process the signal ended, not the 1 of Esc (ExitOnEsc).
+    const int sig = prime::cli::interruptingSignal();
+    return status != 0 && sig != 0 ? 128 + sig : status;
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";
     return 1;

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "legacy_io/cgl/frame.h"
 #include "legacy_io/common/output_file.h"
@@ -183,8 +185,10 @@ void addTraceCommand(CLI::App& app, Action& action) {
         return 1;
       }
       std::string written;
+      std::vector<std::string> files;
       auto wrote = [&](const std::string& path) {
-        written += (written.empty() ? ": wrote " : ", ") + path;
+        written += (written.empty() ? ": " : ", ") + path;
+        files.push_back(path);
       };
       if (!rle->empty()) {
         prime::cgl::writeRleFile(*rle, result.frame);
@@ -202,7 +206,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
         write8514Png(*png8514, prime::cgl::toRgbImage(result.frame));
         wrote(*png8514);
       }
-      if (!quiet) printSummary(result, written);
+      if (!quiet) {
+        printSummary(result, written);
+        // One "wrote PATH" line per file written, as every command (issue 16).
+        for (const std::string& f : files) std::printf("wrote %s\n", f.c_str());
+      }
       if (*timings)
         std::printf("timings: read %.3f s, preprocess %.3f s, render %.3f s\n",
                     std::chrono::duration<double>(t1 - t0).count(),

@@ -147,7 +147,12 @@ void addTraceCommand(CLI::App& app, Action& action) {
         write8514Png(*png8514, result.raster);
         written += (written.empty() ? ": " : ", ") + *png8514;
       }
-      if (!*quiet) printSummary(result, written);
+      if (!*quiet) {
+        printSummary(result, written);
+        // One "wrote PATH" line per file written, as every command (issue 16).
+        for (const std::string& f : {*ppm, *png, *png8514})
+          if (!f.empty()) std::printf("wrote %s\n", f.c_str());
+      }
       if (*timings)
         std::printf(
             "timings: read %.3f s, build %.3f s (scene %.3f s, BVH %.3f s), render %.3f s\n",

@@ -4,6 +4,7 @@
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
+#include "src/cli/prime/scene_check.h"
 
 namespace prime::cli {
 
@@ -47,6 +48,8 @@ void addModelCommand(CLI::App& app, Action& action) {
       const io::Model model = io::buildModel(scene, *options);
       io::writeModel(scene, model, lock.get());
       for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
+      // The values the listing turns into NaN or invisible objects (prime check).
+      for (const auto& p : checkHues(scene)) std::cerr << "prime: warning: " << p.message << "\n";
       if (!*quiet)
         std::cout << "modelled " << *dir << ": " << model.objects.size() << " object file(s), "
                   << model.list.objects.size() << " in the object list, "

@@ -67,6 +67,10 @@ void addPlate1Command(CLI::App& app, Action& action) {
             knots.grid.rows(), knots.grid.cols(), knots.shape.beta1, knots.shape.beta2,
             knots.grid.patchRows(), knots.grid.patchCols(), pic.lines, pic.graph.width(),
             pic.graph.height(), target.c_str());
+      // One "wrote PATH" line per file written, as every command (issue 16).
+      if (!o->quiet)
+        for (const std::string& f : {target, o->png})
+          if (!f.empty()) std::printf("wrote %s\n", f.c_str());
       return 0;
     };
   });

@@ -244,7 +244,12 @@ void addTraceCommand(CLI::App& app, Action& action) {
       std::filesystem::remove(partial, ec);  // an older aborted run's
       std::filesystem::remove(graphInfoPath(partial), ec);
       writePngs(result, settings, at, palette, *display, *png, *trueColourPng);
-      if (!*quiet) printSummary(result, target);
+      if (!*quiet) {
+        printSummary(result, target);
+        // One "wrote PATH" line per file written, as every command (issue 16).
+        for (const std::string& f : {target, *png, *trueColourPng})
+          if (!f.empty()) std::printf("wrote %s\n", f.c_str());
+      }
       std::fflush(stdout);
       char status[64];
       std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);

@@ -1,5 +1,6 @@
 #include "src/cli/prime/render_options.h"
 
+#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/common/error.h"
@@ -10,6 +11,8 @@
 #include "src/prime/scene/scene_loader.h"
 
 namespace prime::cli {
+
+namespace fs = std::filesystem;
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   addCameraOptions(cmd, o.camera);
@@ -93,7 +96,13 @@ Scene prepareScene(const std::string& dir, bool model) {
   if (auto stale = model ? std::vector<std::string>{} : staleDatabases(scene); !stale.empty()) {
     std::string msg = "the scene's databases are not up to date:";
     for (const auto& s : stale) msg += "\n  " + s;
-    msg += "\nrun `prime model " + dir + "` first, or add --model";
+    // A directory of databases only (a DOS disk's) has nothing to model from.
+    if (fs::exists(scene.find(".", "Model.txt")))
+      msg += "\nrun `prime model " + dir + "` first, or add --model";
+    else
+      msg +=
+          "\nthe scene has no Model.txt to build them from: copy its databases (prim/PrimFile, "
+          "obj/List, obj/O<n>, map/) with it";
     throw io::InputError({dir, std::nullopt, std::nullopt}, msg);
   }
   Scene loaded = loadScene(scene);

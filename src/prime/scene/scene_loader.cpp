@@ -1,6 +1,7 @@
 #include "src/prime/scene/scene_loader.h"
 
 #include <cmath>
+#include <cctype>
 #include <filesystem>
 #include <set>
 
@@ -224,7 +225,7 @@ Scene loadScene(const io::SceneDir& dir) {
       for (int s = 0; s < io::surfaceCount(p.type); ++s)
         for (int side = 0; side < 2; ++side) {
           const int m = p.map[s][side];
-          const fs::path r = dir.root() / "map" / io::mapFileName(m, 0);
+          const fs::path r = dir.find("map", io::mapFileName(m, 0));  // M40
           if (m < 0 || !fs::exists(r))
             throw InputError({dir.display(dir.root() / "obj" / ("O" + std::to_string(obj.number))),
                               std::nullopt, std::nullopt},
@@ -250,19 +251,22 @@ Scene loadScene(const io::SceneDir& dir) {
 
 std::vector<std::string> staleDatabases(const io::SceneDir& dir) {
   std::vector<std::string> problems;
-  const fs::path prim = dir.root() / "prim" / "PrimFile", list = dir.root() / "obj" / "List";
+  // Found without regard to case, as the loader reads them (M40).
+  const fs::path prim = dir.find("prim", "PrimFile"), list = dir.find("obj", "List");
   for (const auto& p : {prim, list})
     if (!fs::exists(p)) problems.push_back(dir.display(p) + " does not exist");
   if (!problems.empty()) return problems;
   const auto built = std::min(fs::last_write_time(prim), fs::last_write_time(list));
   for (const char* sub : {"", "prim", "bound", "obj", "obj/Copy", "map"}) {
-    const fs::path d = dir.root() / sub;
+    const fs::path d = dir.find(sub, ".");
     if (!fs::is_directory(d)) continue;
     for (const auto& e : fs::directory_iterator(d)) {
       const auto name = e.path().filename().string();
-      const bool input =
-          e.is_regular_file() && (e.path().extension() == ".txt" || e.path().extension() == ".TXT");
-      if (input && name != "light.txt" && fs::last_write_time(e.path()) > built)
+      std::string lowerName = name;
+      for (char& c : lowerName) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      const bool input = e.is_regular_file() && lowerName.size() > 4 &&
+                         lowerName.compare(lowerName.size() - 4, 4, ".txt") == 0;
+      if (input && lowerName != "light.txt" && fs::last_write_time(e.path()) > built)
         problems.push_back(dir.display(e.path()) + " is newer than the databases");
     }
   }
