@@ -22,5 +22,7 @@ void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
 void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
 void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
+void addCompareCommand(CLI::App& app, Action& action);    // cmd_compare.cpp
+void addWalkCommand(CLI::App& app, Action& action);       // cmd_walk.cpp
 
 }  // namespace prime::cli

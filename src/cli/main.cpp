@@ -180,6 +180,8 @@ int main(int argc, char** argv) {
   prime::cli::addBenchCommand(app, action);
   prime::cli::addPlate1Command(app, action);
   prime::cli::addStressCommand(app, action);
+  prime::cli::addCompareCommand(app, action);
+  prime::cli::addWalkCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
@@ -224,6 +226,9 @@ int main(int argc, char** argv) {
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";
     return 1;
+  } catch (const CLI::ParseError& e) {  // an option's value found wrong only in the action
+    std::cerr << "prime: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "prime: error: " << e.what() << "\n";
     return 1;

@@ -77,10 +77,11 @@ void writeAborted(const RenderResult& result, const std::vector<char>& finished,
 
 // The PNGs of a finished render: the emulated screen's area through the
 // display palette, and the unquantised colours of the same area.
-void writePngs(const RenderResult& result, const RenderSettings& settings, Placement at,
+void writePngs(const RenderResult& result, const PrimeCamera& camera, Placement at,
                const Palette& palette, const DisplayOptions& display, const std::string& png,
                const std::string& trueColourPng) {
-  const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+  // The listing's screen, or a free camera's picture as its own screen (T32).
+  const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
   const ImageArea area = areaOf(display);
   if (!png.empty()) {
     Screen screen(screenW, screenH);
@@ -140,9 +141,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
       options->settings.keepColours =
           !trueColourPng->empty();  // only the true-colour PNG reads them
       const RenderSettings& settings = options->settings;
-      const ListingCamera camera(settings.camera);
+      const PrimeCamera camera(settings.camera);
       const Placement at{camera.screenX(0), camera.screenY(0)};
-      const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+      const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
       const Palette palette =
           paletteOf(*display, settings.mapping == ColorMapping::Plate3
                                   ? "plate3"
@@ -175,7 +176,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
       io::writeGraphFile(target, result.graph);
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's
-      writePngs(result, settings, at, palette, *display, *png, *trueColourPng);
+      writePngs(result, camera, at, palette, *display, *png, *trueColourPng);
       if (!*quiet) printSummary(result, target);
       std::fflush(stdout);
       char status[64];
