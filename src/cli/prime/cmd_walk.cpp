@@ -164,6 +164,8 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
   for (const auto& l : scene.lights) lights.push_back(l.pt);
   const auto& profiles = walkProfiles();
   WalkController ctl(start, lights, static_cast<int>(profiles.size()));
+  if (std::find(profiles.begin(), profiles.end(), settings.profile) == profiles.end())
+    throw CLI::ValidationError("--profile", "prime walk traces the 1991 and modern profiles only");
   while (profiles[static_cast<std::size_t>(ctl.profile())] != settings.profile) ctl.nextProfile();
 
   display::LiveRgbFrame frame(start.width, start.height);

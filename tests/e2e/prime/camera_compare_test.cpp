@@ -59,11 +59,12 @@ TEST(FreeCameraTrace, ListingDefaultIsUnchangedAndBadCamerasAreUsageErrors) {
   EXPECT_THAT(r.output, HasSubstr("up vector"));
   r = runPrime("trace --no-window -q " + dir + " --size 64 64 --viewport 0 0 1 1");
   EXPECT_EQ(r.status, 2) << r.output;
-  r = runPrime("trace --no-window -q " + dir + " --eye 500 500 500 --look-at 500 500 0");
+  // Looking away from the listing's window: it cannot be framed.
+  r = runPrime("trace --no-window -q " + dir + " --eye 500 500 500 --look-at 500 500 1000");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("give --fov"));
   EXPECT_EQ(runPrime("trace --no-window -q " + dir +
-                     " --eye 500 500 500 --look-at 500 500 0 --fov 40 --size 32 24")
+                     " --eye 500 500 500 --look-at 500 500 1000 --fov 40 --size 32 24")
                 .status,
             0);
 }
