@@ -156,7 +156,7 @@ void addCompareCommand(CLI::App& app, Action& action) {
       if (!c.sample.empty()) {
         std::printf(
             "where the rays diverge (%zu differing pixels; ray 0 is the primary ray; "
-            "prime probe DIR --pixel X Y shows a whole tree):\n",
+            "prime probe DIR --pixel X Y with the same settings shows a whole tree):\n",
             c.sample.size());
         const PrimeCamera ca(sa.camera), cb(sb.camera);
         for (const auto& [row, column] : c.sample) {
