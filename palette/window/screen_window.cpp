@@ -130,6 +130,7 @@ struct ScreenWindow::Impl {
   bool exposed = false;
   bool quit = false;
   std::string title;
+  std::function<bool(const module::Event&)> inputHandler;
 
   Impl(LiveFrame& s, WindowConfig c) : screen(s), config(std::move(c)) {
     zoom = clampZoom(config.zoom, screen.width(), screen.height());
@@ -228,11 +229,20 @@ struct ScreenWindow::Impl {
         setZoom(e.digit);
         return;
       case Key::Other:
+      case Key::Left:
+      case Key::Right:
+      case Key::Up:
+      case Key::Down:
+      case Key::Home:
+      case Key::Zero:
         return;
     }
   }
 
   void handle(const module::Event& e, bool& everything) {
+    if (inputHandler && e.type != module::Event::Type::Quit &&
+        e.type != module::Event::Type::Redraw && inputHandler(e))
+      return;
     switch (e.type) {
       case module::Event::Type::Quit:
         quit = true;
@@ -245,6 +255,9 @@ struct ScreenWindow::Impl {
         everything = true;
         break;
       case module::Event::Type::Other:
+      case module::Event::Type::MouseMotion:
+      case module::Event::Type::MouseButton:
+      case module::Event::Type::Wheel:
         break;
     }
   }
@@ -300,6 +313,10 @@ ScreenWindow::~ScreenWindow() = default;
 
 bool ScreenWindow::poll(int timeoutMs) {
   return impl_->poll(timeoutMs);
+}
+
+void ScreenWindow::setInputHandler(std::function<bool(const module::Event&)> handler) {
+  impl_->inputHandler = std::move(handler);
 }
 
 void ScreenWindow::setStatus(const std::string& status) {

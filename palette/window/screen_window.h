@@ -12,6 +12,7 @@
 // that the first ScreenWindow loads with dlopen(): `prime` does not link
 // libSDL2, and a headless run (headlessReason() needs no SDL) never loads it.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -50,6 +51,10 @@ class ScreenWindow {
   // ones) and sends the rows that changed to the display. Returns true once
   // the user has asked to stop.
   bool poll(int timeoutMs);
+  // Input goes to `handler` first (G21): keys and mouse events it returns
+  // true for are its own (`prime walk` steers with them); the rest keep
+  // their meaning above. Call from the window's thread.
+  void setInputHandler(std::function<bool(const module::Event&)> handler);
   // The last part of the title (progress, "done", ...).
   void setStatus(const std::string& status);
   // The display has everything drawn so far: the window has been exposed and

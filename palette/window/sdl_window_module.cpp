@@ -121,6 +121,34 @@ class SdlWindow final : public WindowBackend {
       case SDL_KEYDOWN:
         event.type = Event::Type::Key;
         event.key = keyOf(e.key.keysym.sym, event.digit);
+        if (e.key.keysym.sym >= SDLK_a && e.key.keysym.sym <= SDLK_z)
+          event.letter = static_cast<char>('a' + (e.key.keysym.sym - SDLK_a));
+        event.shift = (e.key.keysym.mod & KMOD_SHIFT) != 0;
+        break;
+      case SDL_MOUSEMOTION:
+        event.type = Event::Type::MouseMotion;
+        event.x = e.motion.x;
+        event.y = e.motion.y;
+        event.dx = e.motion.xrel;
+        event.dy = e.motion.yrel;
+        event.buttons = ((e.motion.state & SDL_BUTTON_LMASK) ? 1u : 0u) |
+                        ((e.motion.state & SDL_BUTTON_MMASK) ? 2u : 0u) |
+                        ((e.motion.state & SDL_BUTTON_RMASK) ? 4u : 0u);
+        break;
+      case SDL_MOUSEBUTTONDOWN:
+      case SDL_MOUSEBUTTONUP:
+        event.type = Event::Type::MouseButton;
+        event.x = e.button.x;
+        event.y = e.button.y;
+        event.button = e.button.button == SDL_BUTTON_LEFT     ? 1
+                       : e.button.button == SDL_BUTTON_MIDDLE ? 2
+                       : e.button.button == SDL_BUTTON_RIGHT  ? 3
+                                                              : 0;
+        event.down = e.type == SDL_MOUSEBUTTONDOWN;
+        break;
+      case SDL_MOUSEWHEEL:
+        event.type = Event::Type::Wheel;
+        event.wheel = e.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -e.wheel.y : e.wheel.y;
         break;
       case SDL_WINDOWEVENT:
         if (e.window.event == SDL_WINDOWEVENT_EXPOSED || e.window.event == SDL_WINDOWEVENT_SHOWN ||
@@ -173,6 +201,20 @@ class SdlWindow final : public WindowBackend {
       case SDLK_s:
       case SDLK_F12:
         return Key::Screenshot;
+      case SDLK_LEFT:
+        return Key::Left;
+      case SDLK_RIGHT:
+        return Key::Right;
+      case SDLK_UP:
+        return Key::Up;
+      case SDLK_DOWN:
+        return Key::Down;
+      case SDLK_HOME:
+        return Key::Home;
+      case SDLK_0:
+      case SDLK_9:
+        digit = static_cast<int>(sym - SDLK_0);
+        return Key::Zero;
       default:
         if (sym >= SDLK_1 && sym <= SDLK_8) {
           digit = static_cast<int>(sym - SDLK_0);

@@ -15,7 +15,7 @@ namespace prime::display::module {
 
 // Changes whenever WindowBackend, Event or the factory change: a module from
 // another build refuses to open rather than being called wrongly.
-inline constexpr int kInterfaceVersion = 1;
+inline constexpr int kInterfaceVersion = 2;  // 2: mouse, arrows, letters (G20)
 
 // The keys the window knows, already sorted by meaning.
 enum class Key {
@@ -27,19 +27,36 @@ enum class Key {
   Dac,         // D
   Screenshot,  // S F12
   Digit,       // 1..8: Event::digit
+  Left,
+  Right,
+  Up,
+  Down,
+  Home,
+  Zero,  // 0 and 9 (Digit stays 1..8, the zoom keys): Event::digit 0 or 9
 };
 
 struct Event {
   enum class Type {
-    Other,   // anything else (mouse, focus, ...)
-    Quit,    // the close button, SIGINT, SIGTERM
-    Key,     // a key went down
-    Redraw,  // shown, exposed, resized or restored: send the whole picture
+    Other,        // anything else (mouse, focus, ...)
+    Quit,         // the close button, SIGINT, SIGTERM
+    Key,          // a key went down
+    Redraw,       // shown, exposed, resized or restored: send the whole picture
+    MouseMotion,  // x, y, dx, dy, buttons
+    MouseButton,  // x, y, button, down
+    Wheel,        // wheel: + away from the user
   };
   Type type = Type::Other;
   Key key = Key::Other;
-  int digit = 0;         // Key::Digit
+  int digit = 0;         // Key::Digit, Key::Zero
+  char letter = 0;       // Key: 'a'..'z' for a letter key (whatever `key` says), else 0
+  bool shift = false;    // Key: a shift key was held
   bool exposed = false;  // Redraw: the window was exposed (it is on the display)
+  int x = 0, y = 0;      // mouse position in window pixels
+  int dx = 0, dy = 0;    // MouseMotion: the move since the last one
+  int button = 0;        // MouseButton: 1 left, 2 middle, 3 right
+  bool down = false;     // MouseButton: pressed (false: released)
+  unsigned buttons = 0;  // MouseMotion: held buttons, bit 0 left, bit 1 middle, bit 2 right
+  int wheel = 0;         // Wheel
 };
 
 // One open window. Every call comes from the thread that opened it.

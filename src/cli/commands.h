@@ -25,5 +25,7 @@ void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
 void addQuantizeCommand(CLI::App& app, Action& action);   // cmd_quantize.cpp (every system's PNG)
 void addCheckCommand(CLI::App& app, Action& action);      // cmd_check.cpp
 void addNewCommand(CLI::App& app, Action& action);        // cmd_new.cpp
+void addCompareCommand(CLI::App& app, Action& action);    // cmd_compare.cpp
+void addWalkCommand(CLI::App& app, Action& action);       // cmd_walk.cpp
 
 }  // namespace prime::cli

@@ -189,6 +189,8 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   prime::cli::addQuantizeCommand(app, action);
   prime::cli::addCheckCommand(app, action);
   prime::cli::addNewCommand(app, action);
+  prime::cli::addCompareCommand(app, action);
+  prime::cli::addWalkCommand(app, action);
   prime::cli::malone::addTraceCommand(app, action);
   prime::cli::malone::addProbeCommand(app, action);
   prime::cli::malone::addBenchCommand(app, action);
@@ -240,6 +242,9 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   } catch (const prime::io::InputError& e) {
     std::cerr << "prime: " << e.what() << "\n";
     return 1;
+  } catch (const CLI::ParseError& e) {  // an option's value found wrong only in the action
+    std::cerr << "prime: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "prime: error: " << e.what() << "\n";
     return 1;

@@ -35,7 +35,7 @@ void addProbeCommand(CLI::App& app, Action& action) {
         throw CLI::ValidationError("probe", "give --pixel X Y or --ray ox oy oz dx dy dz");
       finishRenderOptions(*options);
       const Scene scene = prepareScene(*dir, options->model);
-      const ListingCamera camera(options->settings.camera);
+      const PrimeCamera camera(options->settings.camera);
       Ray r;
       std::string where;
       if (!pixel->empty()) {

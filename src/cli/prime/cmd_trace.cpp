@@ -64,15 +64,15 @@ void printSummary(const RenderResult& r, const std::string& out) {
 // OutputFile; a companion that does not match its graph file's bytes is
 // ignored by view and export (G9).
 void writeCompanion(const std::string& graphPath, const io::GraphFile& graph,
-                    const RenderSettings& settings, const std::string& profile, Placement at,
-                    const Palette& palette, bool inlinePalette) {
+                    int screenWidth, int screenHeight, const std::string& profile,
+                    Placement at, const Palette& palette, bool inlinePalette) {
   GraphInfo info;
   const std::vector<std::uint8_t> bytes = io::toBytes(graph);
   info.graphBytes = bytes.size();
   info.graphHash = fnv1a64(bytes);
   info.profile = profile;
-  info.screenWidth = settings.camera.screenWidth;
-  info.screenHeight = settings.camera.screenHeight;
+  info.screenWidth = screenWidth;  // a free camera's picture is its own screen (T32)
+  info.screenHeight = screenHeight;
   info.at = at;
   info.palette = palette;
   info.inline_ = inlinePalette;
@@ -125,10 +125,11 @@ void writeAborted(const RenderResult& result, const std::vector<char>& finished,
 
 // The PNGs of a finished render: the emulated screen's area through the
 // display palette, and the unquantised colours of the same area.
-void writePngs(const RenderResult& result, const RenderSettings& settings, Placement at,
+void writePngs(const RenderResult& result, const PrimeCamera& camera, Placement at,
                const Palette& palette, const DisplayOptions& display, const std::string& png,
                const std::string& trueColourPng) {
-  const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+  // The listing's screen, or a free camera's picture as its own screen (T32).
+  const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
   const ImageArea area = areaOf(display);
   if (!png.empty()) {
     Screen screen(screenW, screenH);
@@ -195,9 +196,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
       options->settings.keepColours =
           !trueColourPng->empty() || quantizing;  // only these read them
       const RenderSettings& settings = options->settings;
-      const ListingCamera camera(settings.camera);
+      const PrimeCamera camera(settings.camera);
       const Placement at{camera.screenX(0), camera.screenY(0)};
-      const int screenW = settings.camera.screenWidth, screenH = settings.camera.screenHeight;
+      const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
       const std::string mappingPalette = settings.mapping == ColorMapping::Plate3
                                              ? "plate3"
                                              : paletteNameForGraphType(settings.graphType);
@@ -223,7 +224,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
       if (result.aborted) {
         live.closeWindow();  // ExitOnEsc: the screen goes at once
         writeAborted(result, finished, target, partial, [&](const io::GraphFile& head) {
-          writeCompanion(partial, head, settings, options->profile, at,
+          writeCompanion(partial, head, screenW, screenH, options->profile, at,
                          *findBuiltinPalette(mappingPalette), false);
         });
         if (!*quiet) printSummary(result, partial);
@@ -234,16 +235,16 @@ void addTraceCommand(CLI::App& app, Action& action) {
         const Palette quantized = quantizeGraph(result, *quant);
         if (display->palette.empty()) palette = quantized;
         io::writeGraphFile(target, result.graph);
-        writeCompanion(target, result.graph, settings, options->profile, at, quantized, true);
+        writeCompanion(target, result.graph, screenW, screenH, options->profile, at, quantized, true);
       } else {
         io::writeGraphFile(target, result.graph);
-        writeCompanion(target, result.graph, settings, options->profile, at,
+        writeCompanion(target, result.graph, screenW, screenH, options->profile, at,
                        *findBuiltinPalette(mappingPalette), false);
       }
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's
       std::filesystem::remove(graphInfoPath(partial), ec);
-      writePngs(result, settings, at, palette, *display, *png, *trueColourPng);
+      writePngs(result, camera, at, palette, *display, *png, *trueColourPng);
       if (!*quiet) {
         printSummary(result, target);
         // One "wrote PATH" line per file written, as every command (issue 16).

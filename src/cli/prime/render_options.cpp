@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   addCameraOptions(cmd, o.camera);
+  addFreeCameraOptions(cmd, o.camera);
   cmd->add_option("--max-depth", o.settings.trace.maxDepth,
                   "Recursion depth limit (listing MaxDepth: 5)")
       ->check(CLI::Range(0, 64));

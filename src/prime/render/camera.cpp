@@ -54,4 +54,36 @@ Ray ListingCamera::sampleRay(int row, int column, double fx, double fy) const {
   return ray;
 }
 
+LinearView ListingCamera::linearView() const {
+  return {s_.eye, s_.windowLeft - s_.eye, stepAcross_, stepDown_};
+}
+
+PrimeCamera::PrimeCamera(const CameraSettings& s) : settings_(s) {
+  if (s.free)
+    free_.emplace(*s.free);
+  else
+    listing_.emplace(s);
+}
+
+LinearView PrimeCamera::linearView() const {
+  if (!free_) return listing_->linearView();
+  return {free_->settings().eye, free_->toFirst(), free_->stepAcross(), free_->stepDown()};
+}
+
+std::array<Vec3, 4> listingWindowCorners(const CameraSettings& s) {
+  return {s.windowLeft, s.windowRight, Vec3{0.0, 0.0, 0.0}, s.windowRight - s.windowLeft};
+}
+
+FreeCameraSettings framedListingWindow(const CameraSettings& s, int width, int height) {
+  const std::array<Vec3, 4> c = listingWindowCorners(s);
+  FreeCameraSettings f;
+  f.eye = s.eye;
+  f.lookAt = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+  f.up = {0.0, 1.0, 0.0};
+  f.width = width;
+  f.height = height;
+  f.fovY = fitFovY(f.eye, f.lookAt, f.up, width, height, c);
+  return f;
+}
+
 }  // namespace prime

@@ -14,20 +14,18 @@ struct Rect {
   int row0, row1, col0, col1;  // inclusive
 };
 
-// The window point of pixel (row, column) is windowLeft + column*stepAcross +
-// row*stepDown (ListingCamera). A point X in front of the eye E lies on the
-// ray of the fractional pixel (q/s, p/s) where X - E = s*(WL - E) + p*A + q*D;
-// s <= 0 means X is level with or behind the eye.
+// The direction of pixel (row, column) is toFirst + column*stepAcross +
+// row*stepDown (LinearView: ListingCamera's window point windowLeft + ... minus
+// the eye, K23 stepping down; or the free camera's). A point X in front of
+// the eye E lies on the ray of the fractional pixel (q/s, p/s) where
+// X - E = s*toFirst + p*A + q*D; s <= 0 means X is level with or behind the eye.
 class Projector {
  public:
-  explicit Projector(const ListingCamera& camera) {
-    const CameraSettings& s = camera.settings();
-    for (int k = 0; k < 3; ++k) {
-      c0_[k] = s.windowLeft[k] - s.eye[k];
-      c1_[k] = (s.windowRight[k] - s.windowLeft[k]) / camera.numPixAcross();
-      c2_[k] = -s.windowLeft[k] / camera.numPixDown();  // K23, as the camera steps down
-    }
-    eye_ = s.eye;
+  explicit Projector(const LinearView& view) {
+    c0_ = view.toFirst;
+    c1_ = view.stepAcross;
+    c2_ = view.stepDown;
+    eye_ = view.eye;
     det_ = dot(c0_, cross(c1_, c2_));
     const double scale = norm(c0_) * norm(c1_) * norm(c2_);
     // A nearly singular basis would make the projection itself inexact.
@@ -47,9 +45,6 @@ class Projector {
   }
 
  private:
-  static Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  }
   static double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
   Vec3 c0_{}, c1_{}, c2_{}, eye_{};
   double det_ = 0.0;
@@ -84,7 +79,16 @@ std::optional<Rect> projectedRect(const Projector& proj, const Aabb& box, int ro
 
 PrimaryRayMask::PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes)
     : rows_(camera.rows()), columns_(camera.columns()) {
-  const Projector proj(camera);
+  build(camera.linearView(), boxes);
+}
+
+PrimaryRayMask::PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes)
+    : rows_(camera.rows()), columns_(camera.columns()) {
+  build(camera.linearView(), boxes);
+}
+
+void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes) {
+  const Projector proj(view);
   if (!proj.usable()) return;
   // A 2-D difference array: +1/-1 at the rectangles' corners, then prefix
   // sums, so the cost is one step per box plus one per pixel.

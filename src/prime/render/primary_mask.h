@@ -23,6 +23,8 @@ class PrimaryRayMask {
   // `boxes`: every object's box as the tracer's box tests see it (empty
   // boxes are objects that cannot be hit).
   PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes);
+  // The same for the camera a render uses (the listing's or the free one).
+  PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes);
 
   // False only when no primary ray through (row, column)'s footprint can meet a box.
   bool mayHit(int row, int column) const {
@@ -32,6 +34,7 @@ class PrimaryRayMask {
   double coverage() const;
 
  private:
+  void build(const LinearView& view, std::span<const Aabb> boxes);
   int rows_ = 0, columns_ = 0;
   std::vector<std::uint8_t> covered_;  // empty: every pixel may hit
 };

@@ -63,7 +63,7 @@ struct PixelTracer {
     return certainMiss ? background(stats) : tracer.castRay(ray, depth, stats);
   }
   // The listing's one ray per pixel; a masked pixel does not even need the ray.
-  Rgb castPrimary(const ListingCamera& camera, int i, int j, TraceStats& stats) const {
+  Rgb castPrimary(const PrimeCamera& camera, int i, int j, TraceStats& stats) const {
     return certainMiss ? background(stats) : tracer.castRay(camera.primaryRay(i, j), 0, stats);
   }
   Rgb background(TraceStats& stats) const {
@@ -78,7 +78,7 @@ struct PixelTracer {
 // `tracer` (rays the mask rules out get the background untraced), then
 // ColorNum'ed into the graph file.
 template <class Tracer>
-void renderWith(const Tracer& tracer, const ListingCamera& camera,
+void renderWith(const Tracer& tracer, const PrimeCamera& camera,
                 const std::optional<PrimaryRayMask>& mask, const RenderSettings& settings,
                 const RenderCallbacks& callbacks, RenderResult& result) {
   const int rows = camera.rows(), columns = camera.columns();
@@ -136,7 +136,7 @@ void renderWith(const Tracer& tracer, const ListingCamera& camera,
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const RenderCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
-  const ListingCamera camera(settings.camera);
+  const PrimeCamera camera(settings.camera);
   const int rows = camera.rows(), columns = camera.columns();
 
   RenderResult result;

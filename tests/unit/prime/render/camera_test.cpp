@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace prime {
 namespace {
 
@@ -75,6 +77,89 @@ TEST(ListingCamera, SampleRayOffsetsByPixelSteps) {
   EXPECT_NEAR(corner.d[0] - centre.d[0], 0.5 * 1000.0 / 349.0, 1e-12);
   EXPECT_NEAR(corner.d[1] - centre.d[1], -0.5 * 1000.0 / 768.0, 1e-12);
   EXPECT_EQ(corner.d[2], centre.d[2]);
+}
+
+}  // namespace
+}  // namespace prime
+
+// The free camera in PRIME (T30-T34).
+namespace prime {
+namespace {
+
+TEST(ListingWindow, CornersAreTheOnesTheListingsRaysReach_K23) {
+  const auto c = listingWindowCorners(CameraSettings{});
+  EXPECT_EQ(c[0], (Vec3{0, 1000, 0}));
+  EXPECT_EQ(c[1], (Vec3{1000, 1000, 0}));
+  EXPECT_EQ(c[2], (Vec3{0, 0, 0}));
+  EXPECT_EQ(c[3], (Vec3{1000, 0, 0}));
+  // The listing's last row really ends there: row 768's window points are
+  // WL + j * stepAcross + 768 * stepDown = (x, 0, 0).
+  const ListingCamera l(CameraSettings{});
+  const Ray r = l.primaryRay(768, 349);  // d = point - eye
+  EXPECT_NEAR(r.d[0] + 500.0, 1000.0, 1e-9);
+  EXPECT_NEAR(r.d[1] + 500.0, 0.0, 1e-9);
+}
+
+TEST(FramedListingWindow, SquarePictureShowsExactlyTheWindow_T33) {
+  // From (500, 500, -1500) the window's half side 500 lies at distance 1500:
+  // half height 1/3, fov = 2 atan(1/3) = 36.87 degrees. The outer corner of
+  // pixel (0, 0) then looks at (0, 1000, 0): direction (-500, 500, 1500) / 1500.
+  const FreeCameraSettings f = framedListingWindow(CameraSettings{}, 769, 769);
+  EXPECT_EQ(f.lookAt, (Vec3{500, 500, 0}));
+  EXPECT_NEAR(f.fovY, 2.0 * std::atan(1.0 / 3.0) * 180.0 / 3.14159265358979323846, 1e-9);
+  const FreeCamera c(f);
+  const auto expectDir = [](const Vec3& d, const Vec3& want) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(d[k] / d[2], want[k] / want[2], 1e-12) << k;
+  };
+  expectDir(c.sampleRay(0, 0, -0.5, -0.5).d, {-500, 500, 1500});
+  expectDir(c.sampleRay(768, 768, 0.5, 0.5).d, {500, -500, 1500});
+  // The centre pixel looks at the window's centre.
+  expectDir(c.primaryRay(384, 384).d, {0, 0, 1500});
+}
+
+TEST(FramedListingWindow, WidePictureFitsTheHeightAndCentresTheWindow_T33) {
+  // 1024 x 768: the height decides (half height 1/3 against half width
+  // 1/3 / (4/3) = 1/4); the 1000-unit window is 768 pixels wide, from
+  // column 512 - 384 = 128 to 896: pixel 128's left edge looks at x = 0.
+  const FreeCamera c(framedListingWindow(CameraSettings{}, 1024, 768));
+  const Vec3 d = c.sampleRay(0, 128, -0.5, -0.5).d;
+  EXPECT_NEAR(500.0 + 1500.0 * d[0] / d[2], 0.0, 1e-9);
+  EXPECT_NEAR(500.0 + 1500.0 * d[1] / d[2], 1000.0, 1e-9);
+  const Vec3 e = c.sampleRay(767, 895, 0.5, 0.5).d;
+  EXPECT_NEAR(500.0 + 1500.0 * e[0] / e[2], 1000.0, 1e-9);
+  EXPECT_NEAR(500.0 + 1500.0 * e[1] / e[2], 0.0, 1e-9);
+}
+
+TEST(PrimeCamera, ListingByDefaultAndBitIdenticalToIt) {
+  const PrimeCamera p(CameraSettings{});
+  const ListingCamera l(CameraSettings{});
+  EXPECT_FALSE(p.isFree());
+  EXPECT_EQ(p.columns(), 350);
+  EXPECT_EQ(p.rows(), 769);
+  EXPECT_EQ(p.numPixAcross(), 349);
+  EXPECT_EQ(p.numPixDown(), 768);
+  EXPECT_EQ(p.screenX(0), 675);
+  EXPECT_EQ(p.screenWidth(), 1024);
+  for (int i : {0, 100, 768})
+    for (int j : {0, 17, 349}) {
+      EXPECT_EQ(p.primaryRay(i, j).d, l.primaryRay(i, j).d);
+      EXPECT_EQ(p.sampleRay(i, j, 0.25, -0.25).d, l.sampleRay(i, j, 0.25, -0.25).d);
+    }
+}
+
+TEST(PrimeCamera, FreeCameraIsItsOwnScreenWithAnInclusiveHeader_T32) {
+  CameraSettings s;
+  s.free = framedListingWindow(s, 7, 5);
+  const PrimeCamera p(s);
+  EXPECT_TRUE(p.isFree());
+  EXPECT_EQ(p.columns(), 7);
+  EXPECT_EQ(p.rows(), 5);
+  EXPECT_EQ(p.numPixAcross(), 6);  // as the listing's header: columns - 1
+  EXPECT_EQ(p.numPixDown(), 4);
+  EXPECT_EQ(p.screenWidth(), 7);
+  EXPECT_EQ(p.screenHeight(), 5);
+  EXPECT_EQ(p.screenX(3), 3);
+  EXPECT_EQ(p.primaryRay(2, 3).d, FreeCamera(*s.free).primaryRay(2, 3).d);
 }
 
 }  // namespace

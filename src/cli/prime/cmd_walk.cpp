@@ -1,0 +1,321 @@
+// prime walk DIR: walk around a PRIME scene in a window (T38-T41). The
+// picture is the free camera's (src/geom/free_camera.h; the listing's camera
+// is replaced by it in every profile, T31), rendered coarse to fine (blocks of
+// 8, 4, 2, 1 pixels) on the shared row scheduler; any key or mouse move
+// abandons the frame in flight and starts again from the coarse pass.
+//
+// Keys: arrows / left-drag orbit, shift+arrows / right-drag pan, W S + -
+// and the wheel dolly, Home or R resets, L cycles camera / light 1 / light 2
+// ..., 1..9 select a light and 0 the camera (a selected light moves with the
+// same keys and drags instead of the camera), P switches the profile, V
+// switches between true colour and the 8514/A palette, F12 saves a
+// screenshot, Esc quits.
+//
+// --bench N renders N frames headless along an orbit and prints the first
+// coarse pass's latency and the frame rates (docs/prime/interactive.md).
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "palette/prime/color_num.h"
+#include "palette/prime/export.h"
+#include "palette/window/live_rgb_frame.h"
+#include "palette/window/screen_window.h"
+#include "src/cli/commands.h"
+#include "src/cli/prime/display_options.h"
+#include "src/cli/prime/render_options.h"
+#include "src/prime/render/walk_render.h"
+#include "src/render/progressive.h"
+#include "src/render/walk_controller.h"
+
+namespace prime::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct WalkState {
+  OrbitView view;
+  std::vector<Vec3> lights;
+  Profile profile = Profile::Listing1991;
+  bool paletteView = false;
+};
+
+const char* profileName(Profile p) {
+  return p == Profile::Modern ? "modern" : "1991";
+}
+
+// The profiles walk can trace, in P's order (T41).
+const std::vector<Profile>& walkProfiles() {
+  static const std::vector<Profile> all{Profile::Listing1991, Profile::Modern};
+  return all;
+}
+
+// A scene with the lights where the user put them.
+Scene withLights(const Scene& base, const std::vector<Vec3>& lights) {
+  Scene s = base;
+  for (std::size_t i = 0; i < lights.size() && i < s.lights.size(); ++i) s.lights[i].pt = lights[i];
+  return s;
+}
+
+std::uint32_t xrgb(Rgb8 c) {
+  return (static_cast<std::uint32_t>(c.r) << 16) | (static_cast<std::uint32_t>(c.g) << 8) | c.b;
+}
+
+// Rows of the picture as the window shows them: true colour, or each
+// colour's palette index (ColorNum / X1 as the settings map it) through the
+// palette's 8-bit table (the 8514/A view without its DAC rounding: G22).
+class RowPainter {
+ public:
+  RowPainter(const RenderSettings& settings, int width)
+      : settings_(settings),
+        table_(settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette()),
+        row_(static_cast<std::size_t>(width)) {}
+  void paint(display::LiveRgbFrame& frame, const RgbImage& image, int row, bool palette) {
+    TraceStats ignored;
+    for (int x = 0; x < image.width; ++x) {
+      const Rgb& c = image.at(row, x);
+      if (palette) {
+        const PaletteRgb p =
+            table_[static_cast<std::size_t>(paletteIndex(c, settings_, ignored) & 0xFF)];
+        row_[static_cast<std::size_t>(x)] =
+            xrgb({static_cast<std::uint8_t>(p.r), static_cast<std::uint8_t>(p.g),
+                  static_cast<std::uint8_t>(p.b)});
+      } else {
+        row_[static_cast<std::size_t>(x)] = xrgb(trueColour(c));
+      }
+    }
+    frame.setRow(row, row_);
+  }
+
+ private:
+  const RenderSettings& settings_;
+  PaletteTable table_;
+  std::vector<std::uint32_t> row_;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+int runBench(const Scene& scene, const RenderSettings& settings, const OrbitView& start,
+             int frames) {
+  const FreeCamera first(start.camera());
+  RgbImage image;
+  image.assign(first.columns(), first.rows());
+  std::vector<double> coarse, full, single, cpuFull, cpuSingle;
+  OrbitView view = start;
+  const WalkRenderer renderer(scene, settings.profile, settings.trace);
+  TraceStats stats;
+  for (int k = 0; k < frames; ++k) {
+    view.orbit(360.0 / std::max(frames, 1) * 0.25, 0.0);  // a quarter turn over the run
+    const FreeCamera camera(view.camera());
+    const Clock::time_point t0 = Clock::now();
+    const double c0 = cpuSeconds();
+    for (const int block : kProgressiveBlocks) {
+      renderer.pass(camera, block, kProgressiveBlocks[0], image, settings.threads, nullptr, {},
+                    stats);
+      if (block == kProgressiveBlocks[0]) coarse.push_back(msSince(t0));
+    }
+    full.push_back(msSince(t0));
+    cpuFull.push_back(1000.0 * (cpuSeconds() - c0));
+    const Clock::time_point t1 = Clock::now();
+    const double c1 = cpuSeconds();
+    renderer.pass(camera, 1, 1, image, settings.threads, nullptr, {}, stats);
+    single.push_back(msSince(t1));
+    cpuSingle.push_back(1000.0 * (cpuSeconds() - c1));
+  }
+  const double f = median(full), s = median(single);
+  std::printf("walk bench: %s, %d x %d, profile %s, %d frames, %d thread(s) asked (0: all)\n",
+              scene.name.c_str(), first.columns(), first.rows(), profileName(settings.profile),
+              frames, settings.threads);
+  std::printf("first coarse pass (8 x 8 blocks): median %.1f ms\n", median(coarse));
+  std::printf("progressive frame (8, 4, 2, 1): median %.1f ms wall, %.1f ms CPU = %.2f fps\n", f,
+              median(cpuFull), f > 0 ? 1000.0 / f : 0.0);
+  std::printf("full-resolution pass alone:     median %.1f ms wall, %.1f ms CPU = %.2f fps\n", s,
+              median(cpuSingle), s > 0 ? 1000.0 / s : 0.0);
+  return 0;
+}
+
+int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitView& start,
+              const DisplayOptions& display, const std::string& caption, bool logFrames) {
+  if (auto why = display::headlessReason(display.noWindow))
+    throw CLI::ValidationError("walk", "needs a window (" + *why + "); --bench N runs headless");
+  std::vector<Vec3> lights;
+  for (const auto& l : scene.lights) lights.push_back(l.pt);
+  const auto& profiles = walkProfiles();
+  WalkController ctl(start, lights, static_cast<int>(profiles.size()));
+  if (std::find(profiles.begin(), profiles.end(), settings.profile) == profiles.end())
+    throw CLI::ValidationError("--profile", "prime walk traces the 1991 and modern profiles only");
+  while (profiles[static_cast<std::size_t>(ctl.profile())] != settings.profile) ctl.nextProfile();
+
+  display::LiveRgbFrame frame(start.width, start.height);
+  RgbImage image;
+  image.assign(start.width, start.height);
+  RowPainter painter(settings, start.width);
+  std::atomic<int> passBlock{0};
+  std::atomic<double> passMs{0.0}, frameMs{0.0};
+  std::atomic<int> framesDone{0};
+
+  LatestJobRunner<WalkState> runner(
+      [&](const WalkState& st, std::uint64_t, const std::atomic<bool>& abandon) {
+        const Clock::time_point t0 = Clock::now();
+        const Scene lit = withLights(scene, st.lights);
+        const WalkRenderer renderer(lit, st.profile, settings.trace);
+        const FreeCamera camera(st.view.camera());
+        TraceStats stats;
+        for (const int block : kProgressiveBlocks) {
+          const bool done = renderer.pass(
+              camera, block, kProgressiveBlocks[0], image, settings.threads, &abandon,
+              [&](int row0, int rows) {
+                for (int y = row0; y < row0 + rows; ++y)
+                  painter.paint(frame, image, y, st.paletteView);
+              },
+              stats);
+          if (!done) return;
+          passBlock = block;
+          passMs = msSince(t0);
+        }
+        frameMs = msSince(t0);
+        const int n = ++framesDone;
+        if (logFrames)
+          std::fprintf(stderr, "prime: walk: frame %d done in %.1f ms (%s%s)\n", n, frameMs.load(),
+                       profileName(st.profile), st.paletteView ? ", 8514/A view" : "");
+      });
+
+  display::ScreenWindow window(frame, {caption, display.zoom, "."});
+  std::fprintf(stderr,
+               "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
+               "right-drag pan, W S + - wheel dolly, Home R reset, L 0..9 lights, P profile, V "
+               "palette view, F12 screenshot, Esc quits\n",
+               window.nativeId(), start.width, start.height);
+  auto stateOf = [&] {
+    return WalkState{ctl.view(), ctl.lights(), profiles[static_cast<std::size_t>(ctl.profile())],
+                     ctl.paletteView()};
+  };
+  window.setInputHandler([&](const display::module::Event& e) -> bool {
+    using display::module::Event;
+    using display::module::Key;
+    switch (e.type) {
+      case Event::Type::MouseMotion:
+        if (e.buttons & 1u)
+          ctl.drag(true, e.dx, e.dy);
+        else if (e.buttons & 4u)
+          ctl.drag(false, e.dx, e.dy);
+        return true;
+      case Event::Type::Wheel:
+        ctl.dolly(e.wheel);
+        return true;
+      case Event::Type::MouseButton:
+        return true;
+      case Event::Type::Key:
+        break;
+      default:
+        return false;
+    }
+    const int sx = e.key == Key::Left ? -1 : e.key == Key::Right ? 1 : 0;
+    const int sy = e.key == Key::Down ? -1 : e.key == Key::Up ? 1 : 0;
+    if (sx != 0 || sy != 0) {
+      if (e.shift)
+        ctl.panArrows(sx, sy);
+      else
+        ctl.arrows(sx, sy);
+      return true;
+    }
+    if (e.key == Key::Home || e.letter == 'r') return ctl.reset(), true;
+    if (e.letter == 'w' || e.key == Key::ZoomIn) return ctl.dolly(1), true;
+    if (e.letter == 's' || e.key == Key::ZoomOut) return ctl.dolly(-1), true;
+    if (e.letter == 'l') return ctl.cycleSelection(), true;
+    if (e.letter == 'p') return ctl.nextProfile(), true;
+    if (e.letter == 'v') return ctl.togglePaletteView(), true;
+    if (e.key == Key::Digit || e.key == Key::Zero) return ctl.selectLight(e.digit), true;
+    return false;  // Esc, F12: the window's
+  });
+
+  std::uint64_t shown = ctl.generation();
+  runner.request(stateOf());
+  std::string lastStatus;
+  while (!window.poll(15)) {
+    if (ctl.generation() != shown) {
+      shown = ctl.generation();
+      passBlock = 0;
+      runner.request(stateOf());
+    }
+    const int block = passBlock.load();
+    char status[160];
+    const double fm = frameMs.load();
+    std::snprintf(status, sizeof status, "%s%s - %s - %s%s",
+                  profileName(profiles[static_cast<std::size_t>(ctl.profile())]),
+                  ctl.paletteView() ? " 8514/A" : "",
+                  block == 0 ? "rendering" : ("pass 1/" + std::to_string(block)).c_str(),
+                  fm > 0 ? (std::to_string(static_cast<int>(std::lround(fm))) + " ms/frame (" +
+                            std::to_string(1000.0 / fm).substr(0, 4) + " fps)")
+                               .c_str()
+                         : "",
+                  ctl.selectedLight() > 0
+                      ? (" - moving light " + std::to_string(ctl.selectedLight())).c_str()
+                      : "");
+    if (status != lastStatus) {
+      lastStatus = status;
+      window.setStatus(status);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addWalkCommand(CLI::App& app, Action& action) {
+  auto* cmd = app.add_subcommand(
+      "walk", "Walk around a scene in a window: orbit, pan, dolly, move lights; progressive");
+  auto dir = std::make_shared<std::string>();
+  auto options = std::make_shared<RenderOptions>();
+  auto display = std::make_shared<DisplayOptions>();
+  auto bench = std::make_shared<int>(0);
+  auto logFrames = std::make_shared<bool>(false);
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--bench", *bench,
+                  "Headless: render N frames along an orbit and print latency and frame rates")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--log-frames", *logFrames, "Say on stderr when each frame is complete (tests)");
+  addWindowOptions(cmd, *display);
+  addRenderOptions(cmd, *options);
+  cmd->callback([=, &action] {
+    action = [=] {
+      finishRenderOptions(*options);
+      RenderSettings settings = options->settings;
+      if (settings.sampling.mode != Sampling::Mode::Single)
+        throw CLI::ValidationError("walk", "renders one ray per pixel: no --samples or --adaptive");
+      // Without free-camera options: the listing's window framed at 512 x 512 (T41).
+      if (!settings.camera.free)
+        settings.camera.free = framedListingWindow(settings.camera, 512, 512);
+      const Scene scene = prepareScene(*dir, options->model);
+      const OrbitView start = OrbitView::from(*settings.camera.free);
+      if (*bench > 0) return runBench(scene, settings, start, *bench);
+      return runWindow(scene, settings, start, *display, *dir, *logFrames);
+    };
+  });
+}
+
+}  // namespace prime::cli
