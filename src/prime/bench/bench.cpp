@@ -63,6 +63,10 @@ std::string samplingName(const Sampling& s) {
       return "grid" + std::to_string(s.gridN);
     case Sampling::Mode::Adaptive:
       return "adaptive" + fmt("%g", s.tolerance);
+    case Sampling::Mode::Jittered:
+      return "jitter" + std::to_string(s.gridN);
+    case Sampling::Mode::Statistical:
+      return "statistical" + fmt("%g", s.bound);
   }
   return "?";
 }
