@@ -42,10 +42,11 @@ Sampling jittered(int n) {
   s.gridN = n;
   return s;
 }
-Sampling statistical(double bound) {
+Sampling statistical(double bound, int minSamples = 4) {
   Sampling s;
   s.mode = Sampling::Mode::Statistical;
   s.bound = bound;
+  s.minSamples = minSamples;
   s.maxSamples = 256;
   return s;
 }
@@ -79,7 +80,8 @@ std::string samplingName(const Sampling& s) {
     case Sampling::Mode::Jittered:
       return "jitter" + std::to_string(s.gridN);
     case Sampling::Mode::Statistical:
-      return "statistical" + fmt("%g", s.bound);
+      return "statistical" + fmt("%g", s.bound) +
+             (s.minSamples != 4 ? "min" + std::to_string(s.minSamples) : std::string());
   }
   return "?";
 }
@@ -155,6 +157,8 @@ std::vector<BenchSetting> samplingSettings(bool quick) {
   for (double b :
        quick ? std::vector<double>{0.1} : std::vector<double>{0.2, 0.1, 0.05, 0.03, 0.02, 0.01})
     add(statistical(b));
+  if (!quick)  // T14: sixteen first rays, for what four identical ones hide
+    for (double b : {0.05, 0.02}) add(statistical(b, 16));
   return out;
 }
 

@@ -37,7 +37,8 @@ BenchSetting referenceSetting(int threads);
 std::vector<BenchSetting> benchSettings(bool quick);
 // The sampling study's reference (jittered 16 x 16, depth 5) and settings:
 // grid n x n, jittered n x n (n = 1..6) and statistical supersampling
-// (bounds 0.2 .. 0.01, at most 256 rays), all depth 5, one thread.
+// (bounds 0.2 .. 0.01, at most 256 rays; 0.05 and 0.02 also with 16 first
+// rays, T14), all depth 5, one thread.
 BenchSetting samplingReference(int threads);
 std::vector<BenchSetting> samplingSettings(bool quick);
 
