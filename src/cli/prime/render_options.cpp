@@ -77,6 +77,19 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
          "(docs/prime/thesis-profile.md)")
       ->check(CLI::IsMember({"1991", "modern", "thesis"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
+  // Combinations no single option can check: usage errors (exit 2) at parse time.
+  cmd->parse_complete_callback([&o] {
+    const int modes = (o.samples > 1) + (o.adaptiveTolerance >= 0.0) + (o.jitter > 0) +
+                      (o.statisticalBound >= 0.0);
+    if (modes > 1)
+      throw CLI::ValidationError("sampling",
+                                 "choose one of --samples, --adaptive, --jitter, --statistical");
+    if (o.profile != "thesis" && (!o.lightRadius.empty() || o.noShadows || o.texel != "both"))
+      throw CLI::ValidationError("--light-radius/--no-shadows/--texel",
+                                 "only the thesis profile has them (add --profile thesis)");
+    if (o.settings.sampling.maxSamples < o.settings.sampling.minSamples)
+      throw CLI::ValidationError("--max-samples", "must be at least --min-samples");
+  });
 }
 
 void finishRenderOptions(RenderOptions& o) {
@@ -85,17 +98,6 @@ void finishRenderOptions(RenderOptions& o) {
   o.settings.profile = o.profile == "modern"   ? Profile::Modern
                        : o.profile == "thesis" ? Profile::Thesis
                                                : Profile::Listing1991;
-  const int modes =
-      (o.samples > 1) + (o.adaptiveTolerance >= 0.0) + (o.jitter > 0) + (o.statisticalBound >= 0.0);
-  if (modes > 1)
-    throw CLI::ValidationError("sampling",
-                               "choose one of --samples, --adaptive, --jitter, --statistical");
-  if (o.settings.profile != Profile::Thesis &&
-      (!o.lightRadius.empty() || o.noShadows || o.texel != "both"))
-    throw CLI::ValidationError("--light-radius/--no-shadows/--texel",
-                               "only the thesis profile has them (add --profile thesis)");
-  if (o.settings.sampling.maxSamples < o.settings.sampling.minSamples)
-    throw CLI::ValidationError("--max-samples", "must be at least --min-samples");
   if (o.lightRadius.size() == 1)
     o.settings.thesis.lightRadius = o.lightRadius[0];
   else

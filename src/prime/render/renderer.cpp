@@ -124,7 +124,8 @@ void renderWith(const Tracer& tracer, const ListingCamera& camera,
             return pixel.castRay(camera.sampleRay(i, j, fx, fy), k, stats);
           },
           &taken);
-      local.samples += static_cast<std::uint64_t>(taken);
+      if (settings.sampling.mode != Sampling::Mode::Single)
+        local.samples += static_cast<std::uint64_t>(taken);
       if (settings.keepColours) result.rgb.at(i, j) = color;
       // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
       result.graph.pixels[static_cast<std::size_t>(i) * columns + j] =

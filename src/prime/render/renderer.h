@@ -41,7 +41,7 @@ struct RenderResult {
   io::GraphFile graph;  // header 349 x 768 etc., (across+1) x (down+1) pixels
   RgbImage rgb;         // the unquantised colour of each pixel, same order
   TraceStats stats;
-  std::uint64_t samples = 0;  // pixel samples taken (Grid, Jittered, Statistical; else 0)
+  std::uint64_t samples = 0;  // rays per pixel summed (Grid, Jittered, Statistical; else 0)
   double seconds = 0;
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row
