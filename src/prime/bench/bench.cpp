@@ -187,8 +187,23 @@ std::string equalErrorMarkdown(const std::vector<BenchRow>& rows) {
          << fmt("%.2f", static_cast<double>(best->stats.rays()) /
                             static_cast<double>(std::max<std::uint64_t>(1, st.stats.rays())))
          << "x |\n";
-    else
-      md << "none of the grids | - | - | - |\n";
+    else {
+      // No grid is as good: the best one, for scale.
+      const BenchRow* top = nullptr;
+      for (const auto& g : rows)
+        if (g.scene == st.scene && !g.setting.reference &&
+            g.setting.sampling.mode == Sampling::Mode::Grid &&
+            (!top || g.error.rmse < top->error.rmse))
+          top = &g;
+      if (top)
+        md << "none; the best, " << samplingName(top->setting.sampling) << " | "
+           << top->stats.rays() << " | " << fmt("%.5f", top->error.rmse) << " | "
+           << fmt("%.2f", static_cast<double>(top->stats.rays()) /
+                              static_cast<double>(std::max<std::uint64_t>(1, st.stats.rays())))
+           << "x, and more error |\n";
+      else
+        md << "none | - | - | - |\n";
+    }
   }
   return any ? md.str() : std::string();
 }
