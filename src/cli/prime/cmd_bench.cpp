@@ -22,6 +22,8 @@ struct BenchCliOptions {
   int runs = 0;  // 0: 3, or 1 with --quick
   bool quick = false;
   bool onlyThreads = false;
+  bool sampling = false;
+  double lightRadius = 100.0;
   bool scale = false, onlyScale = false;
   std::vector<int> scaleSizes;
   int scaleOffMax = -1;
@@ -38,6 +40,7 @@ std::string commandLine(const BenchCliOptions& o) {
   if (o.runs > 0) c << " --runs " << o.runs;
   if (o.quick) c << " --quick";
   if (o.onlyThreads) c << " --only-threads";
+  if (o.sampling) c << " --sampling --light-radius " << o.lightRadius;
   if (o.scale) c << " --scale";
   if (o.onlyScale) c << " --only-scale";
   if (!o.scaleSizes.empty()) {
@@ -80,6 +83,8 @@ int runBench(const BenchCliOptions& o) {
     options.runs = runs;
     options.quick = o.quick;
     options.onlyThreads = o.onlyThreads;
+    options.samplingStudy = o.sampling;
+    options.lightRadius = o.lightRadius;
     options.camera = benchCamera(o.quick);
     if (o.screen.size() == 2) {
       options.camera.screenWidth = o.screen[0];
@@ -142,6 +147,12 @@ void addBenchCommand(CLI::App& app, Action& action) {
   cmd->add_option("--runs", o->runs,
                   "Runs per setting; the median is reported (default 3; 1 with --quick)")
       ->check(CLI::Range(1, 100));
+  cmd->add_flag("--sampling", o->sampling,
+                "The sampling study instead: the thesis profile with soft shadows; regular, "
+                "jittered and statistical supersampling against a jittered 16 x 16 reference");
+  cmd->add_option("--light-radius", o->lightRadius,
+                  "The sampling study's light radius (100; 0: point lights, hard shadows)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quick", o->quick, "A few settings, one run, a 45 x 97 picture: for tests");
   cmd->add_option(
          "--screen", o->screen,

@@ -16,6 +16,8 @@ struct ExportPovOptions {
   CameraOptions camera;
   int maxDepth = 5;
   bool model = false;
+  bool shadows = false;
+  double lightRadius = 0.0;
 };
 
 }  // namespace
@@ -37,6 +39,13 @@ void addExportPovCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(0, 255));
   cmd->add_flag("--model", o->model,
                 "Build the databases from the text inputs first (prime model)");
+  cmd->add_flag(
+      "--shadows", o->shadows,
+      "Lights cast shadows, as in --profile thesis (default: shadowless, as the listing)");
+  cmd->add_option("--light-radius", o->lightRadius,
+                  "With --shadows: lights are circular area lights of this radius, facing the "
+                  "point lit (prime trace --profile thesis --light-radius)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
@@ -45,6 +54,10 @@ void addExportPovCommand(CLI::App& app, Action& action) {
       PovExportOptions po;
       applyCameraOptions(o->camera, po.camera);
       po.maxDepth = o->maxDepth;
+      if (o->lightRadius > 0.0 && !o->shadows)
+        throw CLI::ValidationError("--light-radius", "needs --shadows");
+      po.shadows = o->shadows;
+      po.lightRadius = o->lightRadius;
       po.imageStem = target.stem().string();
       const PovExport exported = exportPov(scene, po);
       writePovExport(exported, target);

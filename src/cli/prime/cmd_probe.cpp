@@ -57,12 +57,26 @@ void addProbeCommand(CLI::App& app, Action& action) {
       }
       // The tracer of the chosen profile; only the modern one says so (the
       // 1991 output is what it always was).
-      const bool modern = options->settings.profile == Profile::Modern;
+      const Profile profile = options->settings.profile;
+      const bool modern = profile == Profile::Modern;
+      const char* profileName = modern ? "modern" : profile == Profile::Thesis ? "thesis" : nullptr;
       TraceStats stats;
       Probe probe;
-      const Rgb color =
-          modern ? TracerModern(scene, options->settings.trace).castRay(r, 0, stats, &probe)
-                 : Tracer1991(scene, options->settings.trace).castRay(r, 0, stats, &probe);
+      Rgb color;
+      if (profile == Profile::Thesis) {
+        // Sample 0 of the pixel (its soft-shadow points are those of the
+        // render's first sample; a --ray is pixel (0, 0)'s).
+        const SampleId sample{
+            PixelKey{options->settings.sampling.seed,
+                     static_cast<std::uint32_t>(pixel->empty() ? 0 : (*pixel)[1]),
+                     static_cast<std::uint32_t>(pixel->empty() ? 0 : (*pixel)[0])},
+            0};
+        color = TracerThesis(scene, options->settings.trace, options->settings.thesis)
+                    .castRay(r, 0, stats, sample, &probe);
+      } else {
+        color = modern ? TracerModern(scene, options->settings.trace).castRay(r, 0, stats, &probe)
+                       : Tracer1991(scene, options->settings.trace).castRay(r, 0, stats, &probe);
+      }
       const int index = paletteIndex(color, options->settings, stats);
       const PaletteTable table =
           options->settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
@@ -77,7 +91,7 @@ void addProbeCommand(CLI::App& app, Action& action) {
                                          .str();
         JsonObject doc;
         doc.add("scene", scene.name).add("where", where);
-        if (modern) doc.add("profile", "modern");
+        if (profileName) doc.add("profile", profileName);
         doc.addJson("events", events + "]")
             .add("color", color)
             .add("index", index)
@@ -86,7 +100,8 @@ void addProbeCommand(CLI::App& app, Action& action) {
             .add("rays", stats.rays());
         std::cout << doc.str() << "\n";
       } else {
-        std::cout << scene.name << ": " << where << (modern ? " (modern profile)" : "") << "\n";
+        std::cout << scene.name << ": " << where
+                  << (profileName ? std::string(" (") + profileName + " profile)" : "") << "\n";
         for (const auto& e : probe.events)
           std::cout << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
         std::cout << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r

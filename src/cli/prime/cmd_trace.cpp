@@ -41,6 +41,13 @@ void printSummary(const RenderResult& r, const std::string& out) {
               static_cast<unsigned long long>(s.reflectedRays),
               static_cast<unsigned long long>(s.transmittedRays),
               r.seconds > 0 ? s.rays() / r.seconds : 0.0);
+  if (s.shadowRays > 0 || r.samples > 0)  // the thesis profile's shadow rays; pixel samples
+    std::printf("shadow rays: %llu; pixel samples: %llu (%.2f a pixel)\n",
+                static_cast<unsigned long long>(s.shadowRays),
+                static_cast<unsigned long long>(r.samples),
+                r.graph.pixels.empty()
+                    ? 0.0
+                    : static_cast<double>(r.samples) / static_cast<double>(r.graph.pixels.size()));
   std::printf(
       "tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu; primary rays that "
       "could meet no object box (background, not traced) %llu\n",

@@ -40,6 +40,35 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("--adaptive-levels", o.settings.sampling.maxLevel,
                   "Subdivision levels for --adaptive (2)")
       ->check(CLI::Range(0, 6));
+  cmd->add_option("--jitter", o.jitter,
+                  "Stochastic supersampling (thesis 2.6.2): N x N strata, one random ray in each")
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--statistical", o.statisticalBound,
+                  "Statistical supersampling (thesis 2.6.3): random rays four at a time until the "
+                  "confidence interval of the pixel's mean is within +-BOUND in every channel")
+      ->check(CLI::Range(1e-6, 1.0));
+  cmd->add_option("--confidence", o.settings.sampling.confidence,
+                  "Confidence of --statistical's interval (0.95)")
+      ->check(CLI::Range(0.5, 0.9999));
+  cmd->add_option("--min-samples", o.settings.sampling.minSamples,
+                  "Rays per pixel before --statistical may stop (4, the thesis' first four)")
+      ->check(CLI::Range(4, 4096));
+  cmd->add_option("--max-samples", o.settings.sampling.maxSamples,
+                  "Rays per pixel at most for --statistical (64)")
+      ->check(CLI::Range(4, 4096));
+  cmd->add_option("--seed", o.settings.sampling.seed,
+                  "Seed of --jitter's, --statistical's and the soft shadows' random numbers (1)");
+  cmd->add_option("--light-radius", o.lightRadius,
+                  "Thesis profile: lights are discs of this radius (soft shadows); one value for "
+                  "every light, or one per light in the light file's order")
+      ->expected(1, 10)
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-shadows", o.noShadows,
+                "Thesis profile: cast no shadow rays (every light reaches every point)");
+  cmd->add_option("--texel", o.texel,
+                  "Thesis profile: the texel is F(0) of the Fresnel terms and colours the diffuse "
+                  "terms (both, default), or only F(0) as the listing uses it (fresnel)")
+      ->check(CLI::IsMember({"both", "fresnel"}));
   cmd->add_option(
          "--min-weight", o.settings.trace.minWeight,
          "Adaptive tree-depth control: do not cast rays weighing less than this (listing: 0, off)")
@@ -50,9 +79,24 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option(
          "--profile", o.profile,
          "1991: the listing, quirks and all (default); modern: the same scenes with robust "
-         "arithmetic and correct geometry (docs/prime/deviations.md)")
-      ->check(CLI::IsMember({"1991", "modern"}));
+         "arithmetic and correct geometry (docs/prime/deviations.md); thesis: the modern one plus "
+         "what the thesis describes: shadow rays, Hall's model as written, soft shadows "
+         "(docs/prime/thesis-profile.md)")
+      ->check(CLI::IsMember({"1991", "modern", "thesis"}));
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
+  // Combinations no single option can check: usage errors (exit 2) at parse time.
+  cmd->parse_complete_callback([&o] {
+    const int modes = (o.samples > 1) + (o.adaptiveTolerance >= 0.0) + (o.jitter > 0) +
+                      (o.statisticalBound >= 0.0);
+    if (modes > 1)
+      throw CLI::ValidationError("sampling",
+                                 "choose one of --samples, --adaptive, --jitter, --statistical");
+    if (o.profile != "thesis" && (!o.lightRadius.empty() || o.noShadows || o.texel != "both"))
+      throw CLI::ValidationError("--light-radius/--no-shadows/--texel",
+                                 "only the thesis profile has them (add --profile thesis)");
+    if (o.settings.sampling.maxSamples < o.settings.sampling.minSamples)
+      throw CLI::ValidationError("--max-samples", "must be at least --min-samples");
+  });
 }
 
 void finishRenderOptions(RenderOptions& o) {
@@ -71,7 +115,23 @@ void finishRenderOptions(RenderOptions& o) {
         "the window has zero height: its top-left corner is the origin (the window runs down "
         "from it to the origin, errata K23)");
   o.settings.mapping = o.palette == "plate3" ? ColorMapping::Plate3 : ColorMapping::Listing;
-  o.settings.profile = o.profile == "modern" ? Profile::Modern : Profile::Listing1991;
+  o.settings.profile = o.profile == "modern"   ? Profile::Modern
+                       : o.profile == "thesis" ? Profile::Thesis
+                                               : Profile::Listing1991;
+  if (o.lightRadius.size() == 1)
+    o.settings.thesis.lightRadius = o.lightRadius[0];
+  else
+    o.settings.thesis.lightRadii = o.lightRadius;
+  o.settings.thesis.shadows = !o.noShadows;
+  o.settings.thesis.texelInDiffuse = o.texel == "both";
+  if (o.jitter > 0) {
+    o.settings.sampling.mode = Sampling::Mode::Jittered;
+    o.settings.sampling.gridN = o.jitter;
+  }
+  if (o.statisticalBound >= 0.0) {
+    o.settings.sampling.mode = Sampling::Mode::Statistical;
+    o.settings.sampling.bound = o.statisticalBound;
+  }
   if (o.samples > 1) {
     o.settings.sampling.mode = Sampling::Mode::Grid;
     o.settings.sampling.gridN = o.samples;

@@ -4,6 +4,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "src/cli/prime/camera_options.h"
 #include "src/prime/render/renderer.h"
@@ -18,6 +19,11 @@ struct RenderOptions {
   std::string profile = "1991";
   int samples = 1;
   double adaptiveTolerance = -1.0;  // < 0: off
+  int jitter = 0;                   // --jitter N (0: off)
+  double statisticalBound = -1.0;   // --statistical BOUND (< 0: off)
+  std::vector<double> lightRadius;  // --light-radius R [R ...] (thesis profile)
+  bool noShadows = false;           // --no-shadows (thesis profile)
+  std::string texel = "both";       // --texel fresnel|both (thesis profile, T8)
 };
 
 void addRenderOptions(CLI::App* cmd, RenderOptions& o);

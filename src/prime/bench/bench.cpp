@@ -36,6 +36,20 @@ Sampling grid(int n) {
   s.gridN = n;
   return s;
 }
+Sampling jittered(int n) {
+  Sampling s;
+  s.mode = Sampling::Mode::Jittered;
+  s.gridN = n;
+  return s;
+}
+Sampling statistical(double bound, int minSamples = 4) {
+  Sampling s;
+  s.mode = Sampling::Mode::Statistical;
+  s.bound = bound;
+  s.minSamples = minSamples;
+  s.maxSamples = 256;
+  return s;
+}
 Sampling adaptive(double tolerance) {
   Sampling s;
   s.mode = Sampling::Mode::Adaptive;
@@ -63,6 +77,11 @@ std::string samplingName(const Sampling& s) {
       return "grid" + std::to_string(s.gridN);
     case Sampling::Mode::Adaptive:
       return "adaptive" + fmt("%g", s.tolerance);
+    case Sampling::Mode::Jittered:
+      return "jitter" + std::to_string(s.gridN);
+    case Sampling::Mode::Statistical:
+      return "statistical" + fmt("%g", s.bound) +
+             (s.minSamples != 4 ? "min" + std::to_string(s.minSamples) : std::string());
   }
   return "?";
 }
@@ -119,6 +138,76 @@ std::vector<BenchSetting> benchSettings(bool quick) {
   return out;
 }
 
+BenchSetting samplingReference(int threads) {
+  BenchSetting r;
+  r.maxDepth = 5;
+  r.sampling = jittered(16);
+  r.sampling.seed = 999;  // numbers of their own, not the settings' (seed 1)
+  r.threads = threads;
+  r.reference = true;
+  return r;
+}
+
+std::vector<BenchSetting> samplingSettings(bool quick) {
+  std::vector<BenchSetting> out;
+  auto add = [&](Sampling s) { out.push_back({5, 0, s, 1, false}); };
+  const int maxN = quick ? 2 : 6;
+  for (int n = 1; n <= maxN; ++n) add(n == 1 ? single() : grid(n));
+  for (int n = 1; n <= maxN; ++n) add(jittered(n));
+  for (double b :
+       quick ? std::vector<double>{0.1} : std::vector<double>{0.2, 0.1, 0.05, 0.03, 0.02, 0.01})
+    add(statistical(b));
+  if (!quick)  // T14: sixteen first rays, for what four identical ones hide
+    for (double b : {0.05, 0.02}) add(statistical(b, 16));
+  return out;
+}
+
+std::string equalErrorMarkdown(const std::vector<BenchRow>& rows) {
+  std::ostringstream md;
+  md << "| scene | statistical | rays | RMSE | cheapest regular grid as good | its rays | its RMSE "
+        "| rays saved |\n|---|---|---|---|---|---|---|---|\n";
+  bool any = false;
+  for (const auto& st : rows) {
+    if (st.setting.reference || st.setting.sampling.mode != Sampling::Mode::Statistical) continue;
+    const BenchRow* best = nullptr;
+    for (const auto& g : rows) {
+      const auto m = g.setting.sampling.mode;
+      if (g.scene != st.scene || g.setting.reference ||
+          (m != Sampling::Mode::Grid && m != Sampling::Mode::Single) ||
+          g.error.rmse > st.error.rmse)
+        continue;
+      if (!best || g.stats.rays() < best->stats.rays()) best = &g;
+    }
+    any = true;
+    md << "| " << st.scene << " | " << samplingName(st.setting.sampling) << " | " << st.stats.rays()
+       << " | " << fmt("%.5f", st.error.rmse) << " | ";
+    if (best)
+      md << samplingName(best->setting.sampling) << " | " << best->stats.rays() << " | "
+         << fmt("%.5f", best->error.rmse) << " | "
+         << fmt("%.2f", static_cast<double>(best->stats.rays()) /
+                            static_cast<double>(std::max<std::uint64_t>(1, st.stats.rays())))
+         << "x |\n";
+    else {
+      // No grid is as good: the best one, for scale.
+      const BenchRow* top = nullptr;
+      for (const auto& g : rows)
+        if (g.scene == st.scene && !g.setting.reference &&
+            g.setting.sampling.mode == Sampling::Mode::Grid &&
+            (!top || g.error.rmse < top->error.rmse))
+          top = &g;
+      if (top)
+        md << "none; the best, " << samplingName(top->setting.sampling) << " | "
+           << top->stats.rays() << " | " << fmt("%.5f", top->error.rmse) << " | "
+           << fmt("%.2f", static_cast<double>(top->stats.rays()) /
+                              static_cast<double>(std::max<std::uint64_t>(1, st.stats.rays())))
+           << "x, and more error |\n";
+      else
+        md << "none | - | - | - |\n";
+    }
+  }
+  return any ? md.str() : std::string();
+}
+
 CameraSettings benchCamera(bool quick) {
   CameraSettings c;
   c.screenWidth = quick ? 128 : 512;
@@ -163,6 +252,10 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
                                  const BenchOptions& options) {
   auto settingsOf = [&](const BenchSetting& b) {
     RenderSettings s;
+    if (options.samplingStudy) {
+      s.profile = Profile::Thesis;
+      s.thesis.lightRadius = options.lightRadius;
+    }
     s.camera = options.camera;
     s.mapping = mapping;
     s.sampling = b.sampling;
@@ -176,7 +269,9 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
   };
 
   std::vector<BenchRow> rows;
-  const BenchSetting refSetting = referenceSetting(options.referenceThreads);
+  const BenchSetting refSetting = options.samplingStudy
+                                      ? samplingReference(options.referenceThreads)
+                                      : referenceSetting(options.referenceThreads);
   RenderResult reference;
   {
     const double w0 = wallSeconds(), c0 = processCpuSeconds();
@@ -198,7 +293,8 @@ std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
     log(scene.name + ": " + settingLabel(r.setting) + ": " + fmt("%.3f s", wall));
   }
 
-  for (const BenchSetting& b : benchSettings(options.quick)) {
+  for (const BenchSetting& b :
+       options.samplingStudy ? samplingSettings(options.quick) : benchSettings(options.quick)) {
     if (options.onlyThreads && b.threads == 1) continue;
     BenchRow r;
     r.scene = scene.name;
@@ -399,6 +495,11 @@ std::string markdownReport(const std::vector<BenchRow>& rows, const MachineFacts
     }
     md << "\nMedian speed-up over these rows: " << fmt("%.2f", median(ratios)) << "x.\n";
   }
+  if (const std::string eq = equalErrorMarkdown(rows); !eq.empty())
+    md << "\n## Statistical against regular supersampling at equal error\n\n"
+       << "Rays include the shadow rays. `rays saved`: the grid's rays over the statistical "
+          "row's.\n\n"
+       << eq;
   return md.str();
 }
 

@@ -35,6 +35,13 @@ bool is1991Profile(const BenchSetting& s);
 BenchSetting referenceSetting(int threads);
 // The grid of settings; `quick` is a handful for tests.
 std::vector<BenchSetting> benchSettings(bool quick);
+// The sampling study's reference (jittered 16 x 16, depth 5) and settings:
+// grid n x n, jittered n x n (n = 1..6) and statistical supersampling
+// (bounds 0.2 .. 0.01, at most 256 rays; 0.05 and 0.02 also with 16 first
+// rays, T14), all depth 5, one thread.
+BenchSetting samplingReference(int threads);
+std::vector<BenchSetting> samplingSettings(bool quick);
+
 // The camera: the listing's window on a reduced screen (full: 512 x 384, so
 // 176 x 385 pixels; quick: 128 x 96, 45 x 97 pixels). The world window is
 // the listing's, so the picture is the same, at a lower resolution.
@@ -72,7 +79,13 @@ struct BenchOptions {
   bool quick = false;
   bool onlyThreads = false;  // the reference and the multi-thread settings (with their pairs) only
   CameraSettings camera = benchCamera(false);
-  int referenceThreads = 0;                     // 0: all cores
+  int referenceThreads = 0;  // 0: all cores
+  // The sampling study (thesis 2.6): the thesis profile with soft shadows
+  // (lights of `lightRadius`), a jittered 16 x 16 reference at depth 5, and
+  // regular n x n, jittered n x n and statistical supersampling against it
+  // (samplingSettings) instead of benchSettings.
+  bool samplingStudy = false;
+  double lightRadius = 100.0;
   std::function<void(const std::string&)> log;  // progress lines
 };
 
@@ -80,6 +93,10 @@ struct BenchOptions {
 // The first row is the reference (zero error by construction).
 std::vector<BenchRow> benchScene(const Scene& scene, ColorMapping mapping,
                                  const BenchOptions& options);
+
+// The sampling study's summary: for every statistical row, the cheapest
+// regular grid row of the same scene whose RMSE is no larger, and their rays.
+std::string equalErrorMarkdown(const std::vector<BenchRow>& rows);
 
 // Marks, per scene, the Pareto front of (CPU median, RMSE) over the
 // single-thread rows other than the reference.

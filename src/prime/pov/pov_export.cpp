@@ -189,10 +189,26 @@ class Exporter {
          << "  up " << vec(cam.up) << "\n"
          << "}\n\n"
          << "background { rgb " << vec(scene_.background) << " }\n\n";
-    out_ << "// Point lights without distance fall-off; shadowless: the listing casts no shadow "
-            "rays (K9).\n";
-    for (const auto& l : scene_.lights)
-      out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " shadowless }\n";
+    if (!o_.shadows) {
+      out_ << "// Point lights without distance fall-off; shadowless: the listing casts no shadow "
+              "rays (K9).\n";
+      for (const auto& l : scene_.lights)
+        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " shadowless }\n";
+    } else if (!(o_.lightRadius > 0.0)) {
+      out_ << "// Point lights without distance fall-off, casting shadows (the thesis profile, "
+              "T2).\n";
+      for (const auto& l : scene_.lights)
+        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " }\n";
+    } else {
+      // A disc of the radius facing the point lit (the thesis profile's
+      // distributed light, T10): POV-Ray's circular, oriented area light.
+      const double d = 2.0 * o_.lightRadius;
+      out_ << "// Area lights: discs of radius " << o_.lightRadius
+           << " facing the point lit, casting soft shadows (the thesis profile, T10).\n";
+      for (const auto& l : scene_.lights)
+        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " area_light <"
+             << d << ", 0, 0>, <0, 0, " << d << ">, 9, 9 adaptive 1 jitter circular orient }\n";
+    }
     out_ << "\n";
   }
 

@@ -31,6 +31,11 @@ struct PovExportOptions {
   CameraSettings camera;  // the listing's camera and window (prime trace's flags)
   int maxDepth = 5;       // PRIME's MaxDepth; POV-Ray's max_trace_level counts the primary ray too
   std::string imageStem = "prime";  // texture files are <imageStem>_map<n>.png
+  // The thesis profile's lights (docs/prime/thesis-profile.md): lights cast
+  // shadows (T2) and, with a radius > 0, are circular area lights facing the
+  // point lit (T10). Off: shadowless point lights, as the listing (K9).
+  bool shadows = false;
+  double lightRadius = 0.0;
 };
 
 // A texture map written next to the .pov file, named relative to it.

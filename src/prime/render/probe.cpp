@@ -227,6 +227,17 @@ void Probe::transmit(int depth, int object, int steps, double distance, bool exi
           .add("dir", leaving.d));
 }
 
+void Probe::shadow(int depth, int light, const Vec3& target, const Rgb& visibility) {
+  const bool lit = visibility[0] == 1.0 && visibility[1] == 1.0 && visibility[2] == 1.0;
+  const bool dark = visibility[0] == 0.0 && visibility[1] == 0.0 && visibility[2] == 0.0;
+  add(depth, "shadow",
+      "light " + std::to_string(light) + " at " + fmt(target) + ": " +
+          (lit    ? std::string("lit")
+           : dark ? std::string("in shadow")
+                  : "attenuated to " + fmt(visibility)),
+      JsonObject().add("light", light).add("target", target).add("visibility", visibility));
+}
+
 void Probe::miss(int depth, const Vec3& background) {
   add(depth, "miss", "no object hit: background " + fmt(background), JsonObject());
 }

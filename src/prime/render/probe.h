@@ -47,7 +47,8 @@ std::string jsonString(std::string_view s);  // "s", escaped
 struct ProbeEvent {
   int depth = 0;
   std::string kind;  // "ray", "bound", "primitive", "csg", "object", "hit", "texture", "transmit",
-                     // "hall", "shade", "miss"
+                     // "hall", "shade", "miss",
+                     // "shadow"
   std::string text;  // human-readable one-liner
   std::string json;  // the same as a JSON object
 };
@@ -75,6 +76,10 @@ class Probe {
   // when it does not leave, why not.
   void transmit(int depth, int object, int steps, double distance, bool exited, const Ray& leaving,
                 std::string_view whyNoExit);
+  // A shadow ray's verdict (thesis profile): light `light` aimed at `target`
+  // (its centre or a point of its disc) passes `visibility` per channel
+  // (1 lit, 0 in shadow, between: through transparent blockers).
+  void shadow(int depth, int light, const Vec3& target, const Rgb& visibility);
   // No object hit: the background colour.
   void miss(int depth, const Vec3& background);
   // Hall's six terms of the hit's colour, per channel.

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstring>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "palette/prime/color_num.h"
@@ -59,12 +60,19 @@ template <class Tracer>
 struct PixelTracer {
   const Tracer& tracer;
   bool certainMiss;
-  Rgb castRay(const Ray& ray, int depth, TraceStats& stats) const {
-    return certainMiss ? background(stats) : tracer.castRay(ray, depth, stats);
+  PixelKey key;  // the pixel's random numbers (the thesis profile's soft shadows)
+  Rgb trace(const Ray& ray, int sample, TraceStats& stats) const {
+    if constexpr (std::is_same_v<Tracer, TracerThesis>)
+      return tracer.castRay(ray, 0, stats, SampleId{key, sample});
+    else
+      return tracer.castRay(ray, 0, stats);
+  }
+  Rgb castRay(const Ray& ray, int sample, TraceStats& stats) const {
+    return certainMiss ? background(stats) : trace(ray, sample, stats);
   }
   // The listing's one ray per pixel; a masked pixel does not even need the ray.
   Rgb castPrimary(const PrimeCamera& camera, int i, int j, TraceStats& stats) const {
-    return certainMiss ? background(stats) : tracer.castRay(camera.primaryRay(i, j), 0, stats);
+    return certainMiss ? background(stats) : trace(camera.primaryRay(i, j), 0, stats);
   }
   Rgb background(TraceStats& stats) const {
     ++stats.primaryRays;
@@ -87,11 +95,14 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
     TraceStats stats;
     PaletteIndexCache indexOf;
     std::optional<SampleLattice> lattice;
+    std::uint64_t samples = 0;
   };
+  std::optional<MeanBound> bounds;  // statistical supersampling's stopping rule
+  if (settings.sampling.mode == Sampling::Mode::Statistical) bounds.emplace(settings.sampling);
   std::vector<PerThread> perThread;
   perThread.reserve(threads);
   for (int t = 0; t < threads; ++t) {
-    perThread.push_back({TraceStats{}, PaletteIndexCache(settings), std::nullopt});
+    perThread.push_back({TraceStats{}, PaletteIndexCache(settings), std::nullopt, 0});
     if (settings.sampling.mode == Sampling::Mode::Adaptive)
       perThread.back().lattice.emplace(SampleLattice::levelsFor(settings.sampling));
   }
@@ -103,12 +114,19 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
     SampleLattice* lattice = local.lattice ? &*local.lattice : nullptr;
     for (int j = 0; j < columns; ++j) {
       checkAbort(callbacks.abort);  // R9
-      const PixelTracer<Tracer> pixel{tracer, mask && !mask->mayHit(i, j)};
+      const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),
+                         static_cast<std::uint32_t>(j)};
+      const PixelTracer<Tracer> pixel{tracer, mask && !mask->mayHit(i, j), key};
+      int taken = 0;
       const Rgb color = samplePixel(
-          settings.sampling, lattice, [&] { return pixel.castPrimary(camera, i, j, stats); },
-          [&](double fx, double fy) {
-            return pixel.castRay(camera.sampleRay(i, j, fx, fy), 0, stats);
-          });
+          settings.sampling, lattice, key, bounds ? &*bounds : nullptr,
+          [&] { return pixel.castPrimary(camera, i, j, stats); },
+          [&](double fx, double fy, int k) {
+            return pixel.castRay(camera.sampleRay(i, j, fx, fy), k, stats);
+          },
+          &taken);
+      if (settings.sampling.mode != Sampling::Mode::Single)
+        local.samples += static_cast<std::uint64_t>(taken);
       if (settings.keepColours) result.rgb.at(i, j) = color;
       // fwrite(&color, sizeof(int)): the raw 16-bit value (Q12).
       result.graph.pixels[static_cast<std::size_t>(i) * columns + j] =
@@ -126,7 +144,10 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
       callbacks.rowDone(i, std::vector<std::int16_t>(first, first + columns));
     };
   const RowsRun run = renderRows(rows, threads, renderRow, rowCallbacks);
-  for (const PerThread& t : perThread) result.stats += t.stats;
+  for (const PerThread& t : perThread) {
+    result.stats += t.stats;
+    result.samples += t.samples;
+  }
   result.threads = run.threads;
   result.aborted = run.aborted;
 }
@@ -151,7 +172,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   // only when it skips work (else it searches obj/List linearly, as the
   // listing did); the modern one always does.
   std::optional<PrimaryRayMask> mask;
-  if (settings.profile == Profile::Modern) {
+  if (settings.profile == Profile::Thesis) {
+    const TracerThesis tracer(scene, settings.trace, settings.thesis);
+    mask.emplace(camera, tracer.bvh().objectBoxes());
+    renderWith(tracer, camera, mask, settings, callbacks, result);
+  } else if (settings.profile == Profile::Modern) {
     const TracerModern tracer(scene, settings.trace);
     mask.emplace(camera, tracer.bvh().objectBoxes());
     renderWith(tracer, camera, mask, settings, callbacks, result);

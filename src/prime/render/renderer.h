@@ -11,6 +11,7 @@
 #include "legacy_io/prime/graph_file.h"
 #include "src/prime/render/camera.h"
 #include "src/prime/render/tracer_1991.h"
+#include "src/prime/render/tracer_thesis.h"
 #include "src/render/pixel_sampling.h"
 #include "src/render/render_rows.h"
 #include "src/render/rgb_image.h"
@@ -19,15 +20,17 @@ namespace prime {
 
 enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
 
-enum class Profile { Listing1991, Modern };
+// Thesis: the renderer the thesis describes (docs/prime/thesis-profile.md).
+enum class Profile { Listing1991, Modern, Thesis };
 
 struct RenderSettings {
   Profile profile = Profile::Listing1991;
   CameraSettings camera;
   Sampling sampling;
   TraceOptions trace;
-  int threads = 0;    // 0: all cores
-  int graphType = 1;  // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
+  ThesisOptions thesis;  // the thesis profile only: shadows, light radii, the texel's role
+  int threads = 0;       // 0: all cores
+  int graphType = 1;     // written to graph_scr and passed to ColorNum (1 = IBM8514HI)
   ColorMapping mapping = ColorMapping::Listing;
   // Keep every pixel's unquantised colour in RenderResult::rgb (true-colour
   // PNG, prime bench); false leaves rgb empty and saves its memory.
@@ -38,6 +41,7 @@ struct RenderResult {
   io::GraphFile graph;  // header 349 x 768 etc., (across+1) x (down+1) pixels
   RgbImage rgb;         // the unquantised colour of each pixel, same order
   TraceStats stats;
+  std::uint64_t samples = 0;  // rays per pixel summed (Grid, Jittered, Statistical; else 0)
   double seconds = 0;
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row

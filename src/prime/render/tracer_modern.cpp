@@ -368,6 +368,21 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   return report(kMaxInternalReflections, {}, "trapped by internal reflection: absorbed");
 }
 
+Rgb TracerModern::surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const {
+  const ScenePrim& prim = scene_.prims[hit.prim];
+  const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
+  const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;
+  const int mapNum = prim.map[surface][hit.fromInsidePrim ? 1 : 0];
+  const SceneTexture& map = scene_.maps[mapNum];
+  const double u = finiteOr0(uv.u), v = finiteOr0(uv.v);
+  Rgb surfColor{};
+  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, u, v);
+  if (probe)
+    probe->texture(depth, u, v, surface, uv.noFaceMatched, mapNum, map.uScale, map.vScale,
+                   surfColor);
+  return surfColor;
+}
+
 Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                           double weight) const {
   stats.countRay(kind);
@@ -384,16 +399,7 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, R
   if (probe)
     probe->hit(depth, obj.number, hit.prim, prim.type, hit.t, hit.point, hit.local, hit.normal,
                hit.fromInsidePrim);
-  const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
-  const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;
-  const int mapNum = prim.map[surface][hit.fromInsidePrim ? 1 : 0];
-  const SceneTexture& map = scene_.maps[mapNum];
-  const double u = finiteOr0(uv.u), v = finiteOr0(uv.v);
-  Rgb surfColor{};
-  for (int c = 0; c < 3; ++c) surfColor[c] = texel(map, c, u, v);
-  if (probe)
-    probe->texture(depth, u, v, surface, uv.noFaceMatched, mapNum, map.uScale, map.vScale,
-                   surfColor);
+  const Rgb surfColor = surfaceColour(hit, depth, probe);
 
   const io::Hue& h = obj.hue;
   const Vec3& n = hit.normal;

@@ -56,14 +56,22 @@ class TracerModern {
   TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
                         Probe* probe = nullptr, int depth = 0) const;
 
+  // The texel at the hit (inverse mapping, N11, N12, N17), probed.
+  Rgb surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const;
+  // Refract into the hit's object, walk to where the ray leaves it and
+  // refract out (N9): the leaving ray, the distance inside, and whether it
+  // got through (false: total internal reflection or trapped).
+  Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
+               TraceStats& stats, Probe* probe, int depth) const;
+
   const Scene& scene() const { return scene_; }
   // The object boxes every ray is tested against first (the BVH's).
   const ObjectBvh& bvh() const { return bvh_; }
+  // accurateInverse of primitive `prim`'s transform (N15).
+  const Matrix4& primInverse(int prim) const { return inverse_[static_cast<std::size_t>(prim)]; }
 
  private:
   void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
-  Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
-               TraceStats& stats, Probe* probe, int depth) const;
   const Scene& scene_;
   RayTreeOptions options_;
   ObjectBvh bvh_;
