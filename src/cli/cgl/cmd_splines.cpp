@@ -7,10 +7,15 @@
 // times come from a second pass over the primary rays: the intersection
 // alone, then Newton alone replayed from the same starts. With --holes N,
 // every N-th pixel's primary ray is also traced by the dense reference
-// (src/cgl/spline.h): the rays it hits and the Newton path misses.
+// (src/cgl/spline.h): the rays it hits and the Newton path misses. With
+// --distances FILE, every pixel's primary ray is traced by both and the
+// distances to the nearest spline hit are written as CSV (the holes against
+// POV-Ray: bench/cgl_spline_holes.sh, CGL-D171).
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
+#include "legacy_io/common/output_file.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
 
@@ -47,8 +52,13 @@ void addSplinesCommand(CLI::App& app, Action& action) {
   cmd->add_option("--holes", *holes,
                   "Count holes on every N-th pixel's primary ray (0: do not; slow)")
       ->check(CLI::Range(0, 512));
-  cmd->callback([o, holes, &action] {
-    action = [o, holes] {
+  auto distances = std::make_shared<std::string>();
+  cmd->add_option("--distances", *distances,
+                  "Write every pixel's distance to the nearest spline hit, by the dense "
+                  "reference and by the Newton path, as CSV (x,y,reference,path; empty: none)");
+  cmd->callback([o, holes, distances, &action] {
+    if (!distances->empty()) io::checkOutputPath(*distances);
+    action = [o, holes, distances] {
       const double t0 = now();
       const prime::cgl::SceneFile file = readCgl(*o, true);
       const double t1 = now();
@@ -144,6 +154,40 @@ void addSplinesCommand(CLI::App& app, Action& action) {
                   : 0.0,
               static_cast<unsigned long long>(h.extra), static_cast<unsigned long long>(h.farther));
         }
+      }
+      if (!distances->empty()) {
+        // CGL-D171: the distance |I - O| along each primary ray, nearest over
+        // the scene's spline surfaces, by the reference and by the path.
+        io::OutputFile out(*distances);
+        out.write("x,y,reference,path\n");
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        std::string line;
+        for (int y = p.yhigh; y >= p.ylow; --y)
+          for (int x = p.xleft; x <= p.xright; ++x) {
+            const Ray ray = scene.camera.primaryRay(x, y);
+            double ref = kInf, path = kInf;
+            for (const auto& s : scene.splines) {
+              prime::cgl::SplineHit h;
+              prime::cgl::SplineCounters c;
+              if (prime::cgl::intersectSplineReference(s, ray, settings.epsilon, ref, h)) ref = h.t;
+              if (prime::cgl::intersectSpline(s, ray, settings.epsilon, path, h, c)) path = h.t;
+            }
+            const double len = length(ray.d);
+            char buf[96];
+            line = std::to_string(x) + "," + std::to_string(y) + ",";
+            if (ref < kInf) {
+              std::snprintf(buf, sizeof buf, "%.9g", ref * len);
+              line += buf;
+            }
+            line += ",";
+            if (path < kInf) {
+              std::snprintf(buf, sizeof buf, "%.9g", path * len);
+              line += buf;
+            }
+            line += "\n";
+            out.write(line);
+          }
+        out.commit();
       }
       return 0;
     };
