@@ -591,14 +591,12 @@ inline void packetEntries(const SplinePacket& p, const BoxRay& r, double d[4]) {
   }
 }
 
-// A leaf whose Newton ran: its box entry, node index (the document's order)
-// and result.
+// A leaf the ray enters: its box entry, node index (the document's order)
+// and leaf record.
 struct Tried {
   double d;
   int node;
   int leaf;
-  bool ran;
-  NewtonResult r;
 };
 thread_local std::vector<Tried> tTried;
 
@@ -609,6 +607,9 @@ struct StackEntry {
 // The tree's depth is at most 1 + log2 of the knots per side (< 32 for int
 // counts); a packet adds at most 3 entries net per level: 128 is plenty.
 constexpr int kStack = 128;
+// Newton runs once ahead of the document's order, at the first leaf
+// reached, for a bound (running ahead until a first hit cost
+// as much as the boxes it spared on the shipped scenes).
 
 // Pushes the lanes of packet `p` whose box the ray enters before tMax; with
 // `Nearest`, the nearest on top (for the shadow query's early end).
@@ -648,13 +649,16 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   NewtonOptions options;
   options.tolerance = s.tolerance;
   // Depth first, nearest child first, listing the leaves the ray's box
-  // entry puts before `bound`; until a first hit is known, Newton runs at
-  // each leaf as it is reached. Then bound = max(t_F, d_F) for that leaf F:
+  // entry puts before `bound`; Newton runs at the first leaf reached; if it
+  // hits, bound = max(t_F, d_F) for that leaf F:
   // a leaf L with d_L > bound comes after F in the document's order (entry,
   // node index), where the nearest hit so far is at most t_F < d_L, so the
   // document's walk has stopped before L, and L need not be listed.
   double bound = tMax;
-  bool bounded = false;
+  // The one run ahead of the document's order: its leaf
+  // and result, reused by the replay below.
+  int aheadLeaf = -1;
+  NewtonResult ahead;
   StackEntry stack[kStack];
   int top = 0;
   pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
@@ -669,48 +673,48 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
     }
     const int leafIndex = ~e.ref;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(leafIndex)];
-    Tried x{e.d, leaf.node, leafIndex, false, {}};
-    if (!bounded) {
-      x.ran = true;
-      x.r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
-      if (x.r.hit && x.r.t > tMin && x.r.t < tMax) {
-        bounded = true;
-        bound = std::max(x.r.t, e.d);
-      }
+    if (aheadLeaf < 0) {
+      aheadLeaf = leafIndex;
+      ahead = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      if (ahead.hit && ahead.t > tMin && ahead.t < tMax) bound = std::max(ahead.t, e.d);
     }
-    tried.push_back(x);
+    tried.push_back({e.d, leaf.node, leafIndex});
   }
   if (tried.empty()) return false;
   // The document's walk over the listed leaves: nearest entry first (ties
-  // by node index, the heap's order), Newton at each (the results of the
-  // runs above kept), stopping at the first leaf no nearer than the hit.
+  // by node index, the heap's order), Newton at each (the run ahead
+  // reused), stopping at the first leaf no nearer than the hit.
   std::sort(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) {
     return a.d < b.d || (a.d == b.d && a.node < b.node);
   });
   double best = tMax;
   bool found = false;
-  for (Tried& x : tried) {
+  bool aheadUsed = false;
+  for (const Tried& x : tried) {
     if (!(x.d < best)) break;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(x.leaf)];
-    if (!x.ran) {
-      x.ran = true;
-      x.r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+    NewtonResult r;
+    if (x.leaf == aheadLeaf) {
+      r = ahead;
+      aheadUsed = true;
+    } else {
+      r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     }
-    if (x.r.hit && x.r.t > tMin && x.r.t < best) {
-      best = x.r.t;
+    ++counters.newtonCalls;
+    counters.iterations += static_cast<std::uint64_t>(r.iterations);
+    if (record) record->push_back({leaf.u0, leaf.v0});
+    if (r.hit && r.t > tMin && r.t < best) {
+      best = r.t;
       found = true;
-      hit = {x.r.t, x.r.u, x.r.v, leaf.u0, leaf.v0, x.r.iterations};
+      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations};
     }
   }
-  // The counts and starts of the Newton runs made, in the document's order.
-  for (const Tried& x : tried) {
-    if (!x.ran) continue;
+  if (aheadLeaf >= 0 && !aheadUsed) {
+    // The run ahead at a leaf the document's walk does not reach.
+    const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(aheadLeaf)];
     ++counters.newtonCalls;
-    counters.iterations += static_cast<std::uint64_t>(x.r.iterations);
-    if (record) {
-      const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(x.leaf)];
-      record->push_back({leaf.u0, leaf.v0});
-    }
+    counters.iterations += static_cast<std::uint64_t>(ahead.iterations);
+    if (record) record->push_back({leaf.u0, leaf.v0});
   }
   if (found) ++counters.hits;
   return found;

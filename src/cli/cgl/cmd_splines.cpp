@@ -11,6 +11,9 @@
 // --distances FILE, every pixel's primary ray is traced by both and the
 // distances to the nearest spline hit are written as CSV (the holes against
 // POV-Ray: bench/cgl_spline_holes.sh, CGL-D171).
+#include <time.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -80,11 +83,11 @@ void addSplinesCommand(CLI::App& app, Action& action) {
         tree += s.treeSeconds;
         std::printf(
             "surface (node %d): %d+4 x %d+4 = %d original vertices, %s x %s, divisions %d, "
-            "overlap %g; %d refined vertices, %d leaves, %zu tree nodes, %zu bytes; "
-            "refinement %.2f ms, tree %.2f ms\n",
+            "overlap %g; %d refined vertices, %d leaves, %zu tree nodes, %zu bytes (+ %zu "
+            "bytes of packets and leaf records, CGL-D170); refinement %.2f ms, tree %.2f ms\n",
             s.node, s.mu - 4, s.mv - 4, s.mu * s.mv, endName(s.uEnd), endName(s.vEnd), s.divisions,
-            s.overlap, s.pu * s.pv, s.leaves, s.nodes.size(), s.bytes(), 1e3 * s.refineSeconds,
-            1e3 * s.treeSeconds);
+            s.overlap, s.pu * s.pv, s.leaves, s.nodes.size(), s.bytes(), s.traversalBytes(),
+            1e3 * s.refineSeconds, 1e3 * s.treeSeconds);
       }
       // The primary rays again: intersection alone, recording Newton's starts.
       const auto& p = file.program;
@@ -117,6 +120,39 @@ void addSplinesCommand(CLI::App& app, Action& action) {
         }
         newtonOnly += now() - n0;
         if (sink < 0) std::printf("\n");
+      }
+      // CGL-D170: the document's heap walk against the packet walk on the
+      // same primary rays (intersection alone, CPU of this thread, the two
+      // interleaved, median of 5 runs each).
+      {
+        auto cpuNow = [] {
+          timespec ts{};
+          clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+          return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+        };
+        std::vector<double> doc, packets;
+        int sink = 0;
+        for (int run = 0; run < 5; ++run)
+          for (int walk = 0; walk < 2; ++walk) {
+            const bool document = (walk + run) % 2 == 0;
+            prime::cgl::SplineCounters wc;
+            const double w0 = cpuNow();
+            for (const auto& s : scene.splines)
+              for (const Ray& ray : primary) {
+                prime::cgl::SplineHit h;
+                sink +=
+                    document
+                        ? prime::cgl::intersectSplineDocument(s, ray, settings.epsilon, 1e10, h, wc)
+                        : prime::cgl::intersectSpline(s, ray, settings.epsilon, 1e10, h, wc);
+              }
+            (document ? doc : packets).push_back(cpuNow() - w0);
+          }
+        std::sort(doc.begin(), doc.end());
+        std::sort(packets.begin(), packets.end());
+        std::printf(
+            "primary rays' spline intersection alone (CPU, median of 5): document's heap walk "
+            "%.4f s, packet walk %.4f s (CGL-D170), ratio %.2f; %d hits each\n",
+            doc[2], packets[2], packets[2] / doc[2], sink / 10);
       }
       const double build = t2 - t1;
       const double total = build + render;
