@@ -171,14 +171,17 @@ struct NewtonStart {
 // intersectSplineDocument is that walk as the document describes it: a
 // sorted active list (a binary heap, CGL-D141), nodes taken nearest first,
 // Newton at each leaf taken, the end when the first node left is no nearer
-// than the hit. intersectSpline (CGL-D170) returns the same hit, bit for bit,
-// with the same Newton runs: it walks the packets depth first with an
-// explicit stack to list every leaf whose box the ray enters before tMax
-// (the heap's pops are these leaves in the order (entry, node index), since
-// a child's box lies in its parent's and has a larger index), sorts that
-// list and runs Newton, from the leaves' cached starts, in that order with
-// the document's stopping rule. It tests more boxes than the heap (those
-// beyond the hit), each far cheaper.
+// than the hit. intersectSpline (CGL-D170) returns the same hit, bit for bit:
+// it walks the packets depth first, nearest child first, with an explicit
+// stack, listing the leaves whose box the ray enters before tMax (the heap
+// pops exactly these, in the order (entry, node index), since a child's box
+// lies in its parent's and has a larger index); Newton runs once ahead, at
+// the first leaf reached, and a hit there (t_F at entry d_F) lets boxes
+// entered beyond max(t_F, d_F) be skipped (the heap stops before them). The
+// list is then sorted and Newton runs, from the leaves' cached starts, in
+// that order with the document's stopping rule (the run ahead reused). It
+// makes the heap's Newton runs plus at most the one ahead, and tests more
+// boxes than the heap, each far cheaper.
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                      SplineHit& hit, SplineCounters& counters,
                      std::vector<NewtonStart>* record = nullptr);
