@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace prime::cgl {
@@ -115,6 +116,10 @@ std::size_t SplineSurface::bytes() const {
          nodes.size() * sizeof(SplineNode);
 }
 
+std::size_t SplineSurface::traversalBytes() const {
+  return packets.size() * sizeof(SplinePacket) + leafData.size() * sizeof(SplineLeaf);
+}
+
 namespace {
 
 class TreeBuilder {
@@ -222,6 +227,67 @@ std::vector<int> knotsInRange(int m, int divisions, ParamRange range) {
   return out;
 }
 
+// CGL-D170: the packets and leaf data of the tree (see spline.h).
+void setLane(SplinePacket& p, int lane, const Aabb& box, int ref) {
+  for (int a = 0; a < 3; ++a) {
+    p.lo[a][lane] = box.lo[a];
+    p.hi[a][lane] = box.hi[a];
+  }
+  p.ref[lane] = ref;
+  p.plain = p.plain && box.lo[0] <= box.hi[0] && box.lo[1] <= box.hi[1] && box.lo[2] <= box.hi[2];
+}
+
+int laneRef(SplineSurface& s, int node);
+
+// A packet for the children first .. first + count - 1; returns its index.
+int addPacket(SplineSurface& s, int first, int count) {
+  const int at = static_cast<int>(s.packets.size());
+  s.packets.emplace_back();
+  SplinePacket& p = s.packets.back();
+  p.count = count;
+  for (int lane = 0; lane < 4; ++lane) {
+    // Unused lanes: an empty box that no ray enters (never read: count).
+    for (int a = 0; a < 3; ++a) p.lo[a][lane] = p.hi[a][lane] = 0.0;
+    p.ref[lane] = 0;
+  }
+  for (int c = 0; c < count; ++c) {
+    const int ref = laneRef(s, first + c);
+    setLane(s.packets[static_cast<std::size_t>(at)], c,
+            s.nodes[static_cast<std::size_t>(first + c)].box, ref);
+  }
+  return at;
+}
+
+int laneRef(SplineSurface& s, int node) {
+  const SplineNode& n = s.nodes[static_cast<std::size_t>(node)];
+  if (n.count == 0) {
+    SplineLeaf leaf;
+    leaf.u0 = n.u0;
+    leaf.v0 = n.v0;
+    leaf.start = evaluate(s, n.u0, n.v0);
+    leaf.node = node;
+    s.leafData.push_back(leaf);
+    return ~static_cast<int>(s.leafData.size() - 1);
+  }
+  return addPacket(s, n.first, n.count);
+}
+
+void buildPackets(SplineSurface& s) {
+  s.packets.clear();
+  s.leafData.clear();
+  s.leafData.reserve(static_cast<std::size_t>(s.leaves));
+  if (s.nodes.empty()) return;
+  // packets[0]: the root alone, so that the traversal starts like any node.
+  s.packets.emplace_back();
+  for (int lane = 0; lane < 4; ++lane) {
+    for (int a = 0; a < 3; ++a) s.packets[0].lo[a][lane] = s.packets[0].hi[a][lane] = 0.0;
+    s.packets[0].ref[lane] = 0;
+  }
+  s.packets[0].count = 1;
+  const int ref = laneRef(s, 0);
+  setLane(s.packets[0], 0, s.nodes[0].box, ref);
+}
+
 }  // namespace
 
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
@@ -282,6 +348,7 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
   TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
   tb.build();
   s.hull.add(s.nodes[0].box);
+  buildPackets(s);
   s.treeSeconds = secondsSince(treeStart);
 
   // CGL-Q143: the tolerance, in scene units, relative to the surface's size.
@@ -367,10 +434,16 @@ RayPlanes documentRayPlanes(const Ray& ray) {
 
 NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
                     double v0, const NewtonOptions& options) {
+  if (!planes.ok) return {};
+  return newtonFrom(s, planes, ray, u0, v0, evaluate(s, u0, v0), options);
+}
+
+NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
+                        double v0, const SplinePoint& start, const NewtonOptions& options) {
   NewtonResult res;
   if (!planes.ok) return res;
   double u = u0, v = v0;
-  SplinePoint sp = evaluate(s, u, v);
+  SplinePoint sp = start;
   // (6.8.1) with the basis factor B_{i,4}(u) B_{j,4}(v) (CGL-E140).
   double e1 = dot(planes.n1, sp.q) - planes.a1, e2 = dot(planes.n2, sp.q) - planes.a2;
   double err = std::fabs(e1) + std::fabs(e2);
@@ -431,8 +504,9 @@ thread_local std::vector<Active> tActive;
 
 }  // namespace
 
-bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                             SplineHit& hit, SplineCounters& counters,
+                             std::vector<NewtonStart>* record) {
   ++counters.calls;
   if (s.nodes.empty()) return false;
   std::vector<Active>& active = tActive;
@@ -479,6 +553,201 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   }
   if (found) ++counters.hits;
   return found;
+}
+
+namespace {
+
+// Aabb::entry(BoxRay) on the lanes of a packet: the same operations in the
+// same order per lane, so the same doubles (CGL-D170).
+inline void packetEntries(const SplinePacket& p, const BoxRay& r, double d[4]) {
+  if (!r.simple || !p.plain) {
+    for (int lane = 0; lane < p.count; ++lane) {
+      Aabb b;
+      b.lo = {p.lo[0][lane], p.lo[1][lane], p.lo[2][lane]};
+      b.hi = {p.hi[0][lane], p.hi[1][lane], p.hi[2][lane]};
+      d[lane] = b.entry(r);
+    }
+    return;
+  }
+  // Two lanes at once, twice (GCC/Clang vector extensions: SSE2 on x86-64):
+  // x > t0 ? x : t0 is std::max(t0, x) and y < t1 ? y : t1 is
+  // std::min(t1, y) for the NaN-free values here, lane by lane.
+  using V2 = double __attribute__((vector_size(16)));
+  for (int half = 0; half < 4; half += 2) {
+    V2 t0 = {0.0, 0.0}, t1 = {kInf, kInf};
+    for (int a = 0; a < 3; ++a) {
+      V2 nearPlane, farPlane;
+      std::memcpy(&nearPlane, (r.neg[a] ? p.hi[a] : p.lo[a]) + half, sizeof nearPlane);
+      std::memcpy(&farPlane, (r.neg[a] ? p.lo[a] : p.hi[a]) + half, sizeof farPlane);
+      const double o = r.ray.o[a], inv = r.inv[a];
+      const V2 x = (nearPlane - o) * inv;
+      const V2 y = (farPlane - o) * inv;
+      t0 = x > t0 ? x : t0;
+      t1 = y < t1 ? y : t1;
+    }
+    const V2 miss = {kInf, kInf};
+    const V2 out = t0 <= t1 ? t0 : miss;
+    std::memcpy(d + half, &out, sizeof out);
+  }
+}
+
+// A leaf the ray enters: its box entry, node index (the document's order)
+// and leaf record.
+struct Tried {
+  double d;
+  int node;
+  int leaf;
+};
+thread_local std::vector<Tried> tTried;
+
+struct StackEntry {
+  double d;
+  int ref;
+};
+// The tree's depth is at most 1 + log2 of the knots per side (< 32 for int
+// counts); a packet adds at most 3 entries net per level: 128 is plenty.
+constexpr int kStack = 128;
+// Newton runs once ahead of the document's order, at the first leaf
+// reached, for a bound (running ahead until a first hit cost
+// as much as the boxes it spared on the shipped scenes).
+
+// Pushes the lanes of packet `p` whose box the ray enters before tMax; with
+// `Nearest`, the nearest on top (for the shadow query's early end).
+template <bool Nearest>
+inline void pushLanes(const SplinePacket& p, const BoxRay& boxRay, double tMax, double bound,
+                      StackEntry* stack, int& top, SplineCounters& counters) {
+  double d[4];
+  packetEntries(p, boxRay, d);
+  counters.boxes += static_cast<std::uint64_t>(p.count);
+  if (!Nearest) {
+    for (int lane = 0; lane < p.count; ++lane)
+      if (d[lane] < tMax && !(d[lane] > bound)) stack[top++] = {d[lane], p.ref[lane]};
+    return;
+  }
+  int order[4];
+  int k = 0;
+  for (int lane = 0; lane < p.count; ++lane)
+    if (d[lane] < tMax && !(d[lane] > bound)) {
+      int j = k++;
+      for (; j > 0 && d[order[j - 1]] < d[lane]; --j) order[j] = order[j - 1];
+      order[j] = lane;  // order: farthest first
+    }
+  for (int j = 0; j < k; ++j) stack[top++] = {d[order[j]], p.ref[order[j]]};
+}
+
+}  // namespace
+
+bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+  ++counters.calls;
+  if (s.packets.empty()) return false;
+  std::vector<Tried>& tried = tTried;
+  if (tried.capacity() < s.leafData.size()) tried.reserve(s.leafData.size());
+  tried.clear();
+  const BoxRay boxRay(ray);
+  RayPlanes planes;
+  NewtonOptions options;
+  options.tolerance = s.tolerance;
+  // Depth first, nearest child first, listing the leaves the ray's box
+  // entry puts before `bound`; Newton runs at the first leaf reached; if it
+  // hits, bound = max(t_F, d_F) for that leaf F:
+  // a leaf L with d_L > bound comes after F in the document's order (entry,
+  // node index), where the nearest hit so far is at most t_F < d_L, so the
+  // document's walk has stopped before L, and L need not be listed.
+  double bound = tMax;
+  // The one run ahead of the document's order: its leaf
+  // and result, reused by the replay below.
+  int aheadLeaf = -1;
+  NewtonResult ahead;
+  StackEntry stack[kStack];
+  int top = 0;
+  pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
+  if (top > 0) planes = rayPlanes(ray);
+  while (top > 0) {
+    const StackEntry e = stack[--top];
+    if (e.d > bound) continue;
+    if (e.ref >= 0) {
+      pushLanes<true>(s.packets[static_cast<std::size_t>(e.ref)], boxRay, tMax, bound, stack, top,
+                      counters);
+      continue;
+    }
+    const int leafIndex = ~e.ref;
+    const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(leafIndex)];
+    if (aheadLeaf < 0) {
+      aheadLeaf = leafIndex;
+      ahead = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      if (ahead.hit && ahead.t > tMin && ahead.t < tMax) bound = std::max(ahead.t, e.d);
+    }
+    tried.push_back({e.d, leaf.node, leafIndex});
+  }
+  if (tried.empty()) return false;
+  // The document's walk over the listed leaves: nearest entry first (ties
+  // by node index, the heap's order), Newton at each (the run ahead
+  // reused), stopping at the first leaf no nearer than the hit.
+  std::sort(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) {
+    return a.d < b.d || (a.d == b.d && a.node < b.node);
+  });
+  double best = tMax;
+  bool found = false;
+  bool aheadUsed = false;
+  for (const Tried& x : tried) {
+    if (!(x.d < best)) break;
+    const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(x.leaf)];
+    NewtonResult r;
+    if (x.leaf == aheadLeaf) {
+      r = ahead;
+      aheadUsed = true;
+    } else {
+      r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+    }
+    ++counters.newtonCalls;
+    counters.iterations += static_cast<std::uint64_t>(r.iterations);
+    if (record) record->push_back({leaf.u0, leaf.v0});
+    if (r.hit && r.t > tMin && r.t < best) {
+      best = r.t;
+      found = true;
+      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations};
+    }
+  }
+  if (aheadLeaf >= 0 && !aheadUsed) {
+    // The run ahead at a leaf the document's walk does not reach.
+    const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(aheadLeaf)];
+    ++counters.newtonCalls;
+    counters.iterations += static_cast<std::uint64_t>(ahead.iterations);
+    if (record) record->push_back({leaf.u0, leaf.v0});
+  }
+  if (found) ++counters.hits;
+  return found;
+}
+
+bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                    SplineCounters& counters) {
+  ++counters.calls;
+  if (s.packets.empty()) return false;
+  const BoxRay boxRay(ray);
+  const RayPlanes planes = rayPlanes(ray);
+  NewtonOptions options;
+  options.tolerance = s.tolerance;
+  StackEntry stack[kStack];
+  int top = 0;
+  pushLanes<true>(s.packets[0], boxRay, tMax, kInf, stack, top, counters);
+  while (top > 0) {
+    const StackEntry e = stack[--top];
+    if (e.ref >= 0) {
+      pushLanes<true>(s.packets[static_cast<std::size_t>(e.ref)], boxRay, tMax, kInf, stack, top,
+                      counters);
+      continue;
+    }
+    const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(~e.ref)];
+    ++counters.newtonCalls;
+    const NewtonResult r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+    counters.iterations += static_cast<std::uint64_t>(r.iterations);
+    if (r.hit && r.t > tMin && r.t < tMax) {
+      ++counters.hits;
+      return true;
+    }
+  }
+  return false;
 }
 
 bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMin, double tMax,

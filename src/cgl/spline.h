@@ -59,6 +59,27 @@ struct SplineNode {
   double u0 = 0, v0 = 0;  // leaf: (w-bar_{r+2}, t-bar_{s+2})
 };
 
+// Q, Q_u and Q_v at (u, v) from the original (extended) control vertices.
+struct SplinePoint {
+  Vec3 q{}, qu{}, qv{};
+};
+
+// The same tree laid out for the traversal (CGL-D170): per interior node
+// its children's boxes side by side (structure of arrays, four lanes, the
+// slab test of Aabb::entry on each lane with the same arithmetic), and per
+// leaf its Newton start with Q, Q_u, Q_v there evaluated once.
+struct SplinePacket {
+  double lo[3][4], hi[3][4];
+  int ref[4];  // >= 0: the child's packet; < 0: leaf ~ref
+  int count = 0;
+  bool plain = true;  // every box has lo <= hi (the branch-free test applies)
+};
+struct SplineLeaf {
+  double u0 = 0, v0 = 0;
+  SplinePoint start;  // evaluate(u0, v0)
+  int node = 0;       // the leaf's index in `nodes` (the document's tie order)
+};
+
 struct SplineSurface {
   int node = 0;  // the scene node
   int mu = 0;    // extended vertices in u: nu + 4 (indices -4 .. m)
@@ -75,10 +96,17 @@ struct SplineSurface {
   std::vector<Vec3> w;
   std::vector<SplineNode> nodes;  // nodes[0] is the root
   int leaves = 0;
+  // CGL-D170: packets[0] holds the root alone (one lane); every interior
+  // node has one packet; leafData[k] is leaf k.
+  std::vector<SplinePacket> packets;
+  std::vector<SplineLeaf> leafData;
   double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
   Aabb hull;             // the control vertices' box: contains every surface point
   double refineSeconds = 0, treeSeconds = 0;
+  // The document's structures (refined vertices, the tree's nodes), for
+  // Table 3; traversalBytes() the packets and leaf data added by CGL-D170.
   std::size_t bytes() const;
+  std::size_t traversalBytes() const;
 };
 
 // Builds a surface from the transformed user control vertices (nv groups of
@@ -87,10 +115,6 @@ struct SplineSurface {
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
                           EndCondition vEnd, int divisions, double overlap);
 
-// Q, Q_u and Q_v at (u, v) from the original (extended) control vertices.
-struct SplinePoint {
-  Vec3 q{}, qu{}, qv{};
-};
 SplinePoint evaluate(const SplineSurface& s, double u, double v);
 // Long-double evaluation of Q, for the references.
 void evaluateLong(const SplineSurface& s, long double u, long double v, long double out[3]);
@@ -121,6 +145,11 @@ struct NewtonResult {
 NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
                     double v0, const NewtonOptions& options);
 
+// Newton from the start (u0, v0) whose Q, Q_u, Q_v are `start` (the same
+// iterates, bit for bit, as newton(), which evaluates them).
+NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
+                        double v0, const SplinePoint& start, const NewtonOptions& options);
+
 struct SplineCounters {
   std::uint64_t calls = 0, boxes = 0, newtonCalls = 0, iterations = 0, hits = 0;
   SplineCounters& operator+=(const SplineCounters& o);
@@ -138,9 +167,33 @@ struct SplineHit {
 struct NewtonStart {
   double u0 = 0, v0 = 0;
 };
+//
+// intersectSplineDocument is that walk as the document describes it: a
+// sorted active list (a binary heap, CGL-D141), nodes taken nearest first,
+// Newton at each leaf taken, the end when the first node left is no nearer
+// than the hit. intersectSpline (CGL-D170) returns the same hit, bit for bit:
+// it walks the packets depth first, nearest child first, with an explicit
+// stack, listing the leaves whose box the ray enters before tMax (the heap
+// pops exactly these, in the order (entry, node index), since a child's box
+// lies in its parent's and has a larger index); Newton runs once ahead, at
+// the first leaf reached, and a hit there (t_F at entry d_F) lets boxes
+// entered beyond max(t_F, d_F) be skipped (the heap stops before them). The
+// list is then sorted and Newton runs, from the leaves' cached starts, in
+// that order with the document's stopping rule (the run ahead reused). It
+// makes the heap's Newton runs plus at most the one ahead, and tests more
+// boxes than the heap, each far cheaper.
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                      SplineHit& hit, SplineCounters& counters,
                      std::vector<NewtonStart>* record = nullptr);
+bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                             SplineHit& hit, SplineCounters& counters,
+                             std::vector<NewtonStart>* record = nullptr);
+// Whether intersectSpline would find a hit with t in (tMin, tMax), for
+// shadow rays: true as soon as any leaf's Newton converges there (the
+// document's walk finds a hit exactly when some leaf the ray's box entry
+// puts before tMax converges in range, whatever the order; CGL-D170).
+bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                    SplineCounters& counters);
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by
 // the convex hull of its 16 refined vertices (so the boxes contain the

@@ -76,7 +76,7 @@ namespace {
 // Boxes are the callers' business.
 inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, double tMin,
                       double tMax, double& t, double& axial, int& facet, SplineHit& sh,
-                      TraceStats& stats) {
+                      TraceStats& stats, bool anyHit = false) {
   switch (o.kind) {
     case ObjectKind::Sphere:
       return hitSphere(o, br.ray, tMin, tMax, t);
@@ -88,6 +88,11 @@ inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, dou
       return hitFractal(scene.fractals[static_cast<std::size_t>(o.fractal)], br, tMin, tMax, t,
                         facet, stats.fractal);
     case ObjectKind::Spline:
+      // A shadow ray needs only whether there is a hit (CGL-D170: the same
+      // answer as the nearest hit's search, found sooner).
+      if (anyHit)
+        return occludesSpline(scene.splines[static_cast<std::size_t>(o.spline)], br.ray, tMin, tMax,
+                              stats.spline);
       if (!intersectSpline(scene.splines[static_cast<std::size_t>(o.spline)], br.ray, tMin, tMax,
                            sh, stats.spline))
         return false;
@@ -204,7 +209,7 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
           SplineHit sh;
           const auto kind = static_cast<std::size_t>(o.kind);
           ++stats.tests[kind];
-          if (hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats)) {
+          if (hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats, true)) {
             ++stats.hits[kind];
             found = i;
           }
@@ -231,7 +236,7 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
       double t = 0, axial = 0;
       int facet = -1;
       SplineHit sh;
-      const bool h = hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats);
+      const bool h = hitObject(scene_, o, boxRay, eps, tMax, t, axial, facet, sh, stats, true);
       const auto kind = static_cast<std::size_t>(o.kind);
       ++stats.tests[kind];
       if (h) {

@@ -7,10 +7,18 @@
 // times come from a second pass over the primary rays: the intersection
 // alone, then Newton alone replayed from the same starts. With --holes N,
 // every N-th pixel's primary ray is also traced by the dense reference
-// (src/cgl/spline.h): the rays it hits and the Newton path misses.
+// (src/cgl/spline.h): the rays it hits and the Newton path misses. With
+// --distances FILE, every pixel's primary ray is traced by both and the
+// distances to the nearest spline hit are written as CSV (the holes against
+// POV-Ray: bench/cgl_spline_holes.sh, CGL-D171).
+#include <time.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
+#include "legacy_io/common/output_file.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
 
@@ -47,8 +55,13 @@ void addSplinesCommand(CLI::App& app, Action& action) {
   cmd->add_option("--holes", *holes,
                   "Count holes on every N-th pixel's primary ray (0: do not; slow)")
       ->check(CLI::Range(0, 512));
-  cmd->callback([o, holes, &action] {
-    action = [o, holes] {
+  auto distances = std::make_shared<std::string>();
+  cmd->add_option("--distances", *distances,
+                  "Write every pixel's distance to the nearest spline hit, by the dense "
+                  "reference and by the Newton path, as CSV (x,y,reference,path; empty: none)");
+  cmd->callback([o, holes, distances, &action] {
+    if (!distances->empty()) io::checkOutputPath(*distances);
+    action = [o, holes, distances] {
       const double t0 = now();
       const prime::cgl::SceneFile file = readCgl(*o, true);
       const double t1 = now();
@@ -70,11 +83,11 @@ void addSplinesCommand(CLI::App& app, Action& action) {
         tree += s.treeSeconds;
         std::printf(
             "surface (node %d): %d+4 x %d+4 = %d original vertices, %s x %s, divisions %d, "
-            "overlap %g; %d refined vertices, %d leaves, %zu tree nodes, %zu bytes; "
-            "refinement %.2f ms, tree %.2f ms\n",
+            "overlap %g; %d refined vertices, %d leaves, %zu tree nodes, %zu bytes (+ %zu "
+            "bytes of packets and leaf records, CGL-D170); refinement %.2f ms, tree %.2f ms\n",
             s.node, s.mu - 4, s.mv - 4, s.mu * s.mv, endName(s.uEnd), endName(s.vEnd), s.divisions,
-            s.overlap, s.pu * s.pv, s.leaves, s.nodes.size(), s.bytes(), 1e3 * s.refineSeconds,
-            1e3 * s.treeSeconds);
+            s.overlap, s.pu * s.pv, s.leaves, s.nodes.size(), s.bytes(), s.traversalBytes(),
+            1e3 * s.refineSeconds, 1e3 * s.treeSeconds);
       }
       // The primary rays again: intersection alone, recording Newton's starts.
       const auto& p = file.program;
@@ -107,6 +120,39 @@ void addSplinesCommand(CLI::App& app, Action& action) {
         }
         newtonOnly += now() - n0;
         if (sink < 0) std::printf("\n");
+      }
+      // CGL-D170: the document's heap walk against the packet walk on the
+      // same primary rays (intersection alone, CPU of this thread, the two
+      // interleaved, median of 5 runs each).
+      {
+        auto cpuNow = [] {
+          timespec ts{};
+          clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+          return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+        };
+        std::vector<double> doc, packets;
+        int sink = 0;
+        for (int run = 0; run < 5; ++run)
+          for (int walk = 0; walk < 2; ++walk) {
+            const bool document = (walk + run) % 2 == 0;
+            prime::cgl::SplineCounters wc;
+            const double w0 = cpuNow();
+            for (const auto& s : scene.splines)
+              for (const Ray& ray : primary) {
+                prime::cgl::SplineHit h;
+                sink +=
+                    document
+                        ? prime::cgl::intersectSplineDocument(s, ray, settings.epsilon, 1e10, h, wc)
+                        : prime::cgl::intersectSpline(s, ray, settings.epsilon, 1e10, h, wc);
+              }
+            (document ? doc : packets).push_back(cpuNow() - w0);
+          }
+        std::sort(doc.begin(), doc.end());
+        std::sort(packets.begin(), packets.end());
+        std::printf(
+            "primary rays' spline intersection alone (CPU, median of 5): document's heap walk "
+            "%.4f s, packet walk %.4f s (CGL-D170), ratio %.2f; %d hits each\n",
+            doc[2], packets[2], packets[2] / doc[2], sink / 10);
       }
       const double build = t2 - t1;
       const double total = build + render;
@@ -144,6 +190,40 @@ void addSplinesCommand(CLI::App& app, Action& action) {
                   : 0.0,
               static_cast<unsigned long long>(h.extra), static_cast<unsigned long long>(h.farther));
         }
+      }
+      if (!distances->empty()) {
+        // CGL-D171: the distance |I - O| along each primary ray, nearest over
+        // the scene's spline surfaces, by the reference and by the path.
+        io::OutputFile out(*distances);
+        out.write("x,y,reference,path\n");
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        std::string line;
+        for (int y = p.yhigh; y >= p.ylow; --y)
+          for (int x = p.xleft; x <= p.xright; ++x) {
+            const Ray ray = scene.camera.primaryRay(x, y);
+            double ref = kInf, path = kInf;
+            for (const auto& s : scene.splines) {
+              prime::cgl::SplineHit h;
+              prime::cgl::SplineCounters c;
+              if (prime::cgl::intersectSplineReference(s, ray, settings.epsilon, ref, h)) ref = h.t;
+              if (prime::cgl::intersectSpline(s, ray, settings.epsilon, path, h, c)) path = h.t;
+            }
+            const double len = length(ray.d);
+            char buf[96];
+            line = std::to_string(x) + "," + std::to_string(y) + ",";
+            if (ref < kInf) {
+              std::snprintf(buf, sizeof buf, "%.9g", ref * len);
+              line += buf;
+            }
+            line += ",";
+            if (path < kInf) {
+              std::snprintf(buf, sizeof buf, "%.9g", path * len);
+              line += buf;
+            }
+            line += "\n";
+            out.write(line);
+          }
+        out.commit();
       }
       return 0;
     };

@@ -418,5 +418,75 @@ TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
   EXPECT_NE(describeObjects(s).find("spline (node 4)"), std::string::npos) << describeObjects(s);
 }
 
+// CGL-D170: the packet walk returns the document's walk's hit bit for bit,
+// and the shadow query answers as the nearest-hit search does, on every
+// shipped spline scene: the primary rays of every 3rd pixel (the vases'
+// holes included), rays from the hit points towards the light and random
+// rays through the surface's box from every side. The counts of hits are
+// printed by the failure messages; the assertion is the exact equality.
+TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const char* name : {"spline-bump-single", "spline-bump-double", "spline-bump-triple",
+                           "spline-donut", "spline-mask", "spline-vases", "doc-spline-tube"}) {
+    const SceneFile f = readSceneFile(kScenes + "/" + name + ".cgl");
+    const Scene scene = buildScene(f);
+    ASSERT_FALSE(scene.splines.empty()) << name;
+    std::vector<Ray> rays;
+    const auto& p = f.program;
+    for (int y = p.ylow; y <= p.yhigh; y += 3)
+      for (int x = p.xleft; x <= p.xright; x += 3) rays.push_back(scene.camera.primaryRay(x, y));
+    std::uint64_t hits = 0, shadowHits = 0, tried = 0;
+    for (const SplineSurface& s : scene.splines) {
+      const Vec3 c = s.hull.centre(), e = s.hull.hi - s.hull.lo;
+      for (int k = 0; k < 20000; ++k) {
+        // From a point outside the box towards a point inside it.
+        Vec3 a{unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5}, b = a;
+        for (int i = 0; i < 3; ++i) {
+          a[i] = c[i] + 3.0 * e[i] * a[i] + (i == k % 3 ? (k % 2 ? 2.0 : -2.0) * e[i] : 0.0);
+          b[i] = c[i] + e[i] * (unit(rng) - 0.5);
+        }
+        rays.push_back({a, normalized(b - a)});
+      }
+      const std::size_t primaryAndRandom = rays.size();
+      for (std::size_t r = 0; r < primaryAndRandom; ++r) {
+        const Ray& ray = rays[r];
+        SplineHit a, b;
+        SplineCounters ca, cb;
+        const bool fa = intersectSplineDocument(s, ray, 1e-6, 1e10, a, ca);
+        const bool fb = intersectSpline(s, ray, 1e-6, 1e10, b, cb);
+        ++tried;
+        ASSERT_EQ(fa, fb) << name << " ray " << r;
+        EXPECT_EQ(fb, occludesSpline(s, ray, 1e-6, 1e10, cb)) << name << " ray " << r;
+        // Never fewer Newton runs than the document's walk (it runs a superset).
+        ASSERT_GE(cb.newtonCalls, ca.newtonCalls) << name << " ray " << r;
+        if (!fa) continue;
+        ++hits;
+        ASSERT_EQ(a.t, b.t) << name << " ray " << r;
+        ASSERT_EQ(a.u, b.u) << name << " ray " << r;
+        ASSERT_EQ(a.v, b.v) << name << " ray " << r;
+        ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
+        ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
+        ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+        // A segment ending just short of the hit, and one just past it:
+        // the shadow query against the nearest-hit search with tMax.
+        const Ray toward{ray.o, ray.d};
+        for (const double tMax : {a.t * 0.999, a.t * 1.001}) {
+          SplineHit h;
+          SplineCounters c;
+          const bool near = intersectSplineDocument(s, toward, 1e-6, tMax, h, c);
+          const bool occ = occludesSpline(s, toward, 1e-6, tMax, c);
+          ASSERT_EQ(near, occ) << name << " ray " << r << " tMax " << tMax;
+          shadowHits += occ;
+        }
+      }
+      rays.resize(primaryAndRandom - 20000);
+    }
+    // Each scene gives both kinds of answers.
+    EXPECT_GT(hits, 1000u) << name << " of " << tried;
+    EXPECT_GT(shadowHits, 0u) << name;
+  }
+}
+
 }  // namespace
 }  // namespace prime::cgl
