@@ -52,10 +52,17 @@ std::string defaultB() {
 // The probe's record of one ray tree in the settings' profile; nothing for a
 // profile the probe does not trace.
 std::optional<std::vector<ProbeEvent>> probeTree(const Scene& scene, const RenderSettings& s,
-                                                 const Ray& ray, Rgb& colour) {
+                                                 int row, int column, const Ray& ray,
+                                                 Rgb& colour) {
   TraceStats stats;
   Probe probe;
-  if (s.profile == Profile::Modern)
+  if (s.profile == Profile::Thesis) {
+    // The pixel's sample 0, as `prime probe` traces it (T16).
+    const SampleId sample{PixelKey{s.sampling.seed, static_cast<std::uint32_t>(row),
+                                   static_cast<std::uint32_t>(column)},
+                          0};
+    colour = TracerThesis(scene, s.trace, s.thesis).castRay(ray, 0, stats, sample, &probe);
+  } else if (s.profile == Profile::Modern)
     colour = TracerModern(scene, s.trace).castRay(ray, 0, stats, &probe);
   else if (s.profile == Profile::Listing1991)
     colour = Tracer1991(scene, s.trace).castRay(ray, 0, stats, &probe);
@@ -161,8 +168,8 @@ void addCompareCommand(CLI::App& app, Action& action) {
         const PrimeCamera ca(sa.camera), cb(sb.camera);
         for (const auto& [row, column] : c.sample) {
           Rgb colA{}, colB{};
-          const auto ea = probeTree(scene, sa, ca.primaryRay(row, column), colA);
-          const auto eb = probeTree(scene, sb, cb.primaryRay(row, column), colB);
+          const auto ea = probeTree(scene, sa, row, column, ca.primaryRay(row, column), colA);
+          const auto eb = probeTree(scene, sb, row, column, cb.primaryRay(row, column), colB);
           std::printf("  pixel %d %d: ", column, row);
           if (!ea || !eb) {
             std::printf("the probe does not trace this profile\n");

@@ -58,12 +58,12 @@ struct WalkState {
 };
 
 const char* profileName(Profile p) {
-  return p == Profile::Modern ? "modern" : "1991";
+  return p == Profile::Modern ? "modern" : p == Profile::Thesis ? "thesis" : "1991";
 }
 
 // The profiles walk can trace, in P's order (T41).
 const std::vector<Profile>& walkProfiles() {
-  static const std::vector<Profile> all{Profile::Listing1991, Profile::Modern};
+  static const std::vector<Profile> all{Profile::Listing1991, Profile::Modern, Profile::Thesis};
   return all;
 }
 
@@ -124,7 +124,7 @@ int runBench(const Scene& scene, const RenderSettings& settings, const OrbitView
   image.assign(first.columns(), first.rows());
   std::vector<double> coarse, full, single, cpuFull, cpuSingle;
   OrbitView view = start;
-  const WalkRenderer renderer(scene, settings.profile, settings.trace);
+  const WalkRenderer renderer(scene, settings.profile, settings.trace, settings.thesis);
   TraceStats stats;
   for (int k = 0; k < frames; ++k) {
     view.orbit(360.0 / std::max(frames, 1) * 0.25, 0.0);  // a quarter turn over the run
@@ -165,7 +165,7 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
   const auto& profiles = walkProfiles();
   WalkController ctl(start, lights, static_cast<int>(profiles.size()));
   if (std::find(profiles.begin(), profiles.end(), settings.profile) == profiles.end())
-    throw CLI::ValidationError("--profile", "prime walk traces the 1991 and modern profiles only");
+    throw CLI::ValidationError("--profile", "prime walk traces the 1991, modern and thesis profiles only");
   while (profiles[static_cast<std::size_t>(ctl.profile())] != settings.profile) ctl.nextProfile();
 
   display::LiveRgbFrame frame(start.width, start.height);
@@ -180,7 +180,7 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
       [&](const WalkState& st, std::uint64_t, const std::atomic<bool>& abandon) {
         const Clock::time_point t0 = Clock::now();
         const Scene lit = withLights(scene, st.lights);
-        const WalkRenderer renderer(lit, st.profile, settings.trace);
+        const WalkRenderer renderer(lit, st.profile, settings.trace, settings.thesis);
         const FreeCamera camera(st.view.camera());
         TraceStats stats;
         for (const int block : kProgressiveBlocks) {

@@ -8,8 +8,11 @@
 
 namespace prime {
 
-WalkRenderer::WalkRenderer(const Scene& scene, Profile profile, const TraceOptions& options) {
-  if (profile == Profile::Modern)
+WalkRenderer::WalkRenderer(const Scene& scene, Profile profile, const TraceOptions& options,
+                           const ThesisOptions& thesis) {
+  if (profile == Profile::Thesis)
+    thesis_.emplace(scene, options, thesis);
+  else if (profile == Profile::Modern)
     modern_.emplace(scene, options);
   else if (profile == Profile::Listing1991)
     t1991_.emplace(scene, options);
@@ -20,6 +23,8 @@ WalkRenderer::WalkRenderer(const Scene& scene, Profile profile, const TraceOptio
 bool WalkRenderer::pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out,
                         int threads, const std::atomic<bool>* abandon,
                         const std::function<void(int, int)>& rowsDone, TraceStats& stats) const {
+  if (thesis_)
+    return passWith(*thesis_, camera, block, firstBlock, out, threads, abandon, rowsDone, stats);
   return modern_
              ? passWith(*modern_, camera, block, firstBlock, out, threads, abandon, rowsDone, stats)
              : passWith(*t1991_, camera, block, firstBlock, out, threads, abandon, rowsDone, stats);

@@ -12,6 +12,7 @@
 
 #include "src/prime/render/renderer.h"
 #include "src/prime/render/tracer_modern.h"
+#include "src/prime/render/tracer_thesis.h"
 
 namespace prime {
 
@@ -19,7 +20,10 @@ class WalkRenderer {
  public:
   // Keeps a reference to `scene` (with the lights where the user put them).
   // Throws std::invalid_argument for a profile it cannot trace.
-  WalkRenderer(const Scene& scene, Profile profile, const TraceOptions& options);
+  // The thesis profile traces one ray per block with one fixed soft-shadow
+  // sample (SampleId{}): shadows from one point of each light, no noise.
+  WalkRenderer(const Scene& scene, Profile profile, const TraceOptions& options,
+               const ThesisOptions& thesis = {});
 
   // Renders pass `block` (firstBlock: the coarsest of this frame, sampling
   // everything) into `out` (camera-sized; it keeps the previous pass's
@@ -37,6 +41,7 @@ class WalkRenderer {
                 const std::function<void(int, int)>& rowsDone, TraceStats& stats) const;
   std::optional<Tracer1991> t1991_;
   std::optional<TracerModern> modern_;
+  std::optional<TracerThesis> thesis_;
 };
 
 }  // namespace prime

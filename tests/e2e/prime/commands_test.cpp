@@ -49,21 +49,21 @@ TEST(PrimeCommand, ModelErrorExitsNonZeroNamingFileLineAndField) {
   EXPECT_THAT(r.output, HasSubstr("obj/H1.txt:2: fDR[G]: expected a number, found \"x\""));
 }
 
-// R10: a window of no size and a ray of no direction are refused (exit 1)
-// instead of rendering one flat colour with exit 0.
+// R10: a window of no size and a ray of no direction are refused (a usage
+// error: exit 2) instead of rendering one flat colour with exit 0.
 TEST(PrimeCommand, ZeroWindowsAndRaysAreRefused) {
   prime::test::TempScene s;
   sphere(s);
   ASSERT_EQ(prime("model " + s.path().string()).status, 0);
   CommandResult r =
       prime("trace " + s.path().string() + " --no-window --window-left 1 2 3 --window-right 1 2 3");
-  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the window has zero width"));
   r = prime("trace " + s.path().string() + " --no-window --window-left 0 0 0");
-  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the window has zero height"));
   r = prime("probe " + s.path().string() + " --ray 500 500 -1500 0 0 0");
-  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the direction is 0 0 0"));
   EXPECT_FALSE(s.exists("graph_scr"));
 }
