@@ -52,8 +52,7 @@ std::string defaultB() {
 // The probe's record of one ray tree in the settings' profile; nothing for a
 // profile the probe does not trace.
 std::optional<std::vector<ProbeEvent>> probeTree(const Scene& scene, const RenderSettings& s,
-                                                 int row, int column, const Ray& ray,
-                                                 Rgb& colour) {
+                                                 int row, int column, const Ray& ray, Rgb& colour) {
   TraceStats stats;
   Probe probe;
   if (s.profile == Profile::Thesis) {

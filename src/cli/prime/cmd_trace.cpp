@@ -70,9 +70,9 @@ void printSummary(const RenderResult& r, const std::string& out) {
 // show it as the render did. Written after the graph file, each through
 // OutputFile; a companion that does not match its graph file's bytes is
 // ignored by view and export (G9).
-void writeCompanion(const std::string& graphPath, const io::GraphFile& graph,
-                    int screenWidth, int screenHeight, const std::string& profile,
-                    Placement at, const Palette& palette, bool inlinePalette) {
+void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, int screenWidth,
+                    int screenHeight, const std::string& profile, Placement at,
+                    const Palette& palette, bool inlinePalette) {
   GraphInfo info;
   const std::vector<std::uint8_t> bytes = io::toBytes(graph);
   info.graphBytes = bytes.size();
@@ -197,8 +197,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
       const std::string partial = target + ".partial";
       const bool quantizing = !quant->method.empty();
       // Found before the render: a missing directory, a directory, an input (M23).
-      for (const std::string& path : {target, partial, graphInfoPath(target),
-                                      graphInfoPath(partial), *png, *trueColourPng})
+      for (const std::string& path :
+           {target, partial, graphInfoPath(target), graphInfoPath(partial), *png, *trueColourPng})
         if (!path.empty()) io::checkOutputPath(path);
       options->settings.keepColours =
           !trueColourPng->empty() || quantizing;  // only these read them
@@ -242,7 +242,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
         const Palette quantized = quantizeGraph(result, *quant);
         if (display->palette.empty()) palette = quantized;
         io::writeGraphFile(target, result.graph);
-        writeCompanion(target, result.graph, screenW, screenH, options->profile, at, quantized, true);
+        writeCompanion(target, result.graph, screenW, screenH, options->profile, at, quantized,
+                       true);
       } else {
         io::writeGraphFile(target, result.graph);
         writeCompanion(target, result.graph, screenW, screenH, options->profile, at,

@@ -165,7 +165,8 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
   const auto& profiles = walkProfiles();
   WalkController ctl(start, lights, static_cast<int>(profiles.size()));
   if (std::find(profiles.begin(), profiles.end(), settings.profile) == profiles.end())
-    throw CLI::ValidationError("--profile", "prime walk traces the 1991, modern and thesis profiles only");
+    throw CLI::ValidationError("--profile",
+                               "prime walk traces the 1991, modern and thesis profiles only");
   while (profiles[static_cast<std::size_t>(ctl.profile())] != settings.profile) ctl.nextProfile();
 
   display::LiveRgbFrame frame(start.width, start.height);

@@ -6,8 +6,8 @@
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/run_inputs.h"
 #include "legacy_io/prime/model_builder.h"
-#include "src/prime/render/probe.h"
 #include "legacy_io/prime/model_commit.h"
+#include "src/prime/render/probe.h"
 #include "src/prime/scene/scene_loader.h"
 
 namespace prime::cli {

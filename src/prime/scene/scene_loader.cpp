@@ -1,7 +1,7 @@
 #include "src/prime/scene/scene_loader.h"
 
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <set>
 
