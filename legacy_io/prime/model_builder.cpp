@@ -1,6 +1,7 @@
 #include "legacy_io/prime/model_builder.h"
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -72,9 +73,19 @@ class Modeller {
   }
 
   void invert(PrimRecord& p, const std::string& file) {
+    // M12: say why. A matrix whose entries overflowed (scales or a
+    // translation too large for a double) is not blamed on a zero scale.
+    for (const auto& row : p.transform)
+      for (const double v : row)
+        if (!std::isfinite(v))
+          throw InputError(
+              {file, std::nullopt, std::nullopt}, "transformation", "a matrix of finite numbers",
+              "an entry that overflowed to " + std::string(std::isnan(v) ? "NaN" : "infinity") +
+                  " (a scale factor or a translation too large, or their product)");
     if (!inverse(p.transform, p.inverse))
-      throw InputError({file, std::nullopt, std::nullopt}, "transformation",
-                       "an invertible matrix (no zero scale factor)", "a singular matrix");
+      throw InputError({file, std::nullopt, std::nullopt}, "transformation", "an invertible matrix",
+                       "a singular matrix (a zero scale factor, or scale factors so small that "
+                       "their product underflows to zero)");
   }
 
   // AddPrim: prim/<opcode><n>.txt -> a new PrimFile record.

@@ -5,6 +5,7 @@
 #include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
 #include "src/cli/prime/scene_check.h"
+#include "src/prime/scene/scene_loader.h"
 
 namespace prime::cli {
 
@@ -50,6 +51,14 @@ void addModelCommand(CLI::App& app, Action& action) {
       for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
       // The values the listing turns into NaN or invisible objects (prime check).
       for (const auto& p : checkHues(scene)) std::cerr << "prime: warning: " << p.message << "\n";
+      // M34: shared subtrees whose expansion is large, said when the scene
+      // is built, not only when it is traced. A scene the renderer would
+      // refuse is reported by trace, with its own message.
+      try {
+        for (const auto& w : sharedSubtreeWarnings(loadScene(scene)))
+          std::cerr << "prime: warning: " << w << "\n";
+      } catch (const io::InputError&) {
+      }
       if (!*quiet)
         std::cout << "modelled " << *dir << ": " << model.objects.size() << " object file(s), "
                   << model.list.objects.size() << " in the object list, "

@@ -40,6 +40,22 @@ TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
   EXPECT_TRUE(s.exists("graph_scr"));
 }
 
+// M34: an object whose entries share subtrees (each of 20 unions takes the
+// next entry twice: 2^21 - 1 visits walked per reference) is warned about
+// when it is modelled, not only when it is traced; the model still succeeds.
+TEST(PrimeCommand, ModelWarnsAboutLargeSharedSubtrees) {
+  prime::test::TempScene s;
+  sphere(s);
+  std::string d = "21\n";
+  for (int i = 0; i < 20; ++i)
+    d += "+ " + std::to_string(i + 1) + " " + std::to_string(i + 1) + "\n";
+  s.write("obj/D1.txt", d + "S 1\nNULL\n");
+  const CommandResult r = prime("model " + s.path().string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("warning: object 1 (obj/O1): its 21 CSG entries share subtrees"));
+  EXPECT_THAT(r.output, HasSubstr("2097151 entry visits per ray"));
+}
+
 TEST(PrimeCommand, ModelErrorExitsNonZeroNamingFileLineAndField) {
   prime::test::TempScene s;
   sphere(s);

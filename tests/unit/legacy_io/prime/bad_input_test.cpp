@@ -286,6 +286,20 @@ TEST(BadInput, SingularTransform) {
   s.write("prim/S1.txt", "S\n60 0 60\n50 50 0\n0 0 0\n0 0 0\n1 1\n0\n");
   EXPECT_THAT(modelError(s),
               HasSubstr("prim/S1.txt: transformation: expected an invertible matrix"));
+  EXPECT_THAT(modelError(s), HasSubstr("a zero scale factor"));
+}
+
+// M12: a scale too large for a double overflows the matrix to infinity; the
+// message says so instead of blaming a zero scale (issue 17). 1e200 * 1e200
+// overflows in Scale's products; the text parser accepts each number.
+TEST(BadInput, OverflowingTransformIsNotBlamedOnAZeroScale) {
+  test::TempScene s;
+  goodScene(s);
+  s.write("prim/S1.txt", "S\n1e200 1e200 1e200\n1e300 50 0\n0 0 0\n1e200 1e200 1e200\n1 1\n0\n");
+  const std::string msg = modelError(s);
+  EXPECT_THAT(msg, HasSubstr("prim/S1.txt: transformation: expected a matrix of finite numbers"));
+  EXPECT_THAT(msg, HasSubstr("overflowed to"));
+  EXPECT_THAT(msg, Not(HasSubstr("zero scale")));
 }
 
 }  // namespace
