@@ -34,6 +34,9 @@ void addExportPovCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
+    // --format is bound to *format: the callback keeps it alive as long as
+    // the command (an unused capture would be dropped, leaving it dangling).
+    static_cast<void>(format);
     action = [=] {
       prime::malone::ReadOptions read;
       read.comments = *comments;

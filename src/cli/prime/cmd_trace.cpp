@@ -190,6 +190,9 @@ void addTraceCommand(CLI::App& app, Action& action) {
   addRenderOptions(cmd, *options);
   addQuantizeOptions(cmd, *quant, "the graph file (its companion file carries the palette)");
   cmd->callback([=, &action] {
+    // --format is bound to *format: the callback keeps it alive as long as
+    // the command (an unused capture would be dropped, leaving it dangling).
+    static_cast<void>(format);
     action = [=] {
       finishRenderOptions(*options);
       const Scene scene = prepareScene(*dir, options->model);
