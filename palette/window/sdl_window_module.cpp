@@ -51,7 +51,7 @@ class SdlWindow final : public WindowBackend {
     // window behind our back.
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     SDL_Window* window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                          width, height, SDL_WINDOW_SHOWN);
+                                          width, height, SDL_WINDOW_HIDDEN | SDL_WINDOW_RESIZABLE);
     if (window == nullptr) {
       why = std::string("SDL cannot open a window: ") + SDL_GetError();
       SDL_Quit();
@@ -86,6 +86,24 @@ class SdlWindow final : public WindowBackend {
     SDL_SetWindowSize(window_, width, height);
     SDL_SetWindowPosition(window_, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED);
   }
+
+  void show() override { SDL_ShowWindow(window_); }
+
+  bool usableBounds(int& width, int& height) override {
+    int display = SDL_GetWindowDisplayIndex(window_);
+    if (display < 0) display = 0;
+    SDL_Rect r;
+    if (SDL_GetDisplayUsableBounds(display, &r) != 0 || r.w <= 0 || r.h <= 0) return false;
+    width = r.w;
+    height = r.h;
+    return true;
+  }
+
+  void setFullscreen(bool on) override {
+    SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  }
+
+  void size(int& width, int& height) override { SDL_GetWindowSize(window_, &width, &height); }
 
   bool setFrame(const std::uint32_t* pixels, int width, int height, int pitch) override {
     if (frame_ != nullptr) SDL_FreeSurface(frame_);
@@ -201,6 +219,8 @@ class SdlWindow final : public WindowBackend {
       case SDLK_s:
       case SDLK_F12:
         return Key::Screenshot;
+      case SDLK_F11:
+        return Key::Fullscreen;
       case SDLK_LEFT:
         return Key::Left;
       case SDLK_RIGHT:
