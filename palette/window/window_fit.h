@@ -99,7 +99,7 @@ class RowPacer {
       last_ = now;
     }
     const double elapsed = std::max(0.0, now - last_);
-    last_ = now;
+    last_ = std::max(last_, now);
     shown_ =
         std::min(static_cast<double>(rowsDone), shown_ + std::max(0.0, rowsPerSecond) * elapsed);
     shown_ = std::max(shown_, 0.0);
