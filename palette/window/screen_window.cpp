@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <climits>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -43,13 +44,12 @@ namespace {
 namespace fs = std::filesystem;
 using OpenWindow = decltype(&prime_window_sdl_open);
 
-constexpr int kMaxZoom = 8;
 constexpr int kMaxWindowSide = 16384;
 
+// The zoom a window may have before the display is known: 1..kMaxZoom and
+// within what X11 allows.
 int clampZoom(int zoom, int w, int h) {
-  zoom = std::clamp(zoom, 1, kMaxZoom);
-  while (zoom > 1 && (w * zoom > kMaxWindowSide || h * zoom > kMaxWindowSide)) --zoom;
-  return zoom;
+  return clampZoomToDisplay(zoom, {w, h}, {kMaxWindowSide, kMaxWindowSide});
 }
 
 std::string dlerrorText() {
@@ -121,48 +121,107 @@ struct ScreenWindow::Impl {
   WindowConfig config;
   int zoom;
   std::string status;
-  // The zoomed picture as sent to the display: XRGB8888 (0x00RRGGBB),
-  // frameWidth pixels a row. Declared before `window`, which shows it.
+  // The picture as the frame last gave it, unscaled, XRGB8888: what --pace
+  // holds back and what a new window size is scaled from.
+  std::vector<std::uint32_t> latest;
+  DirtyRegion unshown;  // the part of `latest` not yet in `frame`
+  int rowLimit = INT_MAX;
+  // The window's pixels as sent to the display: XRGB8888 (0x00RRGGBB),
+  // frameWidth pixels a row, the picture at `fit`, black around it. Declared
+  // before `window`, which shows it.
   std::vector<std::uint32_t> frame;
   int frameWidth = 0, frameHeight = 0;
+  Rect fit;
+  std::vector<int> sourceColumn;  // the picture column each column of `fit` shows
   std::unique_ptr<module::WindowBackend> window;
   std::vector<std::uint32_t> changedPixels;  // the frame's changed rectangle, unzoomed
+  Size display;                              // usable bounds, 0 x 0 if unknown
+  bool fullscreen = false;
   bool exposed = false;
   bool quit = false;
   std::string title;
   std::function<bool(const module::Event&)> inputHandler;
 
+  Size picture() const { return {screen.width(), screen.height()}; }
+
   Impl(LiveFrame& s, WindowConfig c) : screen(s), config(std::move(c)) {
     zoom = clampZoom(config.zoom, screen.width(), screen.height());
+    if (config.paced) rowLimit = 0;
+    latest.assign(static_cast<std::size_t>(screen.width()) * screen.height(), 0);
     const OpenWindow openWindow = loadModule();
     char why[1024] = "";
     window.reset(openWindow(module::kInterfaceVersion, screen.width() * zoom,
                             screen.height() * zoom, why, sizeof why));
     if (window == nullptr) throw WindowError(why);
-    rebuildFrame();
+    // The zoom within the display (G23), before the window is shown.
+    if (int w = 0, h = 0; window->usableBounds(w, h)) display = {w, h};
+    const int fitting = clampZoomToDisplay(zoom, picture(), display);
+    if (fitting != zoom)
+      std::cerr << "prime: --zoom " << zoom << " reduced to " << fitting
+                << ": the window must fit the display (" << display.w << " x " << display.h
+                << ")\n";
+    zoom = fitting;
+    const Size size = windowSizeFor(picture(), zoom, display);
+    window->resize(size.w, size.h);
+    rebuildFrame(size);
+    screen.markAllDirty();
+    window->show();
+    if (config.fullscreen) setFullscreen(true);
     updateTitle();
   }
 
-  void rebuildFrame() {
-    frameWidth = screen.width() * zoom;
-    frameHeight = screen.height() * zoom;
+  // A frame of `size` pixels (the window's), the picture fitted in it.
+  void rebuildFrame(Size size) {
+    size.w = std::max(size.w, 1);
+    size.h = std::max(size.h, 1);
+    frameWidth = size.w;
+    frameHeight = size.h;
+    fit = fitPicture(picture(), size, config.scale);
     try {
       frame.assign(static_cast<std::size_t>(frameWidth) * frameHeight, 0);
+      sourceColumn.resize(static_cast<std::size_t>(fit.w));
     } catch (const std::bad_alloc&) {
       throw WindowError("no memory for the window's picture (" + std::to_string(frameWidth) +
                         " x " + std::to_string(frameHeight) + ")");
     }
+    for (int d = 0; d < fit.w; ++d)
+      sourceColumn[static_cast<std::size_t>(d)] =
+          static_cast<int>(static_cast<long long>(d) * screen.width() / fit.w);
     if (!window->setFrame(frame.data(), frameWidth, frameHeight,
                           frameWidth * static_cast<int>(sizeof(std::uint32_t))))
       throw WindowError(window->error());
-    screen.markAllDirty();
+    // Everything the display had is shown again from `latest`.
+    unshown.mark({0, 0, screen.width(), screen.height()});
+  }
+
+  // The window's size changed (the user, the window manager, fullscreen):
+  // the picture is fitted again.
+  void followWindowSize() {
+    int w = 0, h = 0;
+    window->size(w, h);
+    if (w > 0 && h > 0 && (w != frameWidth || h != frameHeight)) {
+      rebuildFrame({w, h});
+      updateTitle();
+    }
+  }
+
+  void setFullscreen(bool on) {
+    fullscreen = on;
+    window->setFullscreen(on);
+    followWindowSize();
+    updateTitle();
   }
 
   void updateTitle() {
     std::string t = "PRIME";
     if (!config.caption.empty()) t += " - " + config.caption;
     if (const std::string about = screen.describe(); !about.empty()) t += " - " + about;
-    if (zoom != 1) t += " - zoom " + std::to_string(zoom) + "x";
+    if (fullscreen)
+      t += " - fullscreen";
+    else if (fit.w != screen.width() * zoom || fit.h != screen.height() * zoom)
+      t += " - fitted";
+    else if (zoom != 1)
+      t += " - zoom " + std::to_string(zoom) + "x";
     if (!status.empty()) t += " - " + status;
     if (t != title) {
       title = t;
@@ -170,35 +229,62 @@ struct ScreenWindow::Impl {
     }
   }
 
-  // Converts the changed band into `frame` and sends it to the display.
+  // Scales picture rectangle `r` of `latest` into `frame`; returns the
+  // window rectangle it covers.
+  Rect scaleIntoFrame(const Rect& r) {
+    const int pw = screen.width(), ph = screen.height();
+    const int x0 = firstShowing(r.x, pw, fit.w), x1 = firstShowing(r.x + r.w, pw, fit.w);
+    const int y0 = firstShowing(r.y, ph, fit.h), y1 = firstShowing(r.y + r.h, ph, fit.h);
+    int previous = -1;
+    for (int dy = y0; dy < y1; ++dy) {
+      const int sy = static_cast<int>(static_cast<long long>(dy) * ph / fit.h);
+      std::uint32_t* out = frame.data() + static_cast<std::size_t>(fit.y + dy) * frameWidth + fit.x;
+      if (sy == previous) {
+        std::copy_n(out - frameWidth + x0, x1 - x0, out + x0);
+        continue;
+      }
+      previous = sy;
+      const std::uint32_t* src = latest.data() + static_cast<std::size_t>(sy) * pw;
+      for (int dx = x0; dx < x1; ++dx) out[dx] = src[sourceColumn[static_cast<std::size_t>(dx)]];
+    }
+    return {fit.x + x0, fit.y + y0, x1 - x0, y1 - y0};
+  }
+
+  // Takes the frame's changes into `latest`, scales what may be shown (rows
+  // above the limit) into `frame` and sends it to the display.
   void refresh(bool everything) {
     if (!window->ready()) return;  // not mapped yet: the changes wait for EXPOSED
     const Rect changed = screen.takeDirty(changedPixels);
     if (!changed.empty()) {
-      const Rect& r = changed;
-      const auto line = [&](int zy) {
-        return frame.data() + static_cast<std::size_t>(zy) * frameWidth + r.x * zoom;
-      };
-      for (int y = 0; y < r.h; ++y) {
-        const std::uint32_t* src = changedPixels.data() + static_cast<std::size_t>(y) * r.w;
-        std::uint32_t* out = line((r.y + y) * zoom);
-        for (int x = 0; x < r.w; ++x) std::fill_n(out + x * zoom, zoom, src[x]);
-        for (int zy = 1; zy < zoom; ++zy) std::copy_n(out, r.w * zoom, line((r.y + y) * zoom + zy));
-      }
+      for (int y = 0; y < changed.h; ++y)
+        std::copy_n(
+            changedPixels.data() + static_cast<std::size_t>(y) * changed.w, changed.w,
+            latest.data() + static_cast<std::size_t>(changed.y + y) * screen.width() + changed.x);
+      unshown.mark(changed);
     }
-    if (changed.empty() && !everything) return;
+    Rect sent;
+    if (unshown.any()) {
+      const Rect r = unshown.take();
+      const int limit = std::clamp(rowLimit, 0, screen.height());
+      const Rect now = intersect(r, {0, 0, screen.width(), limit});
+      const Rect later = intersect(r, {0, limit, screen.width(), screen.height() - limit});
+      if (!later.empty()) unshown.mark(later);
+      if (!now.empty()) sent = scaleIntoFrame(now);
+    }
     if (everything)
       window->present(0, 0, frameWidth, frameHeight);
-    else
-      window->present(changed.x * zoom, changed.y * zoom, changed.w * zoom, changed.h * zoom);
+    else if (!sent.empty())
+      window->present(sent.x, sent.y, sent.w, sent.h);
   }
 
   void setZoom(int z) {
-    z = clampZoom(z, screen.width(), screen.height());
-    if (z == zoom) return;
+    z = clampZoomToDisplay(clampZoom(z, screen.width(), screen.height()), picture(), display);
+    if (fullscreen) setFullscreen(false);
     zoom = z;
-    window->resize(screen.width() * zoom, screen.height() * zoom);
-    rebuildFrame();
+    const Size size = windowSizeFor(picture(), zoom, display);
+    if (size.w == frameWidth && size.h == frameHeight) return updateTitle();
+    window->resize(size.w, size.h);
+    rebuildFrame(size);
     updateTitle();
   }
 
@@ -228,6 +314,9 @@ struct ScreenWindow::Impl {
       case Key::Digit:
         setZoom(e.digit);
         return;
+      case Key::Fullscreen:
+        setFullscreen(!fullscreen);
+        return;
       case Key::Other:
       case Key::Left:
       case Key::Right:
@@ -253,6 +342,7 @@ struct ScreenWindow::Impl {
       case module::Event::Type::Redraw:
         exposed = exposed || e.exposed;
         everything = true;
+        followWindowSize();
         break;
       case module::Event::Type::Other:
       case module::Event::Type::MouseMotion:
@@ -334,6 +424,10 @@ unsigned long ScreenWindow::nativeId() const {
 
 int ScreenWindow::zoom() const {
   return impl_->zoom;
+}
+
+void ScreenWindow::setRowLimit(int rows) {
+  impl_->rowLimit = rows;
 }
 std::string ScreenWindow::saveScreenshot() {
   return impl_->saveScreenshot();

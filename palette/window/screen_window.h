@@ -4,7 +4,12 @@
 // the band of rows that changed, so what the X server shows is exactly what
 // the frame converted.
 //
-// Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, S or F12
+// The zoom never makes the window larger than the display; the window can be
+// resized, and F11 (or --fullscreen) shows the picture fullscreen, both
+// scaled by fitPicture (window_fit.h, G23).
+//
+// Keys: Esc quit (or abort a render), + / - zoom, 1..8 set zoom, F11
+// fullscreen, S or F12
 // save a screenshot PNG, and the frame's own keys (PRIME: P next palette, D
 // next DAC conversion). The close button, SIGINT and SIGTERM count as Esc.
 //
@@ -20,6 +25,7 @@
 #include <vector>
 
 #include "palette/window/live_frame.h"
+#include "palette/window/window_fit.h"
 
 namespace prime::display {
 
@@ -34,8 +40,11 @@ std::optional<std::string> headlessReason(bool noWindowFlag);
 
 struct WindowConfig {
   std::string caption;  // first part of the title: scene or file
-  int zoom = 1;         // 1..8
+  int zoom = 1;         // 1..8, reduced to what fits the display (G23)
   std::string screenshotDir = ".";
+  bool fullscreen = false;               // --fullscreen (F11 toggles)
+  ScaleMode scale = ScaleMode::Integer;  // --scale: fullscreen and resized windows
+  bool paced = false;                    // --pace: no row shown before setRowLimit
 };
 
 class ScreenWindow {
@@ -63,6 +72,9 @@ class ScreenWindow {
   // The X11 window id (0 on other video drivers), for tools such as xwd.
   unsigned long nativeId() const;
   int zoom() const;
+  // Only rows [0, rows) of the frame reach the display; the others wait
+  // (--pace, G24). Any thread but the window's is wrong: call it from there.
+  void setRowLimit(int rows);
   // Saves the window's pixels, as sent to the display, as a PNG in the
   // screenshot directory; returns the path.
   std::string saveScreenshot();

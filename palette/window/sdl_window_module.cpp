@@ -51,7 +51,7 @@ class SdlWindow final : public WindowBackend {
     // window behind our back.
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     SDL_Window* window = SDL_CreateWindow("PRIME", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                          width, height, SDL_WINDOW_SHOWN);
+                                          width, height, SDL_WINDOW_HIDDEN | SDL_WINDOW_RESIZABLE);
     if (window == nullptr) {
       why = std::string("SDL cannot open a window: ") + SDL_GetError();
       SDL_Quit();
@@ -86,6 +86,52 @@ class SdlWindow final : public WindowBackend {
     SDL_SetWindowSize(window_, width, height);
     SDL_SetWindowPosition(window_, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED);
   }
+
+  void show() override { SDL_ShowWindow(window_); }
+
+  bool usableBounds(int& width, int& height) override {
+    int display = SDL_GetWindowDisplayIndex(window_);
+    if (display < 0) display = 0;
+    SDL_Rect r;
+    if (SDL_GetDisplayUsableBounds(display, &r) != 0 || r.w <= 0 || r.h <= 0) return false;
+    width = r.w;
+    height = r.h;
+    return true;
+  }
+
+  // SDL asks the window manager (_NET_WM_STATE_FULLSCREEN); without one (a
+  // bare X server such as Xvfb) nothing would happen, and SDL would still
+  // report the display's size. So on X11 without a window manager the window
+  // is made borderless and placed over the display's bounds by hand (G23).
+  void setFullscreen(bool on) override {
+    if (on == fullscreen_) return;
+    if (on) {
+      SDL_GetWindowPosition(window_, &windowed_.x, &windowed_.y);
+      SDL_GetWindowSize(window_, &windowed_.w, &windowed_.h);
+      int display = SDL_GetWindowDisplayIndex(window_);
+      if (display < 0) display = 0;
+      SDL_Rect b{0, 0, 0, 0};
+      SDL_GetDisplayBounds(display, &b);
+      if (haveWindowManager() || b.w <= 0 || b.h <= 0) {
+        SDL_SetWindowFullscreen(window_, SDL_WINDOW_FULLSCREEN_DESKTOP);
+      } else {
+        SDL_SetWindowBordered(window_, SDL_FALSE);
+        SDL_SetWindowPosition(window_, b.x, b.y);
+        SDL_SetWindowSize(window_, b.w, b.h);
+        byHand_ = true;
+      }
+    } else if (byHand_) {
+      SDL_SetWindowBordered(window_, SDL_TRUE);
+      SDL_SetWindowSize(window_, windowed_.w, windowed_.h);
+      SDL_SetWindowPosition(window_, windowed_.x, windowed_.y);
+      byHand_ = false;
+    } else {
+      SDL_SetWindowFullscreen(window_, 0);
+    }
+    fullscreen_ = on;
+  }
+
+  void size(int& width, int& height) override { SDL_GetWindowSize(window_, &width, &height); }
 
   bool setFrame(const std::uint32_t* pixels, int width, int height, int pitch) override {
     if (frame_ != nullptr) SDL_FreeSurface(frame_);
@@ -166,6 +212,22 @@ class SdlWindow final : public WindowBackend {
     return true;
   }
 
+  // Whether an X11 window manager runs (it owns the WM_Sn selection, ICCCM
+  // 4.3); true on any other video driver, which then does it itself.
+  bool haveWindowManager() const {
+    SDL_SysWMinfo info;
+    SDL_VERSION(&info.version);
+    if (SDL_GetWindowWMInfo(window_, &info) != SDL_TRUE) return true;
+#if defined(SDL_VIDEO_DRIVER_X11)
+    if (info.subsystem == SDL_SYSWM_X11) {
+      Display* d = info.info.x11.display;
+      const std::string name = "WM_S" + std::to_string(DefaultScreen(d));
+      return XGetSelectionOwner(d, XInternAtom(d, name.c_str(), False)) != None;
+    }
+#endif
+    return true;
+  }
+
   unsigned long nativeId() const override {
     SDL_SysWMinfo info;
     SDL_VERSION(&info.version);
@@ -201,6 +263,8 @@ class SdlWindow final : public WindowBackend {
       case SDLK_s:
       case SDLK_F12:
         return Key::Screenshot;
+      case SDLK_F11:
+        return Key::Fullscreen;
       case SDLK_LEFT:
         return Key::Left;
       case SDLK_RIGHT:
@@ -226,6 +290,9 @@ class SdlWindow final : public WindowBackend {
 
   SDL_Window* window_;
   SDL_Surface* frame_ = nullptr;  // wraps the executable's picture
+  bool fullscreen_ = false;
+  bool byHand_ = false;            // fullscreen without a window manager's help
+  SDL_Rect windowed_{0, 0, 0, 0};  // where the window was before fullscreen
   std::string error_;
 };
 

@@ -15,7 +15,9 @@ namespace prime::display::module {
 
 // Changes whenever WindowBackend, Event or the factory change: a module from
 // another build refuses to open rather than being called wrongly.
-inline constexpr int kInterfaceVersion = 2;  // 2: mouse, arrows, letters (G20)
+// 2: mouse, arrows, letters (G20). 3: hidden until show(), resizable,
+// fullscreen, the display's usable size, F11 (G23).
+inline constexpr int kInterfaceVersion = 3;
 
 // The keys the window knows, already sorted by meaning.
 enum class Key {
@@ -32,7 +34,8 @@ enum class Key {
   Up,
   Down,
   Home,
-  Zero,  // 0 and 9 (Digit stays 1..8, the zoom keys): Event::digit 0 or 9
+  Zero,        // 0 and 9 (Digit stays 1..8, the zoom keys): Event::digit 0 or 9
+  Fullscreen,  // F11
 };
 
 struct Event {
@@ -69,6 +72,17 @@ class WindowBackend {
   // manager a grown window would otherwise be kept inside the display from
   // where it was, and come out smaller).
   virtual void resize(int width, int height) = 0;
+  // The window opens hidden (so that its size can follow the display's
+  // first); this maps it.
+  virtual void show() = 0;
+  // The usable bounds of the display the window is on (without panels and
+  // docks), in pixels; false when SDL cannot tell.
+  virtual bool usableBounds(int& width, int& height) = 0;
+  // Fullscreen at the desktop's resolution (true) or back to a window.
+  virtual void setFullscreen(bool on) = 0;
+  // The window's size now, in pixels (after a resize by the user, or
+  // fullscreen).
+  virtual void size(int& width, int& height) = 0;
   // From now on the window shows `pixels`: width x height, XRGB8888
   // (0x00RRGGBB), `pitch` bytes a row. The memory stays the caller's and must
   // live until the next setFrame or the end of the window. False (why in
@@ -89,9 +103,9 @@ class WindowBackend {
 
 }  // namespace prime::display::module
 
-// The module's only exported symbol. Opens a window of width x height pixels
-// titled "PRIME"; on failure returns nullptr with the reason, NUL-terminated,
-// in error[0 .. errorSize). `interfaceVersion` is the caller's
+// The module's only exported symbol. Opens a hidden, resizable window of
+// width x height pixels titled "PRIME" (WindowBackend::show maps it); on failure returns nullptr
+// with the reason, NUL-terminated, in error[0 .. errorSize). `interfaceVersion` is the caller's
 // kInterfaceVersion. (Visible even though the module hides everything else.)
 extern "C" __attribute__((visibility("default"))) prime::display::module::WindowBackend*
 prime_window_sdl_open(int interfaceVersion, int width, int height, char* error,

@@ -3,11 +3,15 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
+#include <climits>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <sstream>
+#include <string>
 #include <thread>
 
 namespace prime::cli {
@@ -48,17 +52,37 @@ class SignalsAbort {
 
 }  // namespace
 
+void parsePace(const std::string& text, LiveOptions& o) {
+  if (text == "1991") {
+    o.pace1991 = true;
+    return;
+  }
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(v > 0.0) || !std::isfinite(v))
+    throw CLI::ValidationError(
+        "--pace", "expected rows a second (a number > 0) or 1991, found '" + text + "'");
+  o.pace = v;
+}
+
 int interruptingSignal() {
   return gSignal;
 }
 
 LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     : options_(std::move(options)), tty_(isatty(STDERR_FILENO) && !options_.quiet) {
+  width_ = frame.width();
   auto headless = display::headlessReason(options_.noWindow);
   if (!headless) {
     try {
       window_ = std::make_unique<display::ScreenWindow>(
-          frame, display::WindowConfig{options_.caption, options_.zoom, "."});
+          frame, display::WindowConfig{options_.caption, options_.zoom, ".", options_.fullscreen,
+                                       options_.scale, paced()});
     } catch (const std::exception& e) {
       headless = e.what();
       window_.reset();
@@ -84,6 +108,7 @@ std::function<void(int, int, std::uint64_t)> LiveRender::progress() {
   return [this, start](int done, int rows, std::uint64_t rays) {
     rowsDone_ = done;
     rows_ = rows;
+    rays_ = rays;
     if (!tty_) return;
     const double s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -107,14 +132,28 @@ void LiveRender::run(const std::function<void()>& render) {
       }
       done = true;
     });
-    while (!done) {
+    // --pace (G24): the finished rows reach the display no faster than the
+    // pace; after the render the display catches up at it (Esc stops that).
+    display::RowPacer pacer;
+    const auto start = std::chrono::steady_clock::now();
+    int shown = 0;
+    const auto pace = [&] {
+      if (!paced()) return;
+      const double now =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      shown = pacer.advance(rowsDone_, now, rowsPerSecond());
+      window_->setRowLimit(options_.firstRow + shown);
+    };
+    while (!done || (paced() && !abort_ && shown < rowsDone_)) {
+      pace();
       if (window_->poll(30)) abort_ = true;  // Esc, close, Ctrl-C: ExitOnEsc
-      const int d = rowsDone_, n = rows_;
+      const int d = paced() ? shown : rowsDone_.load(), n = rows_;
       window_->setStatus(abort_ ? "aborting"
                                 : "rows " + std::to_string(d) + "/" + std::to_string(n) + " (" +
                                       std::to_string(n > 0 ? 100 * d / n : 0) + "%)");
     }
     worker.join();
+    if (paced()) window_->setRowLimit(INT_MAX);  // an abort shows what was drawn
     if (tty_) std::fprintf(stderr, "\n");
     if (error) std::rethrow_exception(error);
   } else {
@@ -122,6 +161,21 @@ void LiveRender::run(const std::function<void()>& render) {
     render();
     if (tty_) std::fprintf(stderr, "\n");
   }
+}
+
+bool LiveRender::paced() const {
+  return options_.pace > 0.0 || options_.pace1991;
+}
+
+double LiveRender::rowsPerSecond() const {
+  if (!options_.pace1991) return options_.pace;
+  // The rays each row took so far (before the first row: one a pixel), at
+  // the 1991 rate (G24).
+  const int d = rowsDone_;
+  const std::uint64_t rays = rays_;
+  const double raysPerRow =
+      d > 0 && rays > 0 ? static_cast<double>(rays) / d : static_cast<double>(std::max(width_, 1));
+  return kRaysPerSecond1991 / raysPerRow;
 }
 
 void LiveRender::waitForEsc(const std::string& status) {

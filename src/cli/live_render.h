@@ -15,6 +15,7 @@
 
 #include "palette/window/live_frame.h"
 #include "palette/window/screen_window.h"
+#include "palette/window/window_fit.h"
 
 namespace prime::cli {
 
@@ -26,7 +27,20 @@ struct LiveOptions {
   std::string caption;      // the window title's first part: scene or file
   std::string commandName;  // for messages: "trace"
   std::string keys;         // the frame's own keys, for the first message ("P palette, D DAC")
+  bool fullscreen = false;  // --fullscreen
+  display::ScaleMode scale = display::ScaleMode::Integer;  // --scale
+  // --pace: rows a second shown at most (0: as fast as they come); `pace1991`
+  // estimates it from the rays each row took (G24).
+  double pace = 0.0;
+  bool pace1991 = false;
+  int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
 };
+
+// The value of --pace: a number of rows a second (> 0), or "1991" (G24).
+// Sets o.pace or o.pace1991; a CLI::ValidationError for anything else.
+void parsePace(const std::string& text, LiveOptions& o);
+// The 1991 estimate of rays a second (G24).
+inline constexpr double kRaysPerSecond1991 = 300.0;
 
 // The signal (SIGINT, SIGTERM) that aborted a headless render, or 0: main()
 // exits with 128 + it, as a shell reports a process the signal ended.
@@ -62,10 +76,15 @@ class LiveRender {
   void waitForEsc(const std::string& status);
 
  private:
+  bool paced() const;
+  double rowsPerSecond() const;
+
   LiveOptions options_;
   std::unique_ptr<display::ScreenWindow> window_;
   std::atomic<bool> abort_{false};
   std::atomic<int> rowsDone_{0}, rows_{0};
+  std::atomic<std::uint64_t> rays_{0};
+  int width_ = 0;  // the frame's
   bool tty_ = false;
 };
 

@@ -182,6 +182,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
       "--palette implies)");
   addDacOption(cmd, *display);
   addWindowOptions(cmd, *display);
+  auto pace = std::make_shared<std::string>();
+  cmd->add_option("--pace", *pace,
+                  "Show the finished rows no faster than this many a second, or 1991 for an "
+                  "estimate of the original's speed (the render may finish first; the window "
+                  "catches up, Esc stops it)");
   cmd->add_flag("--no-wait", *noWait,
                 "Close the window when the render is done instead of waiting for Esc");
   cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
@@ -216,8 +221,13 @@ void addTraceCommand(CLI::App& app, Action& action) {
 
       // The emulated screen, in a window if there can be one.
       display::LiveScreen screen(screenW, screenH, windowPalettes(palette), dacOf(*display));
-      LiveRender live(screen, {display->noWindow, *quiet, *noWait, display->zoom, *dir, "trace",
-                               "P palette, D DAC"});
+      LiveOptions liveOptions{display->noWindow, *quiet, *noWait, display->zoom, *dir, "trace",
+                              "P palette, D DAC"};
+      liveOptions.fullscreen = display->fullscreen;
+      liveOptions.scale = scaleOf(*display);
+      if (!pace->empty()) parsePace(*pace, liveOptions);
+      liveOptions.firstRow = at.top;  // the image's row 0 on the screen
+      LiveRender live(screen, liveOptions);
 
       // Which rows are done (rowDone runs on one thread, the render's caller).
       std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);

@@ -41,7 +41,7 @@ void addViewCommand(CLI::App& app, Action& action) {
       if (!headless) {
         try {
           window = std::make_unique<display::ScreenWindow>(
-              live, display::WindowConfig{*file, o->zoom, "."});
+              live, display::WindowConfig{*file, o->zoom, ".", o->fullscreen, scaleOf(*o)});
         } catch (const display::WindowError& e) {
           headless = e.what();
         }

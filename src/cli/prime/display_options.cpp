@@ -43,8 +43,20 @@ void addGeometryOptions(CLI::App* cmd, DisplayOptions& o) {
 void addWindowOptions(CLI::App* cmd, DisplayOptions& o) {
   cmd->add_flag("--no-window", o.noWindow,
                 "Do not open a window (also the case when there is no DISPLAY)");
-  cmd->add_option("--zoom", o.zoom, "Window zoom, an integer 1..8 (keys + and - change it)")
+  cmd->add_option("--zoom", o.zoom,
+                  "Window zoom, an integer 1..8, reduced to fit the display (keys + and - change "
+                  "it)")
       ->check(CLI::Range(1, 8));
+  cmd->add_flag("--fullscreen", o.fullscreen, "Show the picture fullscreen (key F11 toggles)");
+  cmd->add_option("--scale", o.scale,
+                  "How a fullscreen or resized window scales the picture: integer (the largest "
+                  "whole factor, black borders; default) or aspect (fills one side, nearest "
+                  "neighbour)")
+      ->check(CLI::IsMember({"integer", "aspect"}));
+}
+
+display::ScaleMode scaleOf(const DisplayOptions& o) {
+  return o.scale == "aspect" ? display::ScaleMode::Aspect : display::ScaleMode::Integer;
 }
 
 DacTo8 dacOf(const DisplayOptions& o) {

@@ -13,6 +13,7 @@
 #include "palette/prime/graph_info.h"
 #include "palette/prime/palettes.h"
 #include "palette/prime/screen.h"
+#include "palette/window/window_fit.h"
 
 namespace prime::cli {
 
@@ -23,6 +24,8 @@ struct DisplayOptions {
   std::vector<int> at;         // --at X Y
   std::vector<int> screen;     // --screen W H (view, export)
   int zoom = 1;
+  bool fullscreen = false;        // --fullscreen
+  std::string scale = "integer";  // --scale integer|aspect (G23)
   bool noWindow = false;
   bool noInfo = false;  // --no-info: ignore the graph file's companion (G8)
 };
@@ -32,8 +35,9 @@ void addDacOption(CLI::App* cmd, DisplayOptions& o);
 void addAreaOption(CLI::App* cmd, DisplayOptions& o, const std::string& name);
 // --screen W H and --at X Y, for a graph file whose screen is not known.
 void addGeometryOptions(CLI::App* cmd, DisplayOptions& o);
-// --no-window and --zoom.
+// --no-window, --zoom, --fullscreen and --scale.
 void addWindowOptions(CLI::App* cmd, DisplayOptions& o);
+display::ScaleMode scaleOf(const DisplayOptions& o);
 
 DacTo8 dacOf(const DisplayOptions& o);
 ImageArea areaOf(const DisplayOptions& o);

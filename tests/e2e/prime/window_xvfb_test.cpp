@@ -40,7 +40,8 @@ bool onPath(const std::string& tool) {
 // (-displayfd), so tests can run in parallel with each other and anything else.
 class XvfbTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
+  static void SetUpTestSuite() { start("2560x2048x24"); }
+  static void start(const std::string& screen) {
     if (!onPath("Xvfb")) {
       skipReason_ = "Xvfb is not installed (./prime.sh installs the xvfb package)";
       return;
@@ -52,7 +53,7 @@ class XvfbTest : public ::testing::Test {
     }
     // 2560 x 2048: room for the 1024 x 768 screen at zoom 2.
     server_ = new ChildProcess({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0",
-                                "2560x2048x24", "-nolisten", "tcp", "-noreset"});
+                                screen, "-nolisten", "tcp", "-noreset"});
     close(fds[1]);
     std::string number;
     pollfd pfd{fds[0], POLLIN, 0};
@@ -461,4 +462,86 @@ TEST_F(XvfbTest, WalkOrbitsWithKeysAndDragAndResetsWithHome) {
 
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
+}
+
+// An 800 x 600 screen (G23): the window never grows past it, and fullscreen
+// fills it with the picture at the largest whole factor, centred.
+class SmallXvfbTest : public XvfbTest {
+ protected:
+  static void SetUpTestSuite() { start("800x600x24"); }
+};
+
+// The window's size as xwininfo reports it: "WxH+X+Y" from -geometry-ish
+// fields, or "" when xwininfo fails.
+std::string windowGeometry(const std::string& xwininfo) {
+  const auto field = [&](const std::string& name) {
+    const auto at = xwininfo.find(name);
+    if (at == std::string::npos) return std::string("?");
+    std::size_t b = at + name.size();
+    while (b < xwininfo.size() && xwininfo[b] == ' ') ++b;
+    std::size_t e = b;
+    while (e < xwininfo.size() &&
+           (std::isdigit(static_cast<unsigned char>(xwininfo[e])) || xwininfo[e] == '-'))
+      ++e;
+    return xwininfo.substr(b, e - b);
+  };
+  return field("Width:") + "x" + field("Height:") + "+" + field("Absolute upper-left X:") + "+" +
+         field("Absolute upper-left Y:");
+}
+
+TEST_F(SmallXvfbTest, ZoomEightIsReducedToFitAndF11FillsTheScreen) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  // 320 x 240 at zoom 8 would be 2560 x 1920; 2 (640 x 480) is the largest that fits.
+  ChildProcess trace(
+      {PRIME_EXE, "trace", "--model", s.path().string(), "--screen", "320", "240", "--zoom", "8"},
+      env());
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+  EXPECT_THAT(trace.err(), HasSubstr("--zoom 8 reduced to 2"));
+  const std::string id = windowId(trace.err());
+  ASSERT_FALSE(id.empty()) << trace.err();
+  const auto geometry = [&] {
+    ChildProcess info({"xwininfo", "-id", id}, env());
+    info.wait(20000);
+    return windowGeometry(info.out());
+  };
+  EXPECT_EQ(geometry(), "640x480+80+60");
+  ASSERT_EQ(run({PRIME_EXE, "export", s.path("graph_scr").string(), s.path("want.png").string(),
+                 "--area", "screen"}),
+            0);
+  const prime::Image8 want = prime::readPng(s.path("want.png").string());
+  ASSERT_EQ(want.width, 320);
+  EXPECT_EQ(captureMatches(run, id, s.path("zoom.xwd"), want, 2), "");
+
+  // F11: the whole screen, the picture at 2x centred (80, 60), black around.
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "F11"}), 0);
+  std::string g;
+  for (int i = 0; i < 50 && g != "800x600+0+0"; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    g = geometry();
+  }
+  EXPECT_EQ(g, "800x600+0+0");
+  std::size_t wrong = SIZE_MAX;
+  for (int attempt = 0; attempt < 20 && wrong != 0; ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (run({"xwd", "-silent", "-id", id, "-out", s.path("full.xwd").string()}) != 0) continue;
+    const prime::Image8 shown = readXwd(s.path("full.xwd").string());
+    if (shown.width != 800 || shown.height != 600) continue;
+    wrong = 0;
+    for (int y = 0; y < 600; ++y)
+      for (int x = 0; x < 800; ++x) {
+        const bool inside = x >= 80 && x < 720 && y >= 60 && y < 540;
+        for (int c = 0; c < 3; ++c) {
+          const std::uint8_t expect =
+              inside
+                  ? want.rgb[3 * (static_cast<std::size_t>((y - 60) / 2) * 320 + (x - 80) / 2) + c]
+                  : 0;
+          if (shown.rgb[3 * (static_cast<std::size_t>(y) * 800 + x) + c] != expect) ++wrong;
+        }
+      }
+  }
+  EXPECT_EQ(wrong, 0u) << "the fullscreen window is not the picture at 2x, centred";
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
 }
