@@ -18,8 +18,10 @@ namespace prime::cli {
 
 namespace {
 
-// Headless Ctrl-C / SIGTERM: set the render's abort flag (an atomic store is
-// async-signal-safe). With a window, SDL turns both into a quit event instead.
+// Ctrl-C / SIGTERM: set the render's abort flag (an atomic store is
+// async-signal-safe) and remember the signal for the exit status (130, 143).
+// With a window too: installed after SDL's own handlers (SDL_Init, when the
+// window opened), which would make them a quit event, an exit 1 like Esc.
 std::atomic<bool>* gAbortOnSignal = nullptr;
 volatile sig_atomic_t gSignal = 0;  // the signal that aborted, for the exit status
 extern "C" void abortOnSignal(int sig) {
@@ -121,6 +123,7 @@ std::function<void(int, int, std::uint64_t)> LiveRender::progress() {
 
 void LiveRender::run(const std::function<void()>& render) {
   if (window_) {
+    SignalsAbort signals(abort_);
     // The render on its own thread; this one keeps the window alive.
     std::exception_ptr error;
     std::atomic<bool> done{false};

@@ -338,6 +338,25 @@ TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
   EXPECT_EQ(part.pixelsPresent % 1394, 0u);
 }
 
+// Ctrl-C with the window open exits 130, as headless (issue 16): SDL would
+// turn the signal into a quit event, which is Esc's exit 1.
+TEST_F(XvfbTest, CtrlCWithTheWindowOpenExits130) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
+  ChildProcess trace(
+      {PRIME_EXE, "trace", s.path().string(), "--threads", "1", "--screen", "4096", "3072"}, env());
+  ASSERT_TRUE(trace.waitForErr("Esc aborts", 60000)) << trace.err();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  trace.signal(SIGINT);
+  const auto status = trace.wait(60000);
+  ASSERT_TRUE(status.has_value());
+  EXPECT_EQ(*status, 130) << trace.err();
+  EXPECT_THAT(trace.err(), HasSubstr("prime: trace aborted after "));
+  EXPECT_FALSE(s.exists("graph_scr"));
+}
+
 // The SDL2 code is a module that `prime` loads when a window opens
 // (window_module_test.cpp has the headless side): without it there is no
 // window, even with a display, and the render says why and runs headless;
