@@ -72,6 +72,23 @@ void parsePace(const std::string& text, LiveOptions& o) {
   o.pace = v;
 }
 
+void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace) {
+  cmd->add_flag("--fullscreen", o->fullscreen, "Show the picture fullscreen (key F11 toggles)");
+  cmd->add_option_function<std::string>(
+         "--scale",
+         [o](const std::string& s) {
+           o->scale = s == "aspect" ? display::ScaleMode::Aspect : display::ScaleMode::Integer;
+         },
+         "How a fullscreen or resized window scales the picture: integer (the largest whole "
+         "factor, black borders; default) or aspect (fills one side, nearest neighbour)")
+      ->check(CLI::IsMember({"integer", "aspect"}));
+  if (pace)
+    cmd->add_option_function<std::string>(
+        "--pace", [o](const std::string& s) { parsePace(s, *o); },
+        "Show the finished rows no faster than this many a second, or 1991 for an estimate of "
+        "PRIME's 1991 speed (the render may finish first; the window catches up, Esc stops it)");
+}
+
 int interruptingSignal() {
   return gSignal;
 }

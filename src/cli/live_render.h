@@ -17,6 +17,10 @@
 #include "palette/window/screen_window.h"
 #include "palette/window/window_fit.h"
 
+namespace CLI {
+class App;
+}
+
 namespace prime::cli {
 
 struct LiveOptions {
@@ -35,6 +39,11 @@ struct LiveOptions {
   bool pace1991 = false;
   int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
 };
+
+// --fullscreen and --scale, and --pace when `pace` (a render to watch), for a
+// command whose window is a LiveRender over *o (G23, G24): the same options
+// PRIME's trace and view have, for Malone's and CGL's windows.
+void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace);
 
 // The value of --pace: a number of rows a second (> 0), or "1991" (G24).
 // Sets o.pace or o.pace1991; a CLI::ValidationError for anything else.

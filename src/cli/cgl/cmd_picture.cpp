@@ -90,6 +90,7 @@ void addPictureCommands(CLI::App& app, Action& action) {
         ->check(CLI::IsMember({"rle", "raw"}));
     cmd->add_flag("--no-window", live->noWindow, "Do not open a window");
     cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
+    addWindowFitOptions(cmd, live, false);
     cmd->callback([=, &action] {
       action = [=] {
         const Frame picture = readPicture(*file, *format);

@@ -123,6 +123,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
   addQuantizeOptions(cmd, *quant, "the --png picture");
   cmd->add_flag("--no-window", live->noWindow, "Do not open a window (also without a DISPLAY)");
   cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
+  addWindowFitOptions(cmd, live, true);
   cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
   cmd->add_flag("-q,--quiet", o->quiet,
                 "The quiet parameter: no report, no progress and no summary (Appendix 2's -q)");

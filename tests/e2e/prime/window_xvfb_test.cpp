@@ -564,3 +564,25 @@ TEST_F(SmallXvfbTest, ZoomEightIsReducedToFitAndF11FillsTheScreen) {
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
 }
+
+// Malone's and CGL's windows have PRIME's --fullscreen (G23): the CGL
+// package's 512 x 512 frame fills the 800 x 600 screen from the start.
+TEST_F(SmallXvfbTest, CglTraceFullscreenFillsTheScreen) {
+  prime::test::TempScene s;
+  ChildProcess trace({PRIME_EXE, "trace", (fs::path(PRIME_SCENES) / "../cgl/ball.cgl").string(),
+                      "--fullscreen", "--png", s.path("ball.png").string()},
+                     env());
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+  const std::string id = windowId(trace.err());
+  ASSERT_FALSE(id.empty()) << trace.err();
+  std::string g;
+  for (int i = 0; i < 50 && g != "800x600+0+0"; ++i) {
+    ChildProcess info({"xwininfo", "-id", id}, env());
+    info.wait(20000);
+    g = windowGeometry(info.out());
+    if (g != "800x600+0+0") std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  EXPECT_EQ(g, "800x600+0+0");
+  EXPECT_EQ(toolOrSay({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+}
