@@ -48,8 +48,11 @@ inline void checkTextError(const io::InputError& e, const std::string& file,
   const std::string msg = e.what();
   check(msg.rfind(file + ":", 0) == 0, "message does not start with \"file:\": " + msg);
   check(e.where().line.has_value(), "text error without a line: " + msg);
+  // Lines as the readers count them (M21): LF, CR LF and a lone CR each end one.
   std::size_t lines = 1;
-  for (char c : text) lines += c == '\n';
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')))
+      ++lines;
   check(*e.where().line >= 1 && static_cast<std::size_t>(*e.where().line) <= lines,
         "line outside the text (" + std::to_string(lines) + " lines): " + msg);
 }
