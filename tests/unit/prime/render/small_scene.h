@@ -51,4 +51,13 @@ struct SmallScene {
   void object(double kDR, const Rgb& fDR, int prim) { object(kDR, fDR, {CsgEntry{'P', prim, 0}}); }
 };
 
+// One reddish sphere of radius 200 at (500, 500, 200), in the listing's
+// default view: the scene of the free-camera and walk tests.
+inline Scene sphereScene() {
+  SmallScene small;
+  const int p = small.prim('S', {200, 200, 200}, {500, 500, 200});
+  small.object(0.6, {0.9, 0.3, 0.2}, p);
+  return small.scene;
+}
+
 }  // namespace prime::test

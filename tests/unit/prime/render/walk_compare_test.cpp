@@ -12,12 +12,7 @@
 namespace prime {
 namespace {
 
-Scene sphereScene() {
-  test::SmallScene small;
-  const int p = small.prim('S', {200, 200, 200}, {500, 500, 200});
-  small.object(0.6, {0.9, 0.3, 0.2}, p);
-  return small.scene;
-}
+using test::sphereScene;
 
 TEST(WalkRenderer, LastPassEqualsTheRenderAndCoarsePassesFillBlocks) {
   const Scene scene = sphereScene();
