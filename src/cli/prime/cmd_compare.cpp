@@ -49,26 +49,45 @@ std::string defaultB() {
   }
 }
 
-// The probe's record of one ray tree in the settings' profile; nothing for a
-// profile the probe does not trace.
-std::optional<std::vector<ProbeEvent>> probeTree(const Scene& scene, const RenderSettings& s,
-                                                 int row, int column, const Ray& ray, Rgb& colour) {
-  TraceStats stats;
-  Probe probe;
-  if (s.profile == Profile::Thesis) {
-    // The pixel's sample 0, as `prime probe` traces it (T16).
-    const SampleId sample{PixelKey{s.sampling.seed, static_cast<std::uint32_t>(row),
-                                   static_cast<std::uint32_t>(column)},
-                          0};
-    colour = TracerThesis(scene, s.trace, s.thesis).castRay(ray, 0, stats, sample, &probe);
-  } else if (s.profile == Profile::Modern)
-    colour = TracerModern(scene, s.trace).castRay(ray, 0, stats, &probe);
-  else if (s.profile == Profile::Listing1991)
-    colour = Tracer1991(scene, s.trace).castRay(ray, 0, stats, &probe);
-  else
-    return std::nullopt;
-  return std::move(probe.events);
-}
+// The probe's record of one ray tree in the settings' profile (nothing for a
+// profile the probe does not trace), with the profile's tracer (and its BVH)
+// built once for all the sampled pixels.
+class ProbeTracer {
+ public:
+  ProbeTracer(const Scene& scene, const RenderSettings& s) : s_(s) {
+    if (s.profile == Profile::Thesis)
+      thesis_.emplace(scene, s.trace, s.thesis);
+    else if (s.profile == Profile::Modern)
+      modern_.emplace(scene, s.trace);
+    else if (s.profile == Profile::Listing1991)
+      t1991_.emplace(scene, s.trace);
+  }
+  std::optional<std::vector<ProbeEvent>> tree(int row, int column, const Ray& ray,
+                                              Rgb& colour) const {
+    TraceStats stats;
+    Probe probe;
+    if (thesis_) {
+      // The pixel's sample 0, as `prime probe` traces it (T16).
+      const SampleId sample{PixelKey{s_.sampling.seed, static_cast<std::uint32_t>(row),
+                                     static_cast<std::uint32_t>(column)},
+                            0};
+      colour = thesis_->castRay(ray, 0, stats, sample, &probe);
+    } else if (modern_) {
+      colour = modern_->castRay(ray, 0, stats, &probe);
+    } else if (t1991_) {
+      colour = t1991_->castRay(ray, 0, stats, &probe);
+    } else {
+      return std::nullopt;
+    }
+    return std::move(probe.events);
+  }
+
+ private:
+  const RenderSettings& s_;
+  std::optional<TracerThesis> thesis_;
+  std::optional<TracerModern> modern_;
+  std::optional<Tracer1991> t1991_;
+};
 
 void put(Image8& img, int x, int y, Rgb8 c) {
   const std::size_t i = (static_cast<std::size_t>(y) * img.width + x) * 3;
@@ -165,10 +184,11 @@ void addCompareCommand(CLI::App& app, Action& action) {
             "prime probe DIR --pixel X Y with the same settings shows a whole tree):\n",
             c.sample.size());
         const PrimeCamera ca(sa.camera), cb(sb.camera);
+        const ProbeTracer pa(scene, sa), pb(scene, sb);
         for (const auto& [row, column] : c.sample) {
           Rgb colA{}, colB{};
-          const auto ea = probeTree(scene, sa, row, column, ca.primaryRay(row, column), colA);
-          const auto eb = probeTree(scene, sb, row, column, cb.primaryRay(row, column), colB);
+          const auto ea = pa.tree(row, column, ca.primaryRay(row, column), colA);
+          const auto eb = pb.tree(row, column, cb.primaryRay(row, column), colB);
           std::printf("  pixel %d %d: ", column, row);
           if (!ea || !eb) {
             std::printf("the probe does not trace this profile\n");
