@@ -182,6 +182,18 @@ std::optional<CsgProgram1991> CsgProgram1991::compile(std::span<const CsgEntry> 
   }
 }
 
+std::vector<int> CsgProgram1991::unionLeaves() const {
+  std::vector<int> prims;
+  if (!subStart_.empty() || steps_.size() < 4 || steps_.back().kind != StepKind::Return) return {};
+  for (std::size_t k = 0; k + 1 < steps_.size(); ++k) {
+    if (steps_[k].kind == StepKind::Leaf)
+      prims.push_back(steps_[k].arg);
+    else if (steps_[k].kind != StepKind::Union)
+      return {};
+  }
+  return prims;
+}
+
 template <class Combine>
 TList CsgProgram1991::execute(LeafFn leaf, Combine combine) const {
   Scratch local;  // only when a leaf callback runs a program itself
@@ -262,6 +274,21 @@ TList CsgProgram1991::run(LeafFn leaf) const {
 
 TList CsgProgram1991::runModern(LeafFn leaf) const {
   return execute(leaf, [](StepKind kind, TList& left, const TList& right) {
+    // An empty operand against a normalised one: setCombine's sweep would
+    // hand back the normalised operand's nodes with their surface types
+    // alternating (or nothing), so that list is the result as it stands.
+    // The common case once rays are culled by primitive boxes (N18).
+    const bool rightEmpty = right.empty(), leftEmpty = left.empty();
+    if ((rightEmpty && isNormalized(left)) || (leftEmpty && isNormalized(right))) {
+      if (rightEmpty) {
+        if (kind == StepKind::Intersection) left.clear();  // A & {} = {}; A | {} = A - {} = A
+      } else if (kind == StepKind::Union) {
+        left = right;  // {} | B = B; {} - B = {} & B = {}
+      }
+      for (std::size_t k = 0; k < left.size(); ++k)
+        left[k].surfType = k % 2 == 0 ? kSurfOut : kSurfIn;
+      return;
+    }
     if (kind == StepKind::Union)
       left = setUnion(left, right);
     else if (kind == StepKind::Difference)

@@ -57,6 +57,10 @@ class CsgProgram1991 {
 
   // A lone primitive: the whole program is one leaf.
   bool isSingleLeaf() const { return steps_.size() == 2 && steps_[0].kind == StepKind::Leaf; }
+  // A union of two or more primitives and nothing else (no other operator,
+  // no shared subtree): their numbers in the order the leaves are asked
+  // (left to right). Empty otherwise.
+  std::vector<int> unionLeaves() const;
   std::size_t size() const { return steps_.size(); }
   // Operator entries referenced more than once (evaluated once per ray).
   std::size_t sharedSubtrees() const { return subStart_.size(); }

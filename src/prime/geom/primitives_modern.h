@@ -25,6 +25,9 @@ bool sphereModern(const Ray& local, PrimHit& out);
 bool cylinderModern(const Ray& local, PrimHit& out);
 bool coneModern(const Ray& local, PrimHit& out);
 bool cubeModern(const Ray& local, PrimHit& out);
+// cubeModern as the generic clip by six half-spaces computes it: the same
+// bits (cubeModern writes each face's dot products out); kept for the test.
+bool cubeModernByPlanes(const Ray& local, PrimHit& out);
 bool pyramidModern(const Ray& local, PrimHit& out);
 
 // The surfaces of the solid that pass within 16 times the error bound `err`

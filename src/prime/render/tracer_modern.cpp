@@ -1,7 +1,9 @@
 #include "src/prime/render/tracer_modern.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -31,6 +33,20 @@ double clamp1(double x) {
 // Internal reflections inside one object before the light counts as trapped
 // (docs/prime/deviations.md N9); the 1991 profile's --tir-cap is its own.
 constexpr int kMaxInternalReflections = 64;
+// std::nextafter(x, +inf) or (x, -inf), bit for bit, without the call into
+// libm (two per secondary ray origin).
+double stepAway(double x, bool up) {
+  if (std::isnan(x)) return x;
+  if (x == 0.0)
+    return up ? std::numeric_limits<double>::denorm_min()
+              : -std::numeric_limits<double>::denorm_min();
+  if (std::isinf(x)) {
+    if ((x > 0.0) == up) return x;
+    return up ? std::numeric_limits<double>::lowest() : std::numeric_limits<double>::max();
+  }
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>((x > 0.0) == up ? bits + 1 : bits - 1);
+}
 double finiteOr0(double x) {
   return std::isfinite(x) ? x : 0.0;
 }
@@ -108,9 +124,9 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
   Vec3 po = p + offset;
   for (int i = 0; i < 3; ++i) {  // round away from p so the offset survives rounding
     if (offset[i] > 0)
-      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+      po[i] = stepAway(po[i], true);
     else if (offset[i] < 0)
-      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+      po[i] = stepAway(po[i], false);
   }
   return po;
 }
@@ -124,6 +140,7 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
   for (const SceneObject& obj : scene.objects) {
     try {
       programs_.push_back(compileModern(obj.entries));
+      unionLeaves_.push_back(programs_.back().unionLeaves());
     } catch (const CsgError& e) {  // (loadScene refuses such trees: a scene built in code)
       throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
                                std::to_string(obj.number) + "): " + e.what());
@@ -148,6 +165,75 @@ TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, Trac
   TList list = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())].runModern(leaf);
   if (probe) probe->csgList(depth, obj.number, list);
   return list;
+}
+
+TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& boxRay, double tMax,
+                                         TraceStats& stats) const {
+  ++stats.objectTests;
+  const Ray& ray = boxRay.ray;
+  auto leaf = [&](int primNum) -> std::optional<PrimHit> {
+    // N18: a primitive whose box the ray does not enter in [0, tMax] has no
+    // surface there; outside that range the list is not used.
+    // (entry() is +inf for a box the ray misses.)
+    const double entry = bvh_.primBox(primNum).entry(boxRay);
+    if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return std::nullopt;
+    ++stats.primitiveTests;
+    PrimHit in;
+    if (!intersectModern(scene_.prims[primNum].type, transformRay(ray, inverse_[primNum]), in))
+      return std::nullopt;
+    return in;
+  };
+  const std::size_t k = static_cast<std::size_t>(&obj - scene_.objects.data());
+  const CsgProgram1991& program = programs_[k];
+  if (program.isSingleLeaf()) {  // a lone primitive: runModern's answer without the walk
+    TList list;
+    const int prim = obj.entries[0].l;
+    if (const std::optional<PrimHit> hit = leaf(prim))
+      list.addPair(hit->tIn, hit->tOut, hit->nIn, hit->nOut, prim);
+    return list;
+  }
+  return program.runModern(leaf);
+}
+
+bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, double tMax,
+                                  TraceStats& stats, TNode& node) const {
+  const std::vector<int>& leaves = unionLeaves_[object];
+  if (!leaves.empty()) {
+    // A union of primitives seen from outside all of them: its first node
+    // ahead is the nearest entry, the leftmost leaf's on a tie, as the
+    // sweep of setUnion keeps its left operand's node (N18). Pairs that
+    // normalisation drops (t_in >= t_out) take no part; a ray that starts
+    // inside one (t_in <= 0 < t_out) or a NaN goes the general way.
+    ++stats.objectTests;
+    const Ray& ray = boxRay.ray;
+    bool found = false, general = false;
+    for (const int prim : leaves) {
+      const double entry = bvh_.primBox(prim).entry(boxRay);
+      if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) continue;
+      ++stats.primitiveTests;
+      PrimHit in;
+      if (!intersectModern(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in))
+        continue;
+      if (std::isnan(in.tIn) || std::isnan(in.tOut) || (in.tIn <= 0.0 && in.tOut > 0.0)) {
+        general = true;
+        break;
+      }
+      if (!(in.tIn < in.tOut) || !(in.tIn > 0.0)) continue;
+      if (!found || in.tIn < node.t) {
+        node = TNode{in.tIn, prim, kSurfOut, in.nIn};
+        found = true;
+      }
+    }
+    if (!general) return found;
+    --stats.objectTests;  // counted again below
+  }
+  const TList list = objectIntervalsAhead(scene_.objects[object], boxRay, tMax, stats);
+  for (const TNode& n : list)
+    if (n.t > 0.0) {
+      node = n;
+      return true;
+    }
+  return false;
 }
 
 // The hit point o + t d of `node` and a bound on its distance from the true
@@ -256,9 +342,9 @@ Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
   Vec3 po = hit.point + offset;
   for (int i = 0; i < 3; ++i) {  // round away from the point so the step survives rounding
     if (offset[i] > 0)
-      po[i] = std::nextafter(po[i], std::numeric_limits<double>::infinity());
+      po[i] = stepAway(po[i], true);
     else if (offset[i] < 0)
-      po[i] = std::nextafter(po[i], -std::numeric_limits<double>::infinity());
+      po[i] = stepAway(po[i], false);
   }
   return po;
 }
@@ -268,30 +354,43 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   double nearest = std::numeric_limits<double>::infinity();
   int bestObj = -1;
   TNode bestNode{};
+  const BoxRay boxRay(ray);
   auto consider = [&](int k) {
     const SceneObject& obj = scene_.objects[k];
     if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
       ++stats.boundTests;
       const ScenePrim& b = scene_.prims[obj.boundPrim];
       PrimHit in;
-      const bool met =
-          intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) && in.tOut > 0.0;
+      // A ray that enters no part of the bound's padded box ahead cannot
+      // meet the bound ahead (N18); the exact test only for the others.
+      const bool met = (probe || bvh_.primBox(obj.boundPrim).entry(boxRay) !=
+                                     std::numeric_limits<double>::infinity()) &&
+                       intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) &&
+                       in.tOut > 0.0;
       if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
       if (!met) return;
     }
-    const TList list = objectIntervals(obj, ray, stats, probe, depth);
-    for (const TNode& node : list) {
-      if (!(node.t > 0.0)) continue;  // behind the origin (or NaN)
-      if (node.t < nearest || (node.t == nearest && k < bestObj)) {
-        nearest = node.t;
-        bestObj = k;
-        bestNode = node;
-      }
-      break;  // sorted: the first node ahead is this object's nearest
+    // The list is needed up to the nearest hit so far (N18; all of it for a probe).
+    TNode node;
+    bool ahead = false;
+    if (probe) {
+      for (const TNode& n : objectIntervals(obj, ray, stats, probe, depth))
+        if (n.t > 0.0) {  // sorted: the first node ahead is this object's nearest
+          node = n;
+          ahead = true;
+          break;
+        }
+    } else {
+      ahead = firstNodeAhead(static_cast<std::size_t>(k), boxRay, nearest, stats, node);
+    }
+    if (ahead && (node.t < nearest || (node.t == nearest && k < bestObj))) {
+      nearest = node.t;
+      bestObj = k;
+      bestNode = node;
     }
   };
   bvh_.traverse(
-      ray, [&](int k, double) { consider(k); }, [&] { return nearest; });
+      boxRay, [&](int k, double) { consider(k); }, [&] { return nearest; });
   if (bestObj < 0) return false;
 
   surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
@@ -334,7 +433,8 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     return report(0, r, {});
   }
   for (int step = 0; step < kMaxInternalReflections; ++step) {
-    const TList list = objectIntervals(obj, r, stats);
+    const TList list =
+        objectIntervalsAhead(obj, BoxRay(r), std::numeric_limits<double>::infinity(), stats);
     const TNode* exit = nullptr;
     for (const TNode& node : list)
       if (node.t > 0.0 && node.surfType == kSurfIn) {

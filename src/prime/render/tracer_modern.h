@@ -55,6 +55,15 @@ class TracerModern {
   // The object's solid along the whole line of `ray` (sorted intervals).
   TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
                         Probe* probe = nullptr, int depth = 0) const;
+  // The object's solid along `ray`, exact for 0 <= t <= tMax (N18): a
+  // primitive whose padded world box the ray does not enter in [0, tMax]
+  // counts as missed without being tested. Set operations are pointwise in
+  // t, so every node of the list in that range -- its t, surface type,
+  // primitive and normal -- is objectIntervals' node; outside it the list may
+  // differ. What the render uses (the first node ahead, the solid's length
+  // up to a light) lies in the range. No probe: a probe sees every test.
+  TList objectIntervalsAhead(const SceneObject& obj, const BoxRay& ray, double tMax,
+                             TraceStats& stats) const;
 
   // The texel at the hit (inverse mapping, N11, N12, N17), probed.
   Rgb surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const;
@@ -72,12 +81,17 @@ class TracerModern {
 
  private:
   void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
+  // The object's first surface at 0 < t <= tMax: objectIntervalsAhead's
+  // first node with t > 0, if any.
+  bool firstNodeAhead(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats,
+                      TNode& node) const;
   const Scene& scene_;
   RayTreeOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
-  std::vector<Matrix4> inverse_;          // accurateInverse of every primitive's transform
-  std::vector<CsgProgram1991> programs_;  // per object: its tree compiled (compileModern)
+  std::vector<Matrix4> inverse_;               // accurateInverse of every primitive's transform
+  std::vector<CsgProgram1991> programs_;       // per object: its tree compiled (compileModern)
+  std::vector<std::vector<int>> unionLeaves_;  // per object: CsgProgram1991::unionLeaves
 };
 
 // The inverse of an affine row-vector transform, accurate to about one

@@ -90,6 +90,7 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
   const Scene& sc = scene();
   double pass = 1.0;
   bool blocked = false;
+  const BoxRay boxRay(ray);
   auto consider = [&](int k, double) {
     if (blocked) return;
     const SceneObject& obj = sc.objects[static_cast<std::size_t>(k)];
@@ -97,13 +98,17 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
       ++stats.boundTests;
       const ScenePrim& b = sc.prims[static_cast<std::size_t>(obj.boundPrim)];
       PrimHit in;
+      // Not entering the bound's padded box before the light: not met (N18).
       const bool met =
+          (probe || modern_.bvh().primBox(obj.boundPrim).entry(boxRay) <= dist) &&
           intersectModern(b.type, transformRay(ray, modern_.primInverse(obj.boundPrim)), in) &&
           in.tOut > 0.0 && in.tIn < dist;
       if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
       if (!met) return;
     }
-    const TList list = modern_.objectIntervals(obj, ray, stats, probe, depth);
+    // Only the segment up to the light matters (N18; all of it for a probe).
+    const TList list = probe ? modern_.objectIntervals(obj, ray, stats, probe, depth)
+                             : modern_.objectIntervalsAhead(obj, boxRay, dist, stats);
     double inside = 0.0;  // the length of the segment inside the solid
     for (std::size_t i = 0; i + 1 < list.size(); i += 2) {
       const double lo = std::max(0.0, list[i].t), hi = std::min(dist, list[i + 1].t);
@@ -118,7 +123,7 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
     pass *= std::min(1.0, kST) * std::pow(std::clamp(obj.hue.tT, 0.0, 1.0), inside);
     if (!(pass > 0.0)) blocked = true;
   };
-  modern_.bvh().traverse(ray, consider,
+  modern_.bvh().traverse(boxRay, consider,
                          [&] { return blocked ? -std::numeric_limits<double>::infinity() : dist; });
   if (blocked) return {0.0, 0.0, 0.0};
   return {pass, pass, pass};

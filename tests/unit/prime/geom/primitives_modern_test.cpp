@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <random>
 
 #include "src/prime/geom/csg_modern.h"
 
@@ -54,6 +57,38 @@ TEST(PrimitivesModern, CubeAndGrazingFace) {
   // Sliding inside the face plane x = 0 (closed solid): inside.
   ASSERT_TRUE(intersectModern(PrimType::Cube, {{0, 0.5, -1}, {0, 0, 1}}, in));
   EXPECT_EQ(in.tIn, 1.0);
+}
+
+TEST(PrimitivesModern, CubeSlabsAreTheGenericPlaneClipBitForBit) {
+  // cubeModern writes the six faces' dot products out; it must return what
+  // the generic clip by half-spaces returns, to the bit, on every kind of
+  // ray: random ones, axis-parallel ones (zero direction components, signed
+  // zeros), rays through edges and corners, from inside and behind.
+  std::mt19937_64 rng(20261124);
+  std::uniform_real_distribution<double> u(-3.0, 4.0);
+  const double picks[] = {0.0, -0.0, 1.0, 0.5, -1.0, 2.0};
+  std::uniform_int_distribution<int> pick(0, 5), coin(0, 3);
+  int hits = 0;
+  for (int k = 0; k < 200000; ++k) {
+    Ray r;
+    for (int i = 0; i < 3; ++i) {
+      r.o[i] = coin(rng) == 0 ? picks[pick(rng)] : u(rng);
+      r.d[i] = coin(rng) == 0 ? picks[pick(rng)] : u(rng);
+    }
+    PrimHit a{}, b{};
+    const bool fa = cubeModern(r, a), fb = cubeModernByPlanes(r, b);
+    ASSERT_EQ(fa, fb) << k;
+    if (!fa) continue;
+    ++hits;
+    const double got[] = {a.tIn,    a.tOut,    a.nIn[0],  a.nIn[1],
+                          a.nIn[2], a.nOut[0], a.nOut[1], a.nOut[2]};
+    const double want[] = {b.tIn,    b.tOut,    b.nIn[0],  b.nIn[1],
+                           b.nIn[2], b.nOut[0], b.nOut[1], b.nOut[2]};
+    for (int j = 0; j < 8; ++j)
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got[j]), std::bit_cast<std::uint64_t>(want[j]))
+          << "ray " << k << " value " << j << ": " << got[j] << " vs " << want[j];
+  }
+  EXPECT_GT(hits, 10000);  // the comparison saw many hits, not only misses
 }
 
 TEST(PrimitivesModern, CylinderBodyAndCaps) {
