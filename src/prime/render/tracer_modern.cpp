@@ -284,31 +284,33 @@ void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode
     const ScenePrim& q = scene_.prims[e.l];
     const Matrix4& qi = inverse_[e.l];
     const Vec3 ql = e.l == node.prim ? hit.local : pointMatrixMul(hit.point, qi);
-    Vec3 qe{};
+    Vec3 qe{}, mag{};  // mag: |P| |inv_q| + |inv_q[3]|, per local axis
     for (int i = 0; i < 3; ++i) {
-      double spread = 0, mag = std::abs(qi[3][i]);
+      double spread = 0;
+      mag[i] = std::abs(qi[3][i]);
       for (int k = 0; k < 3; ++k) {
         spread += hit.pointError[k] * std::abs(qi[k][i]);
-        mag += std::abs(hit.point[k] * qi[k][i]);
+        mag[i] += std::abs(hit.point[k] * qi[k][i]);
       }
-      qe[i] = e.l == node.prim ? el[i] : spread + gamma(4) * mag;
+      qe[i] = e.l == node.prim ? el[i] : spread + gamma(4) * mag[i];
     }
     Vec3 normals[10];
     const int n = nearSurfacesModern(q.type, ql, qe, normals, 10);
+    if (n <= 0) continue;
+    // The next ray's transform error at the point along each world axis:
+    // gamma(4) |A_q|^T mag, the same for every surface of this primitive.
+    Vec3 transformError{};
+    for (int j = 0; j < 3; ++j) {
+      double m = 0;
+      for (int i = 0; i < 3; ++i) m += std::abs(q.transform[i][j]) * mag[i];
+      transformError[j] = hit.pointError[j] + gamma(4) * m;
+    }
     for (int k = 0; k < n && hit.nearCount < static_cast<int>(hit.near.size()); ++k) {
       const Vec3 nw = normalToWorld(normals[k], qi);
       // World distance to step off this surface: the point's error along
       // the normal, and the next ray's transform error at the point.
       double step = 0;
-      for (int j = 0; j < 3; ++j) {
-        double m = 0;  // |A_q|^T (|P| |inv_q| + |inv_q[3]|), along axis j
-        for (int i = 0; i < 3; ++i) {
-          double li = std::abs(qi[3][i]);
-          for (int k2 = 0; k2 < 3; ++k2) li += std::abs(hit.point[k2] * qi[k2][i]);
-          m += std::abs(q.transform[i][j]) * li;
-        }
-        step += std::abs(nw[j]) * (hit.pointError[j] + gamma(4) * m);
-      }
+      for (int j = 0; j < 3; ++j) step += std::abs(nw[j]) * transformError[j];
       hit.near[static_cast<std::size_t>(hit.nearCount)] = nw;
       hit.nearStep[static_cast<std::size_t>(hit.nearCount)] = step;
       ++hit.nearCount;

@@ -34,9 +34,11 @@ struct SurfaceHit {
   Vec3 pointError{};  // bound on the point's distance from the exact surface, per axis
   // Every surface of the object's primitives that passes within the error
   // bound of `point` (the hit surface, and the other faces at an edge or a
-  // corner): world unit normals and how far to step off each.
-  std::array<Vec3, 12> near{};
-  std::array<double, 12> nearStep{};
+  // corner): world unit normals and how far to step off each. Only the
+  // first nearCount entries are ever written or read: left uninitialised,
+  // since every ray cast makes a SurfaceHit and most never hit.
+  std::array<Vec3, 12> near;
+  std::array<double, 12> nearStep;
   int nearCount = 0;
 };
 
