@@ -24,7 +24,27 @@ int interval(double u, int last, double& local) {
   return i;
 }
 
+// CGL-D172: the evaluation and the box test on GCC/Clang vector types, four
+// doubles wide (x, y, z and a zero pad for a point; four boxes for a
+// packet). Each lane gets the same IEEE operations in the same order as the
+// scalar code (the build has -ffp-contract=off: no fused multiply-add), so
+// the same doubles. On x86-64 GCC the hot functions are also compiled for
+// AVX2 (`target_clones`, chosen once at load time by the CPU); the baseline
+// clone runs the same vectors as SSE2 pairs, with the same results.
+using V4 = double __attribute__((vector_size(32)));
+// (V4 is loaded into a reference, not returned: a 32-byte vector return
+// would change the ABI of the baseline clone.)
+[[gnu::always_inline]] inline void load4(V4& v, const double* p) {
+  std::memcpy(&v, p, sizeof v);
+}
+
 }  // namespace
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define PRIME_SPLINE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PRIME_SPLINE_CLONES
+#endif
 
 void bsplineWeights(double u, double w[4], double dw[4]) {
   const double u2 = u * u, u3 = u2 * u, t = 1.0 - u;
@@ -311,6 +331,9 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
       s.u[static_cast<std::size_t>(i + j * s.mu)] = c;
       s.hull.add(c);
     }
+  s.u4.assign(s.u.size() * 4, 0.0);
+  for (std::size_t k = 0; k < s.u.size(); ++k)
+    for (int a = 0; a < 3; ++a) s.u4[4 * k + static_cast<std::size_t>(a)] = s.u[k][a];
   const ParamRange ru = parameterRange(nu, uEnd), rv = parameterRange(nv, vEnd);
   s.umin = ru.min;
   s.umax = ru.max;
@@ -357,26 +380,43 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
   return s;
 }
 
-SplinePoint evaluate(const SplineSurface& s, double u, double v) {
+namespace {
+
+// Q, Q_u, Q_v as the scalar loop over Vec3 computed them (rows summed from
+// zero in a, then weighted into the sums from zero in b), lane by lane
+// (CGL-D172).
+[[gnu::always_inline]] inline SplinePoint evaluateImpl(const SplineSurface& s, double u, double v) {
   double lu = 0, lv = 0;
   const int i = interval(u, s.m, lu), j = interval(v, s.n, lv);
   double wu[4], dwu[4], wv[4], dwv[4];
   bsplineWeights(lu, wu, dwu);
   bsplineWeights(lv, wv, dwv);
-  SplinePoint out;
+  const V4 zero = {0.0, 0.0, 0.0, 0.0};
+  V4 q = zero, qu = zero, qv = zero;
   for (int b = 0; b < 4; ++b) {
-    Vec3 row{0, 0, 0}, drow{0, 0, 0};
-    const std::size_t base = static_cast<std::size_t>((i + 1) + (j - 3 + b + 4) * s.mu);
+    V4 row = zero, drow = zero;
+    const double* base = s.u4.data() + 4 * static_cast<std::size_t>((i + 1) + (j + 1 + b) * s.mu);
     for (int a = 0; a < 4; ++a) {
-      const Vec3& c = s.u[base + static_cast<std::size_t>(a)];
+      V4 c;
+      load4(c, base + 4 * a);
       row = row + c * wu[a];
       drow = drow + c * dwu[a];
     }
-    out.q = out.q + row * wv[b];
-    out.qu = out.qu + drow * wv[b];
-    out.qv = out.qv + row * dwv[b];
+    q = q + row * wv[b];
+    qu = qu + drow * wv[b];
+    qv = qv + row * dwv[b];
   }
+  SplinePoint out;
+  out.q = {q[0], q[1], q[2]};
+  out.qu = {qu[0], qu[1], qu[2]};
+  out.qv = {qv[0], qv[1], qv[2]};
   return out;
+}
+
+}  // namespace
+
+PRIME_SPLINE_CLONES SplinePoint evaluate(const SplineSurface& s, double u, double v) {
+  return evaluateImpl(s, u, v);
 }
 
 void evaluateLong(const SplineSurface& s, long double u, long double v, long double out[3]) {
@@ -432,14 +472,13 @@ RayPlanes documentRayPlanes(const Ray& ray) {
   return p;
 }
 
-NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
-                    double v0, const NewtonOptions& options) {
-  if (!planes.ok) return {};
-  return newtonFrom(s, planes, ray, u0, v0, evaluate(s, u0, v0), options);
-}
+namespace {
 
-NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
-                        double v0, const SplinePoint& start, const NewtonOptions& options) {
+[[gnu::always_inline]] inline NewtonResult newtonImpl(const SplineSurface& s,
+                                                      const RayPlanes& planes, const Ray& ray,
+                                                      double u0, double v0,
+                                                      const SplinePoint& start,
+                                                      const NewtonOptions& options) {
   NewtonResult res;
   if (!planes.ok) return res;
   double u = u0, v = v0;
@@ -458,7 +497,7 @@ NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const R
     v -= dv;
     // Failure: the iterate leaves the parameter range ...
     if (!(u >= s.umin && u <= s.umax && v >= s.vmin && v <= s.vmax)) return res;
-    sp = evaluate(s, u, v);
+    sp = evaluateImpl(s, u, v);
     e1 = dot(planes.n1, sp.q) - planes.a1;
     e2 = dot(planes.n2, sp.q) - planes.a2;
     const double next = std::fabs(e1) + std::fabs(e2);
@@ -475,6 +514,22 @@ NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const R
     err = next;
   }
   return res;  // CGL-Q144: the iteration cap
+}
+
+}  // namespace
+
+PRIME_SPLINE_CLONES NewtonResult newton(const SplineSurface& s, const RayPlanes& planes,
+                                        const Ray& ray, double u0, double v0,
+                                        const NewtonOptions& options) {
+  if (!planes.ok) return {};
+  return newtonImpl(s, planes, ray, u0, v0, evaluateImpl(s, u0, v0), options);
+}
+
+PRIME_SPLINE_CLONES NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes,
+                                            const Ray& ray, double u0, double v0,
+                                            const SplinePoint& start,
+                                            const NewtonOptions& options) {
+  return newtonImpl(s, planes, ray, u0, v0, start, options);
 }
 
 SplineCounters& SplineCounters::operator+=(const SplineCounters& o) {
@@ -569,26 +624,23 @@ inline void packetEntries(const SplinePacket& p, const BoxRay& r, double d[4]) {
     }
     return;
   }
-  // Two lanes at once, twice (GCC/Clang vector extensions: SSE2 on x86-64):
-  // x > t0 ? x : t0 is std::max(t0, x) and y < t1 ? y : t1 is
-  // std::min(t1, y) for the NaN-free values here, lane by lane.
-  using V2 = double __attribute__((vector_size(16)));
-  for (int half = 0; half < 4; half += 2) {
-    V2 t0 = {0.0, 0.0}, t1 = {kInf, kInf};
-    for (int a = 0; a < 3; ++a) {
-      V2 nearPlane, farPlane;
-      std::memcpy(&nearPlane, (r.neg[a] ? p.hi[a] : p.lo[a]) + half, sizeof nearPlane);
-      std::memcpy(&farPlane, (r.neg[a] ? p.lo[a] : p.hi[a]) + half, sizeof farPlane);
-      const double o = r.ray.o[a], inv = r.inv[a];
-      const V2 x = (nearPlane - o) * inv;
-      const V2 y = (farPlane - o) * inv;
-      t0 = x > t0 ? x : t0;
-      t1 = y < t1 ? y : t1;
-    }
-    const V2 miss = {kInf, kInf};
-    const V2 out = t0 <= t1 ? t0 : miss;
-    std::memcpy(d + half, &out, sizeof out);
+  // Four lanes at once (CGL-D172; GCC/Clang vector extensions: AVX2 or two
+  // SSE2 halves on x86-64): x > t0 ? x : t0 is std::max(t0, x) and y < t1 ?
+  // y : t1 is std::min(t1, y) for the NaN-free values here, lane by lane.
+  V4 t0 = {0.0, 0.0, 0.0, 0.0}, t1 = {kInf, kInf, kInf, kInf};
+  for (int a = 0; a < 3; ++a) {
+    V4 nearPlane, farPlane;
+    load4(nearPlane, r.neg[a] ? p.hi[a] : p.lo[a]);
+    load4(farPlane, r.neg[a] ? p.lo[a] : p.hi[a]);
+    const double o = r.ray.o[a], inv = r.inv[a];
+    const V4 x = (nearPlane - o) * inv;
+    const V4 y = (farPlane - o) * inv;
+    t0 = x > t0 ? x : t0;
+    t1 = y < t1 ? y : t1;
   }
+  const V4 miss = {kInf, kInf, kInf, kInf};
+  const V4 out = t0 <= t1 ? t0 : miss;
+  std::memcpy(d, &out, sizeof out);
 }
 
 // A leaf the ray enters: its box entry, node index (the document's order)
@@ -637,8 +689,9 @@ inline void pushLanes(const SplinePacket& p, const BoxRay& boxRay, double tMax, 
 
 }  // namespace
 
-bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin,
+                                         double tMax, SplineHit& hit, SplineCounters& counters,
+                                         std::vector<NewtonStart>* record) {
   ++counters.calls;
   if (s.packets.empty()) return false;
   std::vector<Tried>& tried = tTried;
@@ -675,7 +728,7 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(leafIndex)];
     if (aheadLeaf < 0) {
       aheadLeaf = leafIndex;
-      ahead = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      ahead = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
       if (ahead.hit && ahead.t > tMin && ahead.t < tMax) bound = std::max(ahead.t, e.d);
     }
     tried.push_back({e.d, leaf.node, leafIndex});
@@ -698,7 +751,7 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
       r = ahead;
       aheadUsed = true;
     } else {
-      r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      r = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     }
     ++counters.newtonCalls;
     counters.iterations += static_cast<std::uint64_t>(r.iterations);
@@ -720,8 +773,8 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   return found;
 }
 
-bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                    SplineCounters& counters) {
+PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin,
+                                        double tMax, SplineCounters& counters) {
   ++counters.calls;
   if (s.packets.empty()) return false;
   const BoxRay boxRay(ray);
@@ -740,7 +793,7 @@ bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double 
     }
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(~e.ref)];
     ++counters.newtonCalls;
-    const NewtonResult r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+    const NewtonResult r = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     counters.iterations += static_cast<std::uint64_t>(r.iterations);
     if (r.hit && r.t > tMin && r.t < tMax) {
       ++counters.hits;

@@ -90,6 +90,9 @@ struct SplineSurface {
   double overlap = 0.5;
   // The extended, transformed control graph: U_{i,j} = u[(i + 4) + (j + 4) mu].
   std::vector<Vec3> u;
+  // The same vertices padded to four doubles (x, y, z, 0), for the
+  // evaluation's vector arithmetic (CGL-D172): u4[4 k + a] = u[k][a].
+  std::vector<double> u4;
   double umin = 0, umax = 0, vmin = 0, vmax = 0;
   // The refined vertices W_{r,s} = w[(r + 4) + (s + 4) pu], r = -4 .. p.
   int pu = 0, pv = 0;
