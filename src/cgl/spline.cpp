@@ -507,6 +507,8 @@ namespace {
       res.u = u;
       res.v = v;
       res.t = dot(od, ray.d) / dot(ray.d, ray.d);  // CGL-E141
+      res.qu = sp.qu;
+      res.qv = sp.qv;
       return res;
     }
     // ... or |E_1| + |E_2| increased.
@@ -592,7 +594,7 @@ bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin
       if (r.hit && r.t > tMin && r.t < best) {
         best = r.t;
         found = true;
-        hit = {r.t, r.u, r.v, n.u0, n.v0, r.iterations};
+        hit = {r.t, r.u, r.v, n.u0, n.v0, r.iterations, r.qu, r.qv};
       }
       continue;
     }
@@ -695,8 +697,10 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
   ++counters.calls;
   if (s.packets.empty()) return false;
   std::vector<Tried>& tried = tTried;
-  if (tried.capacity() < s.leafData.size()) tried.reserve(s.leafData.size());
-  tried.clear();
+  if (tried.size() < s.leafData.size()) tried.resize(s.leafData.size());
+  // Each leaf is listed at most once: the sized scratch is enough.
+  Tried* const list = tried.data();
+  int listed = 0;
   const BoxRay boxRay(ray);
   RayPlanes planes;
   NewtonOptions options;
@@ -715,7 +719,6 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
   StackEntry stack[kStack];
   int top = 0;
   pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
-  if (top > 0) planes = rayPlanes(ray);
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.d > bound) continue;
@@ -727,23 +730,40 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
     const int leafIndex = ~e.ref;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(leafIndex)];
     if (aheadLeaf < 0) {
+      // The planes when a first leaf is reached (CGL-D173: most rays that
+      // enter the root's box reach no leaf); every later run follows this one.
+      planes = rayPlanes(ray);
       aheadLeaf = leafIndex;
       ahead = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
       if (ahead.hit && ahead.t > tMin && ahead.t < tMax) bound = std::max(ahead.t, e.d);
     }
-    tried.push_back({e.d, leaf.node, leafIndex});
+    list[listed++] = {e.d, leaf.node, leafIndex};
   }
-  if (tried.empty()) return false;
+  if (listed == 0) return false;
   // The document's walk over the listed leaves: nearest entry first (ties
   // by node index, the heap's order), Newton at each (the run ahead
   // reused), stopping at the first leaf no nearer than the hit.
-  std::sort(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) {
+  // (entry, node index) is a strict order (node indices are unique), so
+  // any sort gives the same list; a short list, the common case, by
+  // insertion.
+  const auto before = [](const Tried& a, const Tried& b) {
     return a.d < b.d || (a.d == b.d && a.node < b.node);
-  });
+  };
+  if (listed <= 16) {
+    for (int i = 1; i < listed; ++i) {
+      const Tried x = list[i];
+      int j = i;
+      for (; j > 0 && before(x, list[j - 1]); --j) list[j] = list[j - 1];
+      list[j] = x;
+    }
+  } else {
+    std::sort(list, list + listed, before);
+  }
   double best = tMax;
   bool found = false;
   bool aheadUsed = false;
-  for (const Tried& x : tried) {
+  for (int k = 0; k < listed; ++k) {
+    const Tried& x = list[k];
     if (!(x.d < best)) break;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(x.leaf)];
     NewtonResult r;
@@ -759,7 +779,7 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
     if (r.hit && r.t > tMin && r.t < best) {
       best = r.t;
       found = true;
-      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations};
+      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations, r.qu, r.qv};
     }
   }
   if (aheadLeaf >= 0 && !aheadUsed) {
@@ -778,7 +798,8 @@ PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, 
   ++counters.calls;
   if (s.packets.empty()) return false;
   const BoxRay boxRay(ray);
-  const RayPlanes planes = rayPlanes(ray);
+  RayPlanes planes;
+  bool havePlanes = false;  // CGL-D173: computed at the first leaf
   NewtonOptions options;
   options.tolerance = s.tolerance;
   StackEntry stack[kStack];
@@ -792,6 +813,10 @@ PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, 
       continue;
     }
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(~e.ref)];
+    if (!havePlanes) {
+      planes = rayPlanes(ray);
+      havePlanes = true;
+    }
     ++counters.newtonCalls;
     const NewtonResult r = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     counters.iterations += static_cast<std::uint64_t>(r.iterations);
@@ -836,25 +861,41 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
         if (r.hit && r.t > tMin && r.t < best) {
           best = r.t;
           found = true;
-          hit = {r.t, r.u, r.v, st[0], st[1], r.iterations};
+          hit = {r.t, r.u, r.v, st[0], st[1], r.iterations, r.qu, r.qv};
         }
       }
     }
   return found;
 }
 
-Vec3 splineNormal(const SplineSurface& s, double u, double v) {
+namespace {
+
+// Section 6.9's normal, the first evaluation at (u, v) given (Q_u, Q_v).
+Vec3 normalFrom(const SplineSurface& s, double u, double v, Vec3 qu, Vec3 qv) {
   const double cu = (s.umin + s.umax) / 2, cv = (s.vmin + s.vmax) / 2;
-  for (int k = 0; k < 6; ++k) {
-    const SplinePoint sp = evaluate(s, u, v);
-    const Vec3 n = cross(sp.qu, sp.qv);
+  for (int k = 0;; ++k) {
+    const Vec3 n = cross(qu, qv);
     const double l = length(n);
-    if (l > 1e-12 * (1.0 + length(sp.qu) * length(sp.qv))) return n * (1.0 / l);
+    if (l > 1e-12 * (1.0 + length(qu) * length(qv))) return n * (1.0 / l);
+    if (k == 5) return {0.0, 0.0, 1.0};
     // CGL-Q146: Q_u or Q_v vanishes (a tripled edge): step inwards.
     u += (cu - u) * 1e-4 * (k + 1);
     v += (cv - v) * 1e-4 * (k + 1);
+    const SplinePoint sp = evaluate(s, u, v);
+    qu = sp.qu;
+    qv = sp.qv;
   }
-  return {0.0, 0.0, 1.0};
+}
+
+}  // namespace
+
+Vec3 splineNormal(const SplineSurface& s, double u, double v) {
+  const SplinePoint sp = evaluate(s, u, v);
+  return normalFrom(s, u, v, sp.qu, sp.qv);
+}
+
+Vec3 splineNormal(const SplineSurface& s, const SplineHit& hit) {
+  return normalFrom(s, hit.u, hit.v, hit.qu, hit.qv);
 }
 
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv) {

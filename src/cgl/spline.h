@@ -142,6 +142,7 @@ struct NewtonResult {
   bool hit = false;
   double u = 0, v = 0, t = 0;
   int iterations = 0;
+  Vec3 qu{}, qv{};  // on a hit: Q_u, Q_v at (u, v), the last evaluation (CGL-D173)
 };
 // Newton's iteration (6.8.1) from (u0, v0); on success the distance t =
 // (I - O).D/|D|^2 (CGL-E141) of I = Q(u, v).
@@ -161,6 +162,7 @@ struct SplineHit {
   double t = 0, u = 0, v = 0;  // the surface parameters (u-bar, v-bar)
   double u0 = 0, v0 = 0;       // the leaf's Newton start
   int iterations = 0;
+  Vec3 qu{}, qv{};  // Q_u, Q_v at (u, v): evaluate(s, u, v)'s, for the normal (CGL-D173)
 };
 // Section 6.7: the nearest hit with t in (tMin, tMax) by the sorted active
 // list. The list is a per-thread scratch sized once for the largest tree
@@ -207,6 +209,9 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
 // Section 6.9: N = Q_u x Q_v normalised (nudged inwards where Q_u or Q_v
 // vanishes at a tripled edge, CGL-Q146); texture u, v in [0, 1].
 Vec3 splineNormal(const SplineSurface& s, double u, double v);
+// The same normal from a hit, whose Q_u, Q_v at (u, v) Newton's last step
+// has already evaluated (CGL-D173: the same vectors, so the same normal).
+Vec3 splineNormal(const SplineSurface& s, const SplineHit& hit);
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv);
 
 // The surface over its parameter range as bicubic Bezier patches, exactly:

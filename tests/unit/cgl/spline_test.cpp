@@ -533,6 +533,9 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
         ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
         ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
         ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+        // CGL-D173: the normal from Newton's last Q_u, Q_v is the normal
+        // evaluated afresh at (u, v), to the bit.
+        ASSERT_EQ(splineNormal(s, b), splineNormal(s, b.u, b.v)) << name << " ray " << r;
         // A segment ending just short of the hit, and one just past it:
         // the shadow query against the nearest-hit search with tMax.
         const Ray toward{ray.o, ray.d};
