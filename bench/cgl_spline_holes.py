@@ -20,6 +20,11 @@ Subcommands (used by bench/cgl_spline_holes.sh; plain Python, no packages):
       sheet missed, the far side seen through the hole); a hit 1-5 % off is counted apart as
       "depth error" (a coarse approximation of the surface, not a hole). Without DEPTH.ppm: prime's Newton path
       (the CSV's path column); with it: POV-Ray's picture. Prints one line of key=value.
+  ab RUNS SCENE.cgl PRIME_A PRIME_B...
+      Two or more builds of prime on one scene (CGL-D172, CGL-D173): RUNS interleaved rounds of
+      `trace SCENE --threads 1 --no-window -q --aalevel 0` (the order reversed every other round),
+      CPU = user + system of the whole process; prints each build's median, its ratio to the
+      first build's, and its min-max. Report the load average with it: the machine is shared.
 """
 import re
 import sys
@@ -114,6 +119,26 @@ def count(csv_path, ppm=None):
           % (reference, missed, farther, holes, 100.0 * holes / max(1, reference), depth_error, extra))
 
 
+def ab(runs, scene, builds):
+    import os
+    import statistics
+    import subprocess
+
+    times = {b: [] for b in builds}
+    for r in range(runs):
+        for b in builds if r % 2 == 0 else builds[::-1]:
+            args = [b, "trace", scene, "--threads", "1", "--no-window", "-q", "--aalevel", "0"]
+            p = subprocess.Popen(args, stdout=subprocess.DEVNULL)
+            _, status, ru = os.wait4(p.pid, 0)
+            if status != 0:
+                sys.exit(f"cgl_spline_holes.py ab: {b} failed on {scene}")
+            times[b].append(ru.ru_utime + ru.ru_stime)
+    base = statistics.median(times[builds[0]])
+    for b in builds:
+        m = statistics.median(times[b])
+        print(f"{b}: {m:.4f} s x{m / base:.3f} ({min(times[b]):.4f}-{max(times[b]):.4f}), {runs} runs")
+
+
 def main(argv):
     cmd = argv[1]
     if cmd == "depth-pov":
@@ -127,6 +152,8 @@ def main(argv):
         open(argv[3], "w").write(set_steps(open(argv[2]).read(), int(argv[4]), argv[5]))
     elif cmd == "count":
         count(argv[2], argv[3] if len(argv) > 3 else None)
+    elif cmd == "ab":
+        ab(int(argv[2]), argv[3], argv[4:])
     else:
         sys.exit("cgl_spline_holes.py: unknown subcommand " + cmd)
 

@@ -24,7 +24,27 @@ int interval(double u, int last, double& local) {
   return i;
 }
 
+// CGL-D172: the evaluation and the box test on GCC/Clang vector types, four
+// doubles wide (x, y, z and a zero pad for a point; four boxes for a
+// packet). Each lane gets the same IEEE operations in the same order as the
+// scalar code (the build has -ffp-contract=off: no fused multiply-add), so
+// the same doubles. On x86-64 GCC the hot functions are also compiled for
+// AVX2 (`target_clones`, chosen once at load time by the CPU); the baseline
+// clone runs the same vectors as SSE2 pairs, with the same results.
+using V4 = double __attribute__((vector_size(32)));
+// (V4 is loaded into a reference, not returned: a 32-byte vector return
+// would change the ABI of the baseline clone.)
+[[gnu::always_inline]] inline void load4(V4& v, const double* p) {
+  std::memcpy(&v, p, sizeof v);
+}
+
 }  // namespace
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define PRIME_SPLINE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PRIME_SPLINE_CLONES
+#endif
 
 void bsplineWeights(double u, double w[4], double dw[4]) {
   const double u2 = u * u, u3 = u2 * u, t = 1.0 - u;
@@ -311,6 +331,9 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
       s.u[static_cast<std::size_t>(i + j * s.mu)] = c;
       s.hull.add(c);
     }
+  s.u4.assign(s.u.size() * 4, 0.0);
+  for (std::size_t k = 0; k < s.u.size(); ++k)
+    for (int a = 0; a < 3; ++a) s.u4[4 * k + static_cast<std::size_t>(a)] = s.u[k][a];
   const ParamRange ru = parameterRange(nu, uEnd), rv = parameterRange(nv, vEnd);
   s.umin = ru.min;
   s.umax = ru.max;
@@ -357,26 +380,43 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
   return s;
 }
 
-SplinePoint evaluate(const SplineSurface& s, double u, double v) {
+namespace {
+
+// Q, Q_u, Q_v as the scalar loop over Vec3 computed them (rows summed from
+// zero in a, then weighted into the sums from zero in b), lane by lane
+// (CGL-D172).
+[[gnu::always_inline]] inline SplinePoint evaluateImpl(const SplineSurface& s, double u, double v) {
   double lu = 0, lv = 0;
   const int i = interval(u, s.m, lu), j = interval(v, s.n, lv);
   double wu[4], dwu[4], wv[4], dwv[4];
   bsplineWeights(lu, wu, dwu);
   bsplineWeights(lv, wv, dwv);
-  SplinePoint out;
+  const V4 zero = {0.0, 0.0, 0.0, 0.0};
+  V4 q = zero, qu = zero, qv = zero;
   for (int b = 0; b < 4; ++b) {
-    Vec3 row{0, 0, 0}, drow{0, 0, 0};
-    const std::size_t base = static_cast<std::size_t>((i + 1) + (j - 3 + b + 4) * s.mu);
+    V4 row = zero, drow = zero;
+    const double* base = s.u4.data() + 4 * static_cast<std::size_t>((i + 1) + (j + 1 + b) * s.mu);
     for (int a = 0; a < 4; ++a) {
-      const Vec3& c = s.u[base + static_cast<std::size_t>(a)];
+      V4 c;
+      load4(c, base + 4 * a);
       row = row + c * wu[a];
       drow = drow + c * dwu[a];
     }
-    out.q = out.q + row * wv[b];
-    out.qu = out.qu + drow * wv[b];
-    out.qv = out.qv + row * dwv[b];
+    q = q + row * wv[b];
+    qu = qu + drow * wv[b];
+    qv = qv + row * dwv[b];
   }
+  SplinePoint out;
+  out.q = {q[0], q[1], q[2]};
+  out.qu = {qu[0], qu[1], qu[2]};
+  out.qv = {qv[0], qv[1], qv[2]};
   return out;
+}
+
+}  // namespace
+
+PRIME_SPLINE_CLONES SplinePoint evaluate(const SplineSurface& s, double u, double v) {
+  return evaluateImpl(s, u, v);
 }
 
 void evaluateLong(const SplineSurface& s, long double u, long double v, long double out[3]) {
@@ -432,14 +472,13 @@ RayPlanes documentRayPlanes(const Ray& ray) {
   return p;
 }
 
-NewtonResult newton(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
-                    double v0, const NewtonOptions& options) {
-  if (!planes.ok) return {};
-  return newtonFrom(s, planes, ray, u0, v0, evaluate(s, u0, v0), options);
-}
+namespace {
 
-NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const Ray& ray, double u0,
-                        double v0, const SplinePoint& start, const NewtonOptions& options) {
+[[gnu::always_inline]] inline NewtonResult newtonImpl(const SplineSurface& s,
+                                                      const RayPlanes& planes, const Ray& ray,
+                                                      double u0, double v0,
+                                                      const SplinePoint& start,
+                                                      const NewtonOptions& options) {
   NewtonResult res;
   if (!planes.ok) return res;
   double u = u0, v = v0;
@@ -458,7 +497,7 @@ NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const R
     v -= dv;
     // Failure: the iterate leaves the parameter range ...
     if (!(u >= s.umin && u <= s.umax && v >= s.vmin && v <= s.vmax)) return res;
-    sp = evaluate(s, u, v);
+    sp = evaluateImpl(s, u, v);
     e1 = dot(planes.n1, sp.q) - planes.a1;
     e2 = dot(planes.n2, sp.q) - planes.a2;
     const double next = std::fabs(e1) + std::fabs(e2);
@@ -468,6 +507,8 @@ NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const R
       res.u = u;
       res.v = v;
       res.t = dot(od, ray.d) / dot(ray.d, ray.d);  // CGL-E141
+      res.qu = sp.qu;
+      res.qv = sp.qv;
       return res;
     }
     // ... or |E_1| + |E_2| increased.
@@ -475,6 +516,22 @@ NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes, const R
     err = next;
   }
   return res;  // CGL-Q144: the iteration cap
+}
+
+}  // namespace
+
+PRIME_SPLINE_CLONES NewtonResult newton(const SplineSurface& s, const RayPlanes& planes,
+                                        const Ray& ray, double u0, double v0,
+                                        const NewtonOptions& options) {
+  if (!planes.ok) return {};
+  return newtonImpl(s, planes, ray, u0, v0, evaluateImpl(s, u0, v0), options);
+}
+
+PRIME_SPLINE_CLONES NewtonResult newtonFrom(const SplineSurface& s, const RayPlanes& planes,
+                                            const Ray& ray, double u0, double v0,
+                                            const SplinePoint& start,
+                                            const NewtonOptions& options) {
+  return newtonImpl(s, planes, ray, u0, v0, start, options);
 }
 
 SplineCounters& SplineCounters::operator+=(const SplineCounters& o) {
@@ -537,7 +594,7 @@ bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin
       if (r.hit && r.t > tMin && r.t < best) {
         best = r.t;
         found = true;
-        hit = {r.t, r.u, r.v, n.u0, n.v0, r.iterations};
+        hit = {r.t, r.u, r.v, n.u0, n.v0, r.iterations, r.qu, r.qv};
       }
       continue;
     }
@@ -569,26 +626,23 @@ inline void packetEntries(const SplinePacket& p, const BoxRay& r, double d[4]) {
     }
     return;
   }
-  // Two lanes at once, twice (GCC/Clang vector extensions: SSE2 on x86-64):
-  // x > t0 ? x : t0 is std::max(t0, x) and y < t1 ? y : t1 is
-  // std::min(t1, y) for the NaN-free values here, lane by lane.
-  using V2 = double __attribute__((vector_size(16)));
-  for (int half = 0; half < 4; half += 2) {
-    V2 t0 = {0.0, 0.0}, t1 = {kInf, kInf};
-    for (int a = 0; a < 3; ++a) {
-      V2 nearPlane, farPlane;
-      std::memcpy(&nearPlane, (r.neg[a] ? p.hi[a] : p.lo[a]) + half, sizeof nearPlane);
-      std::memcpy(&farPlane, (r.neg[a] ? p.lo[a] : p.hi[a]) + half, sizeof farPlane);
-      const double o = r.ray.o[a], inv = r.inv[a];
-      const V2 x = (nearPlane - o) * inv;
-      const V2 y = (farPlane - o) * inv;
-      t0 = x > t0 ? x : t0;
-      t1 = y < t1 ? y : t1;
-    }
-    const V2 miss = {kInf, kInf};
-    const V2 out = t0 <= t1 ? t0 : miss;
-    std::memcpy(d + half, &out, sizeof out);
+  // Four lanes at once (CGL-D172; GCC/Clang vector extensions: AVX2 or two
+  // SSE2 halves on x86-64): x > t0 ? x : t0 is std::max(t0, x) and y < t1 ?
+  // y : t1 is std::min(t1, y) for the NaN-free values here, lane by lane.
+  V4 t0 = {0.0, 0.0, 0.0, 0.0}, t1 = {kInf, kInf, kInf, kInf};
+  for (int a = 0; a < 3; ++a) {
+    V4 nearPlane, farPlane;
+    load4(nearPlane, r.neg[a] ? p.hi[a] : p.lo[a]);
+    load4(farPlane, r.neg[a] ? p.lo[a] : p.hi[a]);
+    const double o = r.ray.o[a], inv = r.inv[a];
+    const V4 x = (nearPlane - o) * inv;
+    const V4 y = (farPlane - o) * inv;
+    t0 = x > t0 ? x : t0;
+    t1 = y < t1 ? y : t1;
   }
+  const V4 miss = {kInf, kInf, kInf, kInf};
+  const V4 out = t0 <= t1 ? t0 : miss;
+  std::memcpy(d, &out, sizeof out);
 }
 
 // A leaf the ray enters: its box entry, node index (the document's order)
@@ -637,13 +691,16 @@ inline void pushLanes(const SplinePacket& p, const BoxRay& boxRay, double tMax, 
 
 }  // namespace
 
-bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin,
+                                         double tMax, SplineHit& hit, SplineCounters& counters,
+                                         std::vector<NewtonStart>* record) {
   ++counters.calls;
   if (s.packets.empty()) return false;
   std::vector<Tried>& tried = tTried;
-  if (tried.capacity() < s.leafData.size()) tried.reserve(s.leafData.size());
-  tried.clear();
+  if (tried.size() < s.leafData.size()) tried.resize(s.leafData.size());
+  // Each leaf is listed at most once: the sized scratch is enough.
+  Tried* const list = tried.data();
+  int listed = 0;
   const BoxRay boxRay(ray);
   RayPlanes planes;
   NewtonOptions options;
@@ -662,7 +719,6 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   StackEntry stack[kStack];
   int top = 0;
   pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
-  if (top > 0) planes = rayPlanes(ray);
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.d > bound) continue;
@@ -674,23 +730,40 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
     const int leafIndex = ~e.ref;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(leafIndex)];
     if (aheadLeaf < 0) {
+      // The planes when a first leaf is reached (CGL-D173: most rays that
+      // enter the root's box reach no leaf); every later run follows this one.
+      planes = rayPlanes(ray);
       aheadLeaf = leafIndex;
-      ahead = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      ahead = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
       if (ahead.hit && ahead.t > tMin && ahead.t < tMax) bound = std::max(ahead.t, e.d);
     }
-    tried.push_back({e.d, leaf.node, leafIndex});
+    list[listed++] = {e.d, leaf.node, leafIndex};
   }
-  if (tried.empty()) return false;
+  if (listed == 0) return false;
   // The document's walk over the listed leaves: nearest entry first (ties
   // by node index, the heap's order), Newton at each (the run ahead
   // reused), stopping at the first leaf no nearer than the hit.
-  std::sort(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) {
+  // (entry, node index) is a strict order (node indices are unique), so
+  // any sort gives the same list; a short list, the common case, by
+  // insertion.
+  const auto before = [](const Tried& a, const Tried& b) {
     return a.d < b.d || (a.d == b.d && a.node < b.node);
-  });
+  };
+  if (listed <= 16) {
+    for (int i = 1; i < listed; ++i) {
+      const Tried x = list[i];
+      int j = i;
+      for (; j > 0 && before(x, list[j - 1]); --j) list[j] = list[j - 1];
+      list[j] = x;
+    }
+  } else {
+    std::sort(list, list + listed, before);
+  }
   double best = tMax;
   bool found = false;
   bool aheadUsed = false;
-  for (const Tried& x : tried) {
+  for (int k = 0; k < listed; ++k) {
+    const Tried& x = list[k];
     if (!(x.d < best)) break;
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(x.leaf)];
     NewtonResult r;
@@ -698,7 +771,7 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
       r = ahead;
       aheadUsed = true;
     } else {
-      r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+      r = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     }
     ++counters.newtonCalls;
     counters.iterations += static_cast<std::uint64_t>(r.iterations);
@@ -706,7 +779,7 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
     if (r.hit && r.t > tMin && r.t < best) {
       best = r.t;
       found = true;
-      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations};
+      hit = {r.t, r.u, r.v, leaf.u0, leaf.v0, r.iterations, r.qu, r.qv};
     }
   }
   if (aheadLeaf >= 0 && !aheadUsed) {
@@ -720,12 +793,13 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   return found;
 }
 
-bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                    SplineCounters& counters) {
+PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin,
+                                        double tMax, SplineCounters& counters) {
   ++counters.calls;
   if (s.packets.empty()) return false;
   const BoxRay boxRay(ray);
-  const RayPlanes planes = rayPlanes(ray);
+  RayPlanes planes;
+  bool havePlanes = false;  // CGL-D173: computed at the first leaf
   NewtonOptions options;
   options.tolerance = s.tolerance;
   StackEntry stack[kStack];
@@ -739,8 +813,12 @@ bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double 
       continue;
     }
     const SplineLeaf& leaf = s.leafData[static_cast<std::size_t>(~e.ref)];
+    if (!havePlanes) {
+      planes = rayPlanes(ray);
+      havePlanes = true;
+    }
     ++counters.newtonCalls;
-    const NewtonResult r = newtonFrom(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
+    const NewtonResult r = newtonImpl(s, planes, ray, leaf.u0, leaf.v0, leaf.start, options);
     counters.iterations += static_cast<std::uint64_t>(r.iterations);
     if (r.hit && r.t > tMin && r.t < tMax) {
       ++counters.hits;
@@ -783,25 +861,41 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
         if (r.hit && r.t > tMin && r.t < best) {
           best = r.t;
           found = true;
-          hit = {r.t, r.u, r.v, st[0], st[1], r.iterations};
+          hit = {r.t, r.u, r.v, st[0], st[1], r.iterations, r.qu, r.qv};
         }
       }
     }
   return found;
 }
 
-Vec3 splineNormal(const SplineSurface& s, double u, double v) {
+namespace {
+
+// Section 6.9's normal, the first evaluation at (u, v) given (Q_u, Q_v).
+Vec3 normalFrom(const SplineSurface& s, double u, double v, Vec3 qu, Vec3 qv) {
   const double cu = (s.umin + s.umax) / 2, cv = (s.vmin + s.vmax) / 2;
-  for (int k = 0; k < 6; ++k) {
-    const SplinePoint sp = evaluate(s, u, v);
-    const Vec3 n = cross(sp.qu, sp.qv);
+  for (int k = 0;; ++k) {
+    const Vec3 n = cross(qu, qv);
     const double l = length(n);
-    if (l > 1e-12 * (1.0 + length(sp.qu) * length(sp.qv))) return n * (1.0 / l);
+    if (l > 1e-12 * (1.0 + length(qu) * length(qv))) return n * (1.0 / l);
+    if (k == 5) return {0.0, 0.0, 1.0};
     // CGL-Q146: Q_u or Q_v vanishes (a tripled edge): step inwards.
     u += (cu - u) * 1e-4 * (k + 1);
     v += (cv - v) * 1e-4 * (k + 1);
+    const SplinePoint sp = evaluate(s, u, v);
+    qu = sp.qu;
+    qv = sp.qv;
   }
-  return {0.0, 0.0, 1.0};
+}
+
+}  // namespace
+
+Vec3 splineNormal(const SplineSurface& s, double u, double v) {
+  const SplinePoint sp = evaluate(s, u, v);
+  return normalFrom(s, u, v, sp.qu, sp.qv);
+}
+
+Vec3 splineNormal(const SplineSurface& s, const SplineHit& hit) {
+  return normalFrom(s, hit.u, hit.v, hit.qu, hit.qv);
 }
 
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv) {

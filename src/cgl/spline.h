@@ -90,6 +90,9 @@ struct SplineSurface {
   double overlap = 0.5;
   // The extended, transformed control graph: U_{i,j} = u[(i + 4) + (j + 4) mu].
   std::vector<Vec3> u;
+  // The same vertices padded to four doubles (x, y, z, 0), for the
+  // evaluation's vector arithmetic (CGL-D172): u4[4 k + a] = u[k][a].
+  std::vector<double> u4;
   double umin = 0, umax = 0, vmin = 0, vmax = 0;
   // The refined vertices W_{r,s} = w[(r + 4) + (s + 4) pu], r = -4 .. p.
   int pu = 0, pv = 0;
@@ -139,6 +142,7 @@ struct NewtonResult {
   bool hit = false;
   double u = 0, v = 0, t = 0;
   int iterations = 0;
+  Vec3 qu{}, qv{};  // on a hit: Q_u, Q_v at (u, v), the last evaluation (CGL-D173)
 };
 // Newton's iteration (6.8.1) from (u0, v0); on success the distance t =
 // (I - O).D/|D|^2 (CGL-E141) of I = Q(u, v).
@@ -158,6 +162,7 @@ struct SplineHit {
   double t = 0, u = 0, v = 0;  // the surface parameters (u-bar, v-bar)
   double u0 = 0, v0 = 0;       // the leaf's Newton start
   int iterations = 0;
+  Vec3 qu{}, qv{};  // Q_u, Q_v at (u, v): evaluate(s, u, v)'s, for the normal (CGL-D173)
 };
 // Section 6.7: the nearest hit with t in (tMin, tMax) by the sorted active
 // list. The list is a per-thread scratch sized once for the largest tree
@@ -204,6 +209,9 @@ bool intersectSplineReference(const SplineSurface& s, const Ray& ray, double tMi
 // Section 6.9: N = Q_u x Q_v normalised (nudged inwards where Q_u or Q_v
 // vanishes at a tripled edge, CGL-Q146); texture u, v in [0, 1].
 Vec3 splineNormal(const SplineSurface& s, double u, double v);
+// The same normal from a hit, whose Q_u, Q_v at (u, v) Newton's last step
+// has already evaluated (CGL-D173: the same vectors, so the same normal).
+Vec3 splineNormal(const SplineSurface& s, const SplineHit& hit);
 void splineTexture(const SplineSurface& s, double u, double v, double& tu, double& tv);
 
 // The surface over its parameter range as bicubic Bezier patches, exactly:

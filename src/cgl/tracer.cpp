@@ -282,8 +282,7 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
       object.kind == ObjectKind::Fractal
           ? facetNormal(scene_.fractals[static_cast<std::size_t>(object.fractal)], hit.facet)
       : object.kind == ObjectKind::Spline
-          ? splineNormal(scene_.splines[static_cast<std::size_t>(object.spline)], hit.spline.u,
-                         hit.spline.v)
+          ? splineNormal(scene_.splines[static_cast<std::size_t>(object.spline)], hit.spline)
           : normalAt(object, point, hit.axial);
 
   Spectrum reflected = background_, refracted = background_;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -424,6 +425,70 @@ TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
 // holes included), rays from the hit points towards the light and random
 // rays through the surface's box from every side. The counts of hits are
 // printed by the failure messages; the assertion is the exact equality.
+// CGL-D172: the vector evaluation is the scalar sum over Vec3 that it
+// replaced (rows from zero in u, then weighted into sums from zero in v),
+// to the last bit, at random parameters and at every knot of each shipped
+// surface (the Newton iterates, and so the pictures, depend on these bits).
+SplinePoint scalarEvaluate(const SplineSurface& s, double u, double v) {
+  const int i = std::clamp(static_cast<int>(std::floor(u)), -1, s.m);
+  const int j = std::clamp(static_cast<int>(std::floor(v)), -1, s.n);
+  double wu[4], dwu[4], wv[4], dwv[4];
+  bsplineWeights(u - i, wu, dwu);
+  bsplineWeights(v - j, wv, dwv);
+  SplinePoint out;
+  for (int b = 0; b < 4; ++b) {
+    Vec3 row{0, 0, 0}, drow{0, 0, 0};
+    const std::size_t base = static_cast<std::size_t>((i + 1) + (j + 1 + b) * s.mu);
+    for (int a = 0; a < 4; ++a) {
+      const Vec3& c = s.u[base + static_cast<std::size_t>(a)];
+      row = row + c * wu[a];
+      drow = drow + c * dwu[a];
+    }
+    out.q = out.q + row * wv[b];
+    out.qu = out.qu + drow * wv[b];
+    out.qv = out.qv + row * dwv[b];
+  }
+  return out;
+}
+
+TEST(CglSplineSurface, VectorEvaluationIsTheScalarSumBitForBit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uint64_t points = 0;
+  for (const char* name : {"spline-bump-single", "spline-donut", "spline-mask", "spline-vases"}) {
+    const Scene scene = buildScene(readSceneFile(kScenes + "/" + name + ".cgl"));
+    for (const SplineSurface& s : scene.splines) {
+      std::vector<std::pair<double, double>> at;
+      for (int k = 0; k < 5000; ++k)
+        at.push_back(
+            {s.umin + (s.umax - s.umin) * unit(rng), s.vmin + (s.vmax - s.vmin) * unit(rng)});
+      for (const SplineLeaf& leaf : s.leafData) at.push_back({leaf.u0, leaf.v0});
+      for (const auto& [u, v] : at) {
+        const SplinePoint a = evaluate(s, u, v), b = scalarEvaluate(s, u, v);
+        for (int c = 0; c < 3; ++c) {
+          // Bit for bit: EXPECT_EQ on doubles is exact equality (and +0 vs -0
+          // would pass it, so the sign bits are compared too).
+          ASSERT_EQ(a.q[c], b.q[c]) << name << " (" << u << ", " << v << ")";
+          ASSERT_EQ(a.qu[c], b.qu[c]) << name << " (" << u << ", " << v << ")";
+          ASSERT_EQ(a.qv[c], b.qv[c]) << name << " (" << u << ", " << v << ")";
+          ASSERT_EQ(std::signbit(a.q[c]), std::signbit(b.q[c])) << name;
+          ASSERT_EQ(std::signbit(a.qu[c]), std::signbit(b.qu[c])) << name;
+          ASSERT_EQ(std::signbit(a.qv[c]), std::signbit(b.qv[c])) << name;
+        }
+        ++points;
+      }
+      // The leaf records' saved starts (CGL-D170) are these evaluations too.
+      for (const SplineLeaf& leaf : s.leafData) {
+        const SplinePoint b = scalarEvaluate(s, leaf.u0, leaf.v0);
+        ASSERT_EQ(leaf.start.q, b.q) << name;
+        ASSERT_EQ(leaf.start.qu, b.qu) << name;
+        ASSERT_EQ(leaf.start.qv, b.qv) << name;
+      }
+    }
+  }
+  EXPECT_GT(points, 20000u);
+}
+
 TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -468,6 +533,9 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
         ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
         ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
         ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+        // CGL-D173: the normal from Newton's last Q_u, Q_v is the normal
+        // evaluated afresh at (u, v), to the bit.
+        ASSERT_EQ(splineNormal(s, b), splineNormal(s, b.u, b.v)) << name << " ray " << r;
         // A segment ending just short of the hit, and one just past it:
         // the shadow query against the nearest-hit search with tMax.
         const Ray toward{ray.o, ray.d};
