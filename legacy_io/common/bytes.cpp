@@ -18,6 +18,17 @@ void ByteWriter::putInt16(std::int16_t v) {
   bytes_.push_back(static_cast<std::uint8_t>(u >> 8));
 }
 
+void ByteWriter::putInt16s(std::span<const std::int16_t> values) {
+  const std::size_t at = bytes_.size();
+  bytes_.resize(at + 2 * values.size());
+  std::uint8_t* out = bytes_.data() + at;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto u = static_cast<std::uint16_t>(values[i]);
+    out[2 * i] = static_cast<std::uint8_t>(u & 0xFF);
+    out[2 * i + 1] = static_cast<std::uint8_t>(u >> 8);
+  }
+}
+
 void ByteWriter::putDouble(double v) {
   const auto u = std::bit_cast<std::uint64_t>(v);
   for (int i = 0; i < 8; ++i) bytes_.push_back(static_cast<std::uint8_t>(u >> (8 * i)));

@@ -17,6 +17,8 @@ class ByteWriter {
  public:
   void putChar(std::uint8_t c) { bytes_.push_back(c); }
   void putInt16(std::int16_t v);
+  // putInt16 of each value in turn, in one pass (a graph file's pixels).
+  void putInt16s(std::span<const std::int16_t> values);
   void putDouble(double v);
   void putZeros(std::size_t n) { bytes_.insert(bytes_.end(), n, 0); }
   void reserve(std::size_t n) { bytes_.reserve(n); }

@@ -1,5 +1,11 @@
 #include "legacy_io/prime/graph_file.h"
 
+#include <algorithm>
+#include <bit>
+
+#include "legacy_io/common/bytes.h"
+#include "legacy_io/common/output_file.h"
+
 namespace prime::io {
 
 std::vector<std::uint8_t> toBytes(const GraphFile& f) {
@@ -8,7 +14,7 @@ std::vector<std::uint8_t> toBytes(const GraphFile& f) {
   w.putInt16(f.graphType);
   w.putInt16(f.numPixAcross);
   w.putInt16(f.numPixDown);
-  for (auto p : f.pixels) w.putInt16(p);
+  w.putInt16s(f.pixels);
   return w.take();
 }
 
@@ -84,8 +90,29 @@ GraphFilePrefix readGraphFilePrefix(const std::string& path) {
   return graphFilePrefixFromBytes(readFileBytes(path), path);
 }
 
+void forEachGraphFileBytes(const GraphFile& f,
+                           const std::function<void(std::span<const std::uint8_t>)>& piece) {
+  ByteWriter header;
+  header.putInt16(f.graphType);
+  header.putInt16(f.numPixAcross);
+  header.putInt16(f.numPixDown);
+  piece(header.bytes());
+  if constexpr (std::endian::native == std::endian::little) {
+    piece({reinterpret_cast<const std::uint8_t*>(f.pixels.data()), 2 * f.pixels.size()});
+  } else {
+    constexpr std::size_t kBlock = 1 << 15;
+    for (std::size_t at = 0; at < f.pixels.size(); at += kBlock) {
+      ByteWriter block;
+      block.putInt16s(std::span(f.pixels).subspan(at, std::min(kBlock, f.pixels.size() - at)));
+      piece(block.bytes());
+    }
+  }
+}
+
 void writeGraphFile(const std::string& path, const GraphFile& f) {
-  writeFileAtomically(path, toBytes(f));
+  OutputFile out(path);
+  forEachGraphFileBytes(f, [&out](std::span<const std::uint8_t> bytes) { out.write(bytes); });
+  out.commit();
 }
 
 }  // namespace prime::io

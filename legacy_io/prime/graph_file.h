@@ -6,6 +6,8 @@
 // `inclusive` records which, and writing reproduces it.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,5 +44,11 @@ GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes,
                                          const std::string& name);
 GraphFilePrefix readGraphFilePrefix(const std::string& path);
 void writeGraphFile(const std::string& path, const GraphFile& f);
+// toBytes(f) handed to `piece` in consecutive pieces, without building it:
+// on a little-endian host the pixels are their own file bytes (the header,
+// then the pixel array as it is in memory); elsewhere they are converted a
+// block at a time. For writing and hashing a full-size picture.
+void forEachGraphFileBytes(const GraphFile& f,
+                           const std::function<void(std::span<const std::uint8_t>)>& piece);
 
 }  // namespace prime::io

@@ -12,8 +12,7 @@
 
 namespace prime {
 
-std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes, std::uint64_t h) {
   for (std::uint8_t b : bytes) {
     h ^= b;
     h *= 0x100000001b3ull;

@@ -37,7 +37,10 @@ struct GraphInfo {
   bool inline_ = false;  // the DAC entries are in the file (a quantized render)
 };
 
-std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes);
+// FNV-1a, 64 bits. `h` continues a hash: fnv1a64(b, fnv1a64(a)) is the hash
+// of a followed by b.
+inline constexpr std::uint64_t kFnv1a64Offset = 0xcbf29ce484222325ull;
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes, std::uint64_t h = kFnv1a64Offset);
 std::string graphInfoPath(const std::string& graphPath);  // graphPath + ".info"
 
 std::string formatGraphInfo(const GraphInfo& info);

@@ -13,7 +13,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <iostream>
+#include <system_error>
 
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/prime/graph_file.h"
@@ -70,13 +72,12 @@ void printSummary(const RenderResult& r, const std::string& out) {
 // show it as the render did. Written after the graph file, each through
 // OutputFile; a companion that does not match its graph file's bytes is
 // ignored by view and export (G9).
-void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, int screenWidth,
-                    int screenHeight, const std::string& profile, Placement at,
+void writeCompanion(const std::string& graphPath, std::size_t graphBytes, std::uint64_t graphHash,
+                    int screenWidth, int screenHeight, const std::string& profile, Placement at,
                     const Palette& palette, bool inlinePalette) {
   GraphInfo info;
-  const std::vector<std::uint8_t> bytes = io::toBytes(graph);
-  info.graphBytes = bytes.size();
-  info.graphHash = fnv1a64(bytes);
+  info.graphBytes = graphBytes;
+  info.graphHash = graphHash;
   info.profile = profile;
   info.screenWidth = screenWidth;  // a free camera's picture is its own screen (T32)
   info.screenHeight = screenHeight;
@@ -84,6 +85,41 @@ void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, in
   info.palette = palette;
   info.inline_ = inlinePalette;
   writeGraphInfo(graphInfoPath(graphPath), info);
+}
+void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, int screenWidth,
+                    int screenHeight, const std::string& profile, Placement at,
+                    const Palette& palette, bool inlinePalette) {
+  const std::vector<std::uint8_t> bytes = io::toBytes(graph);
+  writeCompanion(graphPath, bytes.size(), fnv1a64(bytes), screenWidth, screenHeight, profile, at,
+                 palette, inlinePalette);
+}
+
+// The graph file and its companion: the file's bytes written from the
+// pixels as they are, their hash taken on another thread meanwhile (a
+// full-size picture is megabytes: work no render thread can share).
+void writeGraphAndCompanion(const std::string& target, const io::GraphFile& graph, int screenWidth,
+                            int screenHeight, const std::string& profile, Placement at,
+                            const Palette& palette, bool inlinePalette) {
+  auto hashOf = [&graph] {
+    std::uint64_t h = kFnv1a64Offset;
+    io::forEachGraphFileBytes(graph, [&h](std::span<const std::uint8_t> b) { h = fnv1a64(b, h); });
+    return h;
+  };
+  std::future<std::uint64_t> hash;
+  try {
+    hash = std::async(std::launch::async, hashOf);
+  } catch (const std::system_error&) {  // no thread to be had: hash here
+    hash = std::async(std::launch::deferred, hashOf);
+  }
+  try {
+    io::writeGraphFile(target, graph);
+  } catch (...) {
+    hash.wait();  // (the graph must outlive the hashing thread)
+    throw;
+  }
+  const std::size_t bytes = 2 * (3 + graph.pixels.size());  // toBytes' size
+  writeCompanion(target, bytes, hash.get(), screenWidth, screenHeight, profile, at, palette,
+                 inlinePalette);
 }
 
 // --quantize (thesis 4.4, T59): every pixel of the graph file (the listing's
@@ -254,13 +290,11 @@ void addTraceCommand(CLI::App& app, Action& action) {
       if (quantizing) {
         const Palette quantized = quantizeGraph(result, *quant);
         if (display->palette.empty()) palette = quantized;
-        io::writeGraphFile(target, result.graph);
-        writeCompanion(target, result.graph, screenW, screenH, options->profile, at, quantized,
-                       true);
+        writeGraphAndCompanion(target, result.graph, screenW, screenH, options->profile, at,
+                               quantized, true);
       } else {
-        io::writeGraphFile(target, result.graph);
-        writeCompanion(target, result.graph, screenW, screenH, options->profile, at,
-                       *findBuiltinPalette(mappingPalette), false);
+        writeGraphAndCompanion(target, result.graph, screenW, screenH, options->profile, at,
+                               *findBuiltinPalette(mappingPalette), false);
       }
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's

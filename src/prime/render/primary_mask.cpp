@@ -90,10 +90,13 @@ PrimaryRayMask::PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> 
 void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes) {
   const Projector proj(view);
   if (!proj.usable()) return;
-  // A 2-D difference array: +1/-1 at the rectangles' corners, then prefix
-  // sums, so the cost is one step per box plus one per pixel.
-  const auto w = static_cast<std::size_t>(columns_) + 1;
-  std::vector<std::int32_t> diff((static_cast<std::size_t>(rows_) + 1) * w, 0);
+  // Each box's rectangle on the image, then per row the union of the
+  // rectangles that cross it as sorted, disjoint column runs, built by one
+  // sweep down the rows (a row whose set of rectangles is the previous
+  // row's shares its runs): memory and time grow with the boxes and the
+  // rows, not with the pixels, and nothing is left for the render threads
+  // to wait on.
+  std::vector<Rect> rects;
   for (const Aabb& box : boxes) {
     if (box.empty()) continue;  // an object with no primitive box is never tested
     const std::optional<Rect> r = projectedRect(proj, box, rows_, columns_);
@@ -101,30 +104,58 @@ void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes) 
     const int r0 = std::max(r->row0, 0), r1 = std::min(r->row1, rows_ - 1);
     const int c0 = std::max(r->col0, 0), c1 = std::min(r->col1, columns_ - 1);
     if (r0 > r1 || c0 > c1) continue;  // entirely off the image
-    const auto at = [&](int row, int col) -> std::int32_t& {
-      return diff[static_cast<std::size_t>(row) * w + static_cast<std::size_t>(col)];
-    };
-    ++at(r0, c0);
-    --at(r0, c1 + 1);
-    --at(r1 + 1, c0);
-    ++at(r1 + 1, c1 + 1);
+    rects.push_back({r0, r1, c0, c1});
   }
-  covered_.assign(static_cast<std::size_t>(rows_) * columns_, 0);
-  std::vector<std::int32_t> above(w, 0);  // column sums of the rows so far
+  masked_ = true;
+  std::sort(rects.begin(), rects.end(),
+            [](const Rect& a, const Rect& b) { return a.row0 < b.row0; });
+  rowRuns_.assign(static_cast<std::size_t>(rows_), {0, 0});
+  std::vector<Rect> active;
+  std::size_t next = 0;
   for (int i = 0; i < rows_; ++i) {
-    std::int32_t run = 0;
-    for (int j = 0; j < columns_; ++j) {
-      above[j] += diff[static_cast<std::size_t>(i) * w + j];
-      run += above[j];
-      covered_[static_cast<std::size_t>(i) * columns_ + j] = run > 0 ? 1 : 0;
+    bool changed = false;
+    const auto ended =
+        std::remove_if(active.begin(), active.end(), [i](const Rect& r) { return r.row1 < i; });
+    changed = ended != active.end();
+    active.erase(ended, active.end());
+    for (; next < rects.size() && rects[next].row0 <= i; ++next) {
+      active.push_back(rects[next]);
+      changed = true;
     }
+    if (!changed && i > 0) {
+      rowRuns_[static_cast<std::size_t>(i)] = rowRuns_[static_cast<std::size_t>(i) - 1];
+      continue;
+    }
+    std::vector<Rect> byColumn = active;
+    std::sort(byColumn.begin(), byColumn.end(),
+              [](const Rect& a, const Rect& b) { return a.col0 < b.col0; });
+    const auto first = static_cast<std::uint32_t>(runs_.size());
+    for (const Rect& r : byColumn) {
+      if (runs_.size() > first && r.col0 <= runs_.back().c1 + 1)
+        runs_.back().c1 = std::max(runs_.back().c1, r.col1);
+      else
+        runs_.push_back({r.col0, r.col1});
+    }
+    rowRuns_[static_cast<std::size_t>(i)] = {first, static_cast<std::uint32_t>(runs_.size())};
   }
 }
 
+bool PrimaryRayMask::mayHit(int row, int column) const {
+  if (!masked_) return true;
+  const auto [first, last] = rowRuns_[static_cast<std::size_t>(row)];
+  for (std::uint32_t k = first; k < last; ++k) {
+    if (column < runs_[k].c0) return false;  // runs are sorted
+    if (column <= runs_[k].c1) return true;
+  }
+  return false;
+}
+
 double PrimaryRayMask::coverage() const {
-  if (covered_.empty()) return 1.0;
-  return static_cast<double>(std::count(covered_.begin(), covered_.end(), 1)) /
-         static_cast<double>(covered_.size());
+  if (!masked_) return 1.0;
+  double covered = 0;
+  for (const auto& [first, last] : rowRuns_)
+    for (std::uint32_t k = first; k < last; ++k) covered += runs_[k].c1 - runs_[k].c0 + 1;
+  return covered / (static_cast<double>(rows_) * columns_);
 }
 
 }  // namespace prime

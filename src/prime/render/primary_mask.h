@@ -11,6 +11,7 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "src/geom/aabb.h"
@@ -27,16 +28,20 @@ class PrimaryRayMask {
   PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes);
 
   // False only when no primary ray through (row, column)'s footprint can meet a box.
-  bool mayHit(int row, int column) const {
-    return covered_.empty() || covered_[static_cast<std::size_t>(row) * columns_ + column] != 0;
-  }
+  bool mayHit(int row, int column) const;
   // The share of pixels that need a ray (1 when the mask covers everything).
   double coverage() const;
 
  private:
   void build(const LinearView& view, std::span<const Aabb> boxes);
   int rows_ = 0, columns_ = 0;
-  std::vector<std::uint8_t> covered_;  // empty: every pixel may hit
+  struct Run {
+    int c0, c1;  // columns c0..c1 (inclusive) may hit
+  };
+  bool masked_ = false;  // false: every pixel may hit
+  std::vector<Run> runs_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>
+      rowRuns_;  // per row: its runs_ [first, last)
 };
 
 }  // namespace prime

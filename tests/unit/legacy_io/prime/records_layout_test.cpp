@@ -116,6 +116,26 @@ TEST(RecordLayout, GraphFileHeaderThenInclusivePixels) {
   EXPECT_EQ(toBytes(g), (Bytes{1, 0, 1, 0, 1, 0, 1, 0, 2, 0, 3, 0, 0xFC, 0xFF}));
 }
 
+TEST(RecordLayout, GraphFilePiecesAreTheFilesBytes) {
+  // writeGraphFile and the companion's hash take the file in pieces, without
+  // building it: the pieces, joined, must be toBytes to the byte (the bytes
+  // by hand above; here a picture of 70,000 pixels, more than one block).
+  GraphFile g;
+  g.numPixAcross = 349;
+  g.numPixDown = 199;
+  g.pixels.resize(350 * 200);
+  for (std::size_t i = 0; i < g.pixels.size(); ++i)
+    g.pixels[i] = static_cast<std::int16_t>(i * 40503u);  // every byte value, signs too
+  Bytes joined;
+  int pieces = 0;
+  forEachGraphFileBytes(g, [&](std::span<const std::uint8_t> b) {
+    joined.insert(joined.end(), b.begin(), b.end());
+    ++pieces;
+  });
+  EXPECT_GE(pieces, 2);  // the header apart from the pixels
+  EXPECT_EQ(joined, toBytes(g));
+}
+
 TEST(RecordLayout, MapFileIsHeaderThenDoubles) {
   MapFile m;
   m.header = {1, 2};
