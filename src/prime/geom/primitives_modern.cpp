@@ -29,13 +29,18 @@ bool clipHalfSpace(const Ray& r, const Vec3& n, double c, double& lo, double& hi
   return lo <= hi;
 }
 
+// kNormals false: the same t's (and the same answer), the normals left zero.
+template <bool kNormals = true>
 bool convex(const Ray& r, const Vec3* normals, const double* offsets, int planes, PrimHit& out) {
   double lo = -kInf, hi = kInf;
   Vec3 nLo{}, nHi{};
   for (int i = 0; i < planes; ++i)
     if (!clipHalfSpace(r, normals[i], offsets[i], lo, hi, nLo, nHi)) return false;
   if (!(lo <= hi) || lo == -kInf || hi == kInf) return false;
-  out = {lo, hi, normalized(nLo), normalized(nHi)};
+  if constexpr (kNormals)
+    out = {lo, hi, normalized(nLo), normalized(nHi)};
+  else
+    out = {lo, hi, {}, {}};
   return true;
 }
 
@@ -64,14 +69,22 @@ bool solveQuadratic(double a, double b, double c, double& t0, double& t1) {
   return true;
 }
 
+// The quadrics' kNormals = false forms give the same t's and the same
+// answer without computing (normalising) the normals: for the tests that
+// need only where a ray is inside (bounds, shadow rays, candidates).
+template <bool kNormals>
 static bool sphereAt(const Ray& r, PrimHit& out) {
   double t0, t1;
   const double a = dot(r.d, r.d), b = dot(r.o, r.d), c = dot(r.o, r.o) - 1.0;
   if (!solveQuadratic(a, b, c, t0, t1) || t0 == t1) return false;
-  out = {t0, t1, normalized(r.o + r.d * t0), normalized(r.o + r.d * t1)};
+  if constexpr (kNormals)
+    out = {t0, t1, normalized(r.o + r.d * t0), normalized(r.o + r.d * t1)};
+  else
+    out = {t0, t1, {}, {}};
   return true;
 }
 
+template <bool kNormals>
 static bool cylinderAt(const Ray& r, PrimHit& out) {
   double t0 = -kInf, t1 = kInf;
   Vec3 n0{}, n1{};
@@ -85,15 +98,21 @@ static bool cylinderAt(const Ray& r, PrimHit& out) {
     if (!solveQuadratic(a, b, c, s0, s1) || s0 == s1) return false;
     t0 = s0;
     t1 = s1;
-    const Vec3 p0 = r.o + r.d * s0, p1 = r.o + r.d * s1;
-    n0 = normalized({p0[X], p0[Y], 0});
-    n1 = normalized({p1[X], p1[Y], 0});
+    if constexpr (kNormals) {
+      const Vec3 p0 = r.o + r.d * s0, p1 = r.o + r.d * s1;
+      n0 = normalized({p0[X], p0[Y], 0});
+      n1 = normalized({p1[X], p1[Y], 0});
+    }
   }
   if (!clipSlabZ(r, 0.0, 1.0, t0, t1, n0, n1) || !(t0 < t1)) return false;
-  out = {t0, t1, normalized(n0), normalized(n1)};
+  if constexpr (kNormals)
+    out = {t0, t1, normalized(n0), normalized(n1)};
+  else
+    out = {t0, t1, {}, {}};
   return true;
 }
 
+template <bool kNormals>
 static bool coneAt(const Ray& r, PrimHit& out) {
   // Solid: x^2 + y^2 <= z^2 with 0 <= z <= 1 (apex at the origin, cap z = 1).
   // f(t) = a t^2 + 2 b t + c; the upper nappe is convex, so the line meets
@@ -104,6 +123,7 @@ static bool coneAt(const Ray& r, PrimHit& out) {
   double t0 = -kInf, t1 = kInf;
   Vec3 n0{}, n1{};
   auto bodyNormal = [&](double t) {
+    if constexpr (!kNormals) return Vec3{};
     const Vec3 p = r.o + r.d * t;
     if (p[X] == 0.0 && p[Y] == 0.0 && p[Z] == 0.0) return Vec3{0, 0, -1};  // the apex
     return normalized({p[X], p[Y], -p[Z]});
@@ -142,7 +162,10 @@ static bool coneAt(const Ray& r, PrimHit& out) {
   // upper nappe (the lower one lies at z <= 0).
   const double zMid = r.o[Z] + r.d[Z] * (0.5 * (t0 + t1));
   if (zMid < 0.0) return false;
-  out = {t0, t1, normalized(n0), normalized(n1)};
+  if constexpr (kNormals)
+    out = {t0, t1, normalized(n0), normalized(n1)};
+  else
+    out = {t0, t1, {}, {}};
   return true;
 }
 
@@ -167,19 +190,32 @@ bool shifted(const Ray& r, double num, double den, Solve solve, PrimHit& out) {
   return out.tIn < out.tOut;
 }
 
+template <bool kNormals = true>
+bool sphereWith(const Ray& r, PrimHit& out) {
+  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), sphereAt<kNormals>, out);
+}
+template <bool kNormals = true>
+bool cylinderWith(const Ray& r, PrimHit& out) {
+  return shifted(r, r.o[X] * r.d[X] + r.o[Y] * r.d[Y], r.d[X] * r.d[X] + r.d[Y] * r.d[Y],
+                 cylinderAt<kNormals>, out);
+}
+template <bool kNormals = true>
+bool coneWith(const Ray& r, PrimHit& out) {
+  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), coneAt<kNormals>, out);
+}
+
 }  // namespace
 
 bool sphereModern(const Ray& r, PrimHit& out) {
-  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), sphereAt, out);
+  return sphereWith(r, out);
 }
 
 bool cylinderModern(const Ray& r, PrimHit& out) {
-  return shifted(r, r.o[X] * r.d[X] + r.o[Y] * r.d[Y], r.d[X] * r.d[X] + r.d[Y] * r.d[Y],
-                 cylinderAt, out);
+  return cylinderWith(r, out);
 }
 
 bool coneModern(const Ray& r, PrimHit& out) {
-  return shifted(r, dot(r.o, r.d), dot(r.d, r.d), coneAt, out);
+  return coneWith(r, out);
 }
 
 bool cubeModern(const Ray& r, PrimHit& out) {
@@ -345,6 +381,25 @@ int nearSurfacesModern(io::PrimType type, const Vec3& p, const Vec3& e, Vec3* ou
     }
   }
   return count;
+}
+
+bool intersectModernT(io::PrimType type, const Ray& local, PrimHit& out) {
+  switch (type) {
+    case io::PrimType::Sphere:
+      return sphereWith<false>(local, out);
+    case io::PrimType::Cube:
+      return cubeModern(local, out);  // its normals cost nothing
+    case io::PrimType::Cylinder:
+      return cylinderWith<false>(local, out);
+    case io::PrimType::Cone:
+      return coneWith<false>(local, out);
+    case io::PrimType::Pyramid: {
+      static const Vec3 n[5] = {{0, -1, 0}, {0, 0.5, -1}, {0, 0.5, 1}, {-1, 0.5, 0}, {1, 0.5, 0}};
+      static const double c[5] = {0, 0, 1, 0, 1};
+      return convex<false>(local, n, c, 5, out);
+    }
+  }
+  return false;  // not reached
 }
 
 bool intersectModern(io::PrimType type, const Ray& local, PrimHit& out) {

@@ -20,6 +20,9 @@ namespace prime {
 // False when the line misses the solid (or only touches it: tIn == tOut is
 // reported as a miss only if the direction is degenerate).
 bool intersectModern(io::PrimType type, const Ray& local, PrimHit& out);
+// intersectModern's answer and t's, bit for bit, without the normals (left
+// unspecified): for the tests that need only where the line is inside.
+bool intersectModernT(io::PrimType type, const Ray& local, PrimHit& out);
 
 bool sphereModern(const Ray& local, PrimHit& out);
 bool cylinderModern(const Ray& local, PrimHit& out);

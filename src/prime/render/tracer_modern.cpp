@@ -167,8 +167,15 @@ TList TracerModern::objectIntervals(const SceneObject& obj, const Ray& ray, Trac
   return list;
 }
 
+namespace {
+// Normals::kMarkers: a leaf's entry and exit normals stand for "this
+// primitive's entry (exit) normal"; a difference negates its right operand's
+// nodes as it would negate their normals, so the sign comes along.
+constexpr Vec3 kEntryMarker{1, 0, 0}, kExitMarker{1, 1, 0};
+}  // namespace
+
 TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& boxRay, double tMax,
-                                         TraceStats& stats) const {
+                                         TraceStats& stats, Normals normals) const {
   ++stats.objectTests;
   const Ray& ray = boxRay.ray;
   auto leaf = [&](int primNum) -> std::optional<PrimHit> {
@@ -179,8 +186,14 @@ TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& b
     if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return std::nullopt;
     ++stats.primitiveTests;
     PrimHit in;
-    if (!intersectModern(scene_.prims[primNum].type, transformRay(ray, inverse_[primNum]), in))
-      return std::nullopt;
+    const Ray local = transformRay(ray, inverse_[primNum]);
+    if (normals == Normals::kFull) {
+      if (!intersectModern(scene_.prims[primNum].type, local, in)) return std::nullopt;
+    } else {
+      if (!intersectModernT(scene_.prims[primNum].type, local, in)) return std::nullopt;
+      in.nIn = kEntryMarker;
+      in.nOut = kExitMarker;
+    }
     return in;
   };
   const std::size_t k = static_cast<std::size_t>(&obj - scene_.objects.data());
@@ -212,7 +225,7 @@ bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, doub
       if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) continue;
       ++stats.primitiveTests;
       PrimHit in;
-      if (!intersectModern(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in))
+      if (!intersectModernT(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in))
         continue;
       if (std::isnan(in.tIn) || std::isnan(in.tOut) || (in.tIn <= 0.0 && in.tOut > 0.0)) {
         general = true;
@@ -220,14 +233,15 @@ bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, doub
       }
       if (!(in.tIn < in.tOut) || !(in.tIn > 0.0)) continue;
       if (!found || in.tIn < node.t) {
-        node = TNode{in.tIn, prim, kSurfOut, in.nIn};
+        node = TNode{in.tIn, prim, kSurfOut, kEntryMarker};
         found = true;
       }
     }
     if (!general) return found;
     --stats.objectTests;  // counted again below
   }
-  const TList list = objectIntervalsAhead(scene_.objects[object], boxRay, tMax, stats);
+  const TList list =
+      objectIntervalsAhead(scene_.objects[object], boxRay, tMax, stats, Normals::kMarkers);
   for (const TNode& n : list)
     if (n.t > 0.0) {
       node = n;
@@ -365,10 +379,12 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       PrimHit in;
       // A ray that enters no part of the bound's padded box ahead cannot
       // meet the bound ahead (N18); the exact test only for the others.
-      const bool met = (probe || bvh_.primBox(obj.boundPrim).entry(boxRay) !=
-                                     std::numeric_limits<double>::infinity()) &&
-                       intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in) &&
-                       in.tOut > 0.0;
+      const bool met =
+          (probe ||
+           bvh_.primBox(obj.boundPrim).entry(boxRay) != std::numeric_limits<double>::infinity()) &&
+          (probe ? intersectModern(b.type, transformRay(ray, inverse_[obj.boundPrim]), in)
+                 : intersectModernT(b.type, transformRay(ray, inverse_[obj.boundPrim]), in)) &&
+          in.tOut > 0.0;
       if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
       if (!met) return;
     }
@@ -395,15 +411,30 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
       boxRay, [&](int k, double) { consider(k); }, [&] { return nearest; });
   if (bestObj < 0) return false;
 
+  // The hit primitive met in full: its normals (the candidates carried
+  // markers, N18) and which side of its own surface the ray is on.
+  PrimHit own;
+  const bool ownHit = intersectModern(scene_.prims[bestNode.prim].type,
+                                      transformRay(ray, inverse_[bestNode.prim]), own);
+  if (!probe) {
+    if (ownHit) {
+      const Vec3& n = bestNode.norm[1] != 0.0 ? own.nOut : own.nIn;
+      bestNode.norm = bestNode.norm[0] < 0.0 ? -n : n;
+    } else {  // (not reached: the same test found this node) the list in full
+      const TList list = objectIntervalsAhead(scene_.objects[bestObj], boxRay, nearest, stats);
+      for (const TNode& node : list)
+        if (node.t == bestNode.t && node.prim == bestNode.prim) {
+          bestNode.norm = node.norm;
+          break;
+        }
+    }
+  }
   surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
   hit.obj = bestObj;
   Vec3 n = hit.normal;
   // Which side of the PRIMITIVE's own surface the ray is on picks the
   // outside or inside map (a difference's cut face shows B's inside).
-  PrimHit own;
-  if (intersectModern(scene_.prims[bestNode.prim].type, transformRay(ray, inverse_[bestNode.prim]),
-                      own))
-    hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
+  if (ownHit) hit.fromInsidePrim = std::abs(nearest - own.tOut) < std::abs(nearest - own.tIn);
   if (dot(n, ray.d) > 0) n = -n;  // face the ray
   hit.normal = n;
   return true;

@@ -64,8 +64,14 @@ class TracerModern {
   // primitive and normal -- is objectIntervals' node; outside it the list may
   // differ. What the render uses (the first node ahead, the solid's length
   // up to a light) lies in the range. No probe: a probe sees every test.
+  // `normals` says what the nodes' normals hold: the primitives' (kFull);
+  // nothing to be read (kNone: for the length inside a solid); or, for
+  // nearestHit, a marker of the primitive's end and sign that
+  // recoverNormal turns into kFull's normal once a node is chosen
+  // (kMarkers: the candidates' normals are never computed).
+  enum class Normals { kFull, kNone, kMarkers };
   TList objectIntervalsAhead(const SceneObject& obj, const BoxRay& ray, double tMax,
-                             TraceStats& stats) const;
+                             TraceStats& stats, Normals normals = Normals::kFull) const;
 
   // The texel at the hit (inverse mapping, N11, N12, N17), probed.
   Rgb surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const;

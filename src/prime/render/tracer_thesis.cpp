@@ -101,14 +101,18 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
       // Not entering the bound's padded box before the light: not met (N18).
       const bool met =
           (probe || modern_.bvh().primBox(obj.boundPrim).entry(boxRay) <= dist) &&
-          intersectModern(b.type, transformRay(ray, modern_.primInverse(obj.boundPrim)), in) &&
+          (probe
+               ? intersectModern(b.type, transformRay(ray, modern_.primInverse(obj.boundPrim)), in)
+               : intersectModernT(b.type, transformRay(ray, modern_.primInverse(obj.boundPrim)),
+                                  in)) &&
           in.tOut > 0.0 && in.tIn < dist;
       if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
       if (!met) return;
     }
     // Only the segment up to the light matters (N18; all of it for a probe).
     const TList list = probe ? modern_.objectIntervals(obj, ray, stats, probe, depth)
-                             : modern_.objectIntervalsAhead(obj, boxRay, dist, stats);
+                             : modern_.objectIntervalsAhead(obj, boxRay, dist, stats,
+                                                            TracerModern::Normals::kNone);
     double inside = 0.0;  // the length of the segment inside the solid
     for (std::size_t i = 0; i + 1 < list.size(); i += 2) {
       const double lo = std::max(0.0, list[i].t), hi = std::min(dist, list[i + 1].t);
