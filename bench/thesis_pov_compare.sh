@@ -111,13 +111,13 @@ for name in "${scenes[@]}"; do
   paired wall "${trace[@]}" --profile thesis --threads 2 -- "${trace[@]}" --profile thesis --threads 1
   one=$bm two=$am
   speedup=$ratio
-  speedupRange="$rmin-$rmax"
+  speedupRange="$(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")"
   speedupMet=$(awk -v r="$speedup" 'BEGIN {print (r >= 1.9) ? "yes" : "no"}')
 
   paired cpu "${trace[@]}" --profile 1991 --threads 1 -- "${trace[@]}" --profile modern --threads 1
   p1991=$am modern=$bm
   modernRatio=$ratio
-  modernRange="$rmin-$rmax"
+  modernRange="$(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")"
   modernMet=$(awk -v r="$modernRatio" 'BEGIN {print (r <= 1.3) ? "yes" : "no"}')
 
   echo "$name,$W,$H,$RUNS,$thesis,$pov,$povRatio,$povMet,$one,$two,$speedup,$speedupMet,$p1991,$modern,$modernRatio,$modernMet" >>"$CSV"
