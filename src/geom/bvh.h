@@ -4,6 +4,7 @@
 // the caller's limit, so a caller that keeps the nearest hit (and breaks ties
 // by its own order) gets exactly what a linear search over all boxes gives.
 #pragma once
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -52,7 +53,11 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
   Item stack[64];
   int top = 0;
   int node = 0;
-  if (!(nodes_[0].box.entry(ray) <= limit())) return;
+  // Aabb::entry is +infinity for a box the ray misses: such a box is never
+  // met, even when limit() is +infinity (nothing found yet).
+  constexpr double kMiss = std::numeric_limits<double>::infinity();
+  auto within = [&](double t) { return t != kMiss && t <= limit(); };
+  if (!within(nodes_[0].box.entry(ray))) return;
   for (;;) {
     const Node& n = nodes_[node];
     bool descend = false;
@@ -60,7 +65,7 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
       for (int k = n.first; k < n.first + n.count; ++k) {
         const int index = order_[k];
         const double t = boxes_[index].entry(ray);
-        if (t <= limit()) visit(index, t);
+        if (within(t)) visit(index, t);
       }
     } else {
       // The nearer child next, the farther one onto the stack.
@@ -68,8 +73,8 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
       const bool leftFirst = tl <= tr;
       const int nearNode = leftFirst ? n.left : n.right, farNode = leftFirst ? n.right : n.left;
       const double tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
-      if (tFar <= limit()) stack[top++] = {farNode, tFar};
-      if (tNear <= limit()) {
+      if (within(tFar)) stack[top++] = {farNode, tFar};
+      if (within(tNear)) {
         node = nearNode;
         descend = true;
       }
