@@ -97,13 +97,18 @@ void forEachGraphFileBytes(const GraphFile& f,
   header.putInt16(f.numPixAcross);
   header.putInt16(f.numPixDown);
   piece(header.bytes());
+  forEachPixelBytes(f.pixels, piece);
+}
+
+void forEachPixelBytes(std::span<const std::int16_t> pixels,
+                       const std::function<void(std::span<const std::uint8_t>)>& piece) {
   if constexpr (std::endian::native == std::endian::little) {
-    piece({reinterpret_cast<const std::uint8_t*>(f.pixels.data()), 2 * f.pixels.size()});
+    piece({reinterpret_cast<const std::uint8_t*>(pixels.data()), 2 * pixels.size()});
   } else {
     constexpr std::size_t kBlock = 1 << 15;
-    for (std::size_t at = 0; at < f.pixels.size(); at += kBlock) {
+    for (std::size_t at = 0; at < pixels.size(); at += kBlock) {
       ByteWriter block;
-      block.putInt16s(std::span(f.pixels).subspan(at, std::min(kBlock, f.pixels.size() - at)));
+      block.putInt16s(pixels.subspan(at, std::min(kBlock, pixels.size() - at)));
       piece(block.bytes());
     }
   }

@@ -50,5 +50,8 @@ void writeGraphFile(const std::string& path, const GraphFile& f);
 // block at a time. For writing and hashing a full-size picture.
 void forEachGraphFileBytes(const GraphFile& f,
                            const std::function<void(std::span<const std::uint8_t>)>& piece);
+// The file bytes of a run of pixels (a row, or all of them), the same way.
+void forEachPixelBytes(std::span<const std::int16_t> pixels,
+                       const std::function<void(std::span<const std::uint8_t>)>& piece);
 
 }  // namespace prime::io

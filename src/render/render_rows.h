@@ -16,7 +16,8 @@ namespace prime {
 struct RowCallbacks {
   // Called on the calling thread about five times a second and once at the end.
   std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
-  // Called on the calling thread for every finished row, in no fixed order.
+  // Called on the calling thread for every finished row, in no fixed order,
+  // within about 25 ms of its finishing.
   std::function<void(int row)> rowDone;
   // Set by anyone (Esc, Ctrl-C): no new row is started.
   const std::atomic<bool>* abort = nullptr;

@@ -15,6 +15,8 @@
 #include <functional>
 #include <future>
 #include <iostream>
+#include <optional>
+#include <span>
 #include <system_error>
 
 #include "legacy_io/common/output_file.h"
@@ -22,6 +24,7 @@
 #include "palette/prime/export.h"
 #include "palette/prime/graph_info.h"
 #include "palette/prime/live_screen.h"
+#include "palette/window/screen_window.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
 #include "src/cli/prime/display_options.h"
@@ -94,12 +97,58 @@ void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, in
                  palette, inlinePalette);
 }
 
+// The graph file written while the render runs: each finished row goes out
+// as soon as every row above it has, from the thread that waits on the
+// render anyway, so that when the last render thread stops only the sync and
+// the rename are left (writing megabytes is work no render thread shares).
+// Uncommitted (an aborted render, an error), the temporary is removed and
+// the target is untouched, as with any OutputFile.
+class GraphStream {
+ public:
+  GraphStream(const std::string& target, const io::GraphFile& header, int rows)
+      : out_(target), pending_(static_cast<std::size_t>(rows)) {
+    io::forEachGraphFileBytes(header, [this](std::span<const std::uint8_t> b) { put(b); });
+  }
+  void row(int i, const std::vector<std::int16_t>& pixels) {
+    pending_[static_cast<std::size_t>(i)] = pixels;
+    while (next_ < pending_.size() && !pending_[next_].empty()) {
+      io::forEachPixelBytes(pending_[next_], [this](std::span<const std::uint8_t> b) { put(b); });
+      std::vector<std::int16_t>().swap(pending_[next_]);
+      ++next_;
+    }
+  }
+  bool complete() const { return next_ == pending_.size(); }
+  void commit() { out_.commit(); }
+  // The companion's size and hash of what was written (G7).
+  std::size_t bytes() const { return bytes_; }
+  std::uint64_t hash() const { return hash_; }
+
+ private:
+  void put(std::span<const std::uint8_t> b) {
+    out_.write(b);
+    hash_ = fnv1a64(b, hash_);
+    bytes_ += b.size();
+  }
+  io::OutputFile out_;
+  std::vector<std::vector<std::int16_t>> pending_;  // finished rows waiting for those above
+  std::size_t next_ = 0;                            // the first row not written yet
+  std::uint64_t hash_ = kFnv1a64Offset;
+  std::size_t bytes_ = 0;
+};
+
 // The graph file and its companion: the file's bytes written from the
 // pixels as they are, their hash taken on another thread meanwhile (a
 // full-size picture is megabytes: work no render thread can share).
 void writeGraphAndCompanion(const std::string& target, const io::GraphFile& graph, int screenWidth,
                             int screenHeight, const std::string& profile, Placement at,
-                            const Palette& palette, bool inlinePalette) {
+                            const Palette& palette, bool inlinePalette,
+                            GraphStream* streamed = nullptr) {
+  if (streamed && streamed->complete()) {  // every row is in it already, and in its hash
+    streamed->commit();
+    writeCompanion(target, streamed->bytes(), streamed->hash(), screenWidth, screenHeight, profile,
+                   at, palette, inlinePalette);
+    return;
+  }
   auto hashOf = [&graph] {
     std::uint64_t h = kFnv1a64Offset;
     io::forEachGraphFileBytes(graph, [&h](std::span<const std::uint8_t> b) { h = fnv1a64(b, h); });
@@ -255,8 +304,12 @@ void addTraceCommand(CLI::App& app, Action& action) {
                                              : paletteNameForGraphType(settings.graphType);
       Palette palette = paletteOf(*display, mappingPalette);
 
-      // The emulated screen, in a window if there can be one.
-      display::LiveScreen screen(screenW, screenH, windowPalettes(palette), dacOf(*display));
+      // The emulated screen, in a window if there can be one. Without one
+      // nothing draws on it: a one-pixel stand-in, not megabytes to clear
+      // before the render can start (4096 x 3072 at --screen 4096 3072).
+      const bool headless = display::headlessReason(display->noWindow).has_value();
+      display::LiveScreen screen(headless ? 1 : screenW, headless ? 1 : screenH,
+                                 windowPalettes(palette), dacOf(*display));
       LiveOptions liveOptions{display->noWindow, *quiet, *noWait, display->zoom, *dir, "trace",
                               "P palette, D DAC"};
       liveOptions.fullscreen = display->fullscreen;
@@ -270,8 +323,18 @@ void addTraceCommand(CLI::App& app, Action& action) {
       RenderCallbacks cb;
       cb.abort = live.abortFlag();
       cb.progress = live.progress();
+      // Quantizing replaces the indices after the render: written then.
+      std::optional<GraphStream> stream;
+      if (!quantizing) {
+        io::GraphFile header;
+        header.graphType = static_cast<std::int16_t>(settings.graphType);
+        header.numPixAcross = static_cast<std::int16_t>(camera.numPixAcross());
+        header.numPixDown = static_cast<std::int16_t>(camera.numPixDown());
+        stream.emplace(target, header, camera.rows());
+      }
       cb.rowDone = [&](int row, const std::vector<std::int16_t>& indices) {
         finished[static_cast<std::size_t>(row)] = 1;
+        if (stream) stream->row(row, indices);
         if (live.windowed()) screen.drawRow(at, row, indices);  // PutPixel(j, i, color)
       };
       RenderResult result;
@@ -294,7 +357,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
                                quantized, true);
       } else {
         writeGraphAndCompanion(target, result.graph, screenW, screenH, options->profile, at,
-                               *findBuiltinPalette(mappingPalette), false);
+                               *findBuiltinPalette(mappingPalette), false,
+                               stream ? &*stream : nullptr);
       }
       std::error_code ec;
       std::filesystem::remove(partial, ec);  // an older aborted run's
