@@ -152,7 +152,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
 
   const int rows = p.yhigh - p.ylow + 1;
   const int threads = threadCount(settings.threads, rows);
-  std::vector<TraceStats> perThread(static_cast<std::size_t>(threads));
+  std::vector<ThreadSlot<TraceStats>> perThread(static_cast<std::size_t>(threads));
   std::vector<CornerTable> tables;
   if (p.aalevel > 0)
     for (int t = 0; t < threads; ++t) tables.emplace_back(tracer, p, settings.recordCorners);
@@ -170,7 +170,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   result.run = renderRows(
       rows, threads,
       [&](int row, int thread) -> std::uint64_t {
-        TraceStats& stats = perThread[static_cast<std::size_t>(thread)];
+        TraceStats& stats = perThread[static_cast<std::size_t>(thread)].value;
         const std::uint64_t before = stats.rays.rays();
         const int y = p.yhigh - row;  // "Images are rendered from the top down"
         const int imageRow = Frame::kSize - 1 - y;
@@ -192,7 +192,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
         return stats.rays.rays() - before;
       },
       rowCallbacks);
-  for (const TraceStats& s : perThread) result.stats += s;
+  for (const auto& s : perThread) result.stats += s.value;
   if (settings.recordCorners) {
     for (auto& t : tables)
       result.corners.insert(result.corners.end(), t.corners.begin(), t.corners.end());

@@ -23,12 +23,12 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
       callbacks.rowDone(
           row, std::span<const Rgb>(&result.raster.at(row, 0), static_cast<std::size_t>(width)));
     };
-  std::vector<TraceStats> perThread(
+  std::vector<ThreadSlot<TraceStats>> perThread(
       static_cast<std::size_t>(threadCount(settings.threads, height)));
   result.run = renderRows(
       height, settings.threads,
       [&](int row, int thread) -> std::uint64_t {
-        TraceStats& stats = perThread[static_cast<std::size_t>(thread)];
+        TraceStats& stats = perThread[static_cast<std::size_t>(thread)].value;
         const std::uint64_t before = stats.rays();
         for (int x = 0; x < width; ++x) {
           checkAbort(callbacks.abort);  // R9
@@ -37,7 +37,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
         return stats.rays() - before;
       },
       rowCallbacks);
-  for (const auto& s : perThread) result.stats += s;
+  for (const auto& s : perThread) result.stats += s.value;
   return result;
 }
 

@@ -6,6 +6,7 @@
 // so the picture is the same bytes for any thread count.
 #pragma once
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <thread>
@@ -33,6 +34,18 @@ struct RowAborted {};
 inline void checkAbort(const std::atomic<bool>* abort) {
   if (abort && abort->load(std::memory_order_relaxed)) throw RowAborted{};
 }
+
+// The width of a cache line: each thread's own state (its statistics, its
+// caches) starts on a line of its own, so that two threads writing their
+// own counters never write the same line (false sharing cost up to 15 % of
+// a two-thread render, depending on where the heap put the states).
+inline constexpr std::size_t kCacheLine = 64;
+
+// A per-thread slot for renderRow's `thread` index: std::vector<ThreadSlot<T>>.
+template <class T>
+struct alignas(kCacheLine) ThreadSlot {
+  T value{};
+};
 
 struct RowsRun {
   double seconds = 0;

@@ -91,7 +91,7 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
                 const RenderCallbacks& callbacks, RenderResult& result) {
   const int rows = camera.rows(), columns = camera.columns();
   const int threads = threadCount(settings.threads, rows);
-  struct PerThread {
+  struct alignas(kCacheLine) PerThread {  // a cache line of its own (kCacheLine)
     TraceStats stats;
     PaletteIndexCache indexOf;
     std::optional<SampleLattice> lattice;

@@ -1,13 +1,12 @@
 #include "src/prime/render/tracer_modern.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "src/math/float_step.h"
 #include "src/prime/geom/csg_modern.h"
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/geom/uv_mapping_1991.h"
@@ -33,20 +32,6 @@ double clamp1(double x) {
 // Internal reflections inside one object before the light counts as trapped
 // (docs/prime/deviations.md N9); the 1991 profile's --tir-cap is its own.
 constexpr int kMaxInternalReflections = 64;
-// std::nextafter(x, +inf) or (x, -inf), bit for bit, without the call into
-// libm (two per secondary ray origin).
-double stepAway(double x, bool up) {
-  if (std::isnan(x)) return x;
-  if (x == 0.0)
-    return up ? std::numeric_limits<double>::denorm_min()
-              : -std::numeric_limits<double>::denorm_min();
-  if (std::isinf(x)) {
-    if ((x > 0.0) == up) return x;
-    return up ? std::numeric_limits<double>::lowest() : std::numeric_limits<double>::max();
-  }
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  return std::bit_cast<double>((x > 0.0) == up ? bits + 1 : bits - 1);
-}
 double finiteOr0(double x) {
   return std::isfinite(x) ? x : 0.0;
 }
