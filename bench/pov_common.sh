@@ -39,33 +39,56 @@ median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[
 POV_VERSION=$(povray --version 2>&1 | grep -m1 -o 'POV-Ray [0-9.][^ ]*' || echo "POV-Ray (version unknown)")
 PRIME_VERSION=$(git -C "$ROOT" describe --always --dirty 2>/dev/null || echo unknown)
 
-# paired_runs PRIME_CMD... -- POV_CMD...: RUNS pairs in $OUT, the two programs
-# back to back and their order swapped every pair, so a drift of the shared
-# machine's speed falls on both. Sets pm, qm (median CPU seconds of prime and
-# POV-Ray), rm_, rmin, rmax (the ratio prime / POV-Ray: median of the pairs,
-# least, most) and met (yes when rm_ <= 0.5).
-paired_runs() {
-  local primeCmd=() povCmd=() primeT=() povT=() ratios=() p q i
-  while [ "$1" != -- ]; do primeCmd+=("$1"); shift; done
+# wall DIR CMD...: the wall-clock seconds of CMD run in DIR, output discarded.
+wall() {
+  "$PY" - "$@" <<'PYEOF'
+import subprocess, sys, time
+t = time.perf_counter()
+subprocess.run(sys.argv[2:], cwd=sys.argv[1], check=True,
+               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+print(f"{time.perf_counter() - t:.6f}")
+PYEOF
+}
+
+# paired MEASURE A... -- B...: RUNS pairs in $OUT measured with MEASURE (cpu
+# or wall), the two commands back to back and their order swapped every
+# pair, so a drift of the shared machine's speed falls on both. Sets am, bm
+# (median seconds of A and B) and ratio, rmin, rmax (A / B: the median of the
+# per-pair ratios, least, most).
+paired() {
+  local measure=$1 a=() b=() ta=() tb=() rs=() x y i
   shift
-  povCmd=("$@")
+  while [ "$1" != -- ]; do a+=("$1"); shift; done
+  shift
+  b=("$@")
   for ((i = 0; i < RUNS; i++)); do
     if ((i % 2 == 0)); then
-      p=$(cpu "$OUT" "${primeCmd[@]}")
-      q=$(cpu "$OUT" "${povCmd[@]}")
+      x=$("$measure" "$OUT" "${a[@]}")
+      y=$("$measure" "$OUT" "${b[@]}")
     else
-      q=$(cpu "$OUT" "${povCmd[@]}")
-      p=$(cpu "$OUT" "${primeCmd[@]}")
+      y=$("$measure" "$OUT" "${b[@]}")
+      x=$("$measure" "$OUT" "${a[@]}")
     fi
-    primeT+=("$p")
-    povT+=("$q")
-    ratios+=("$(awk -v a="$p" -v b="$q" 'BEGIN {printf "%.4f", a / b}')")
+    ta+=("$x")
+    tb+=("$y")
+    rs+=("$(awk -v p="$x" -v q="$y" 'BEGIN {printf "%.4f", p / q}')")
   done
-  pm=$(median "${primeT[@]}")
-  qm=$(median "${povT[@]}")
-  rm_=$(median "${ratios[@]}")
-  rmin=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
-  rmax=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
+  am=$(median "${ta[@]}")
+  bm=$(median "${tb[@]}")
+  ratio=$(median "${rs[@]}")
+  rmin=$(printf '%s\n' "${rs[@]}" | sort -g | head -1)
+  rmax=$(printf '%s\n' "${rs[@]}" | sort -g | tail -1)
+}
+
+# paired_runs PRIME_CMD... -- POV_CMD...: paired CPU times of prime and
+# POV-Ray. Sets pm, qm (median CPU seconds of prime and POV-Ray), rm_, rmin,
+# rmax (the ratio prime / POV-Ray: median of the pairs, least, most) and met
+# (yes when rm_ <= 0.5).
+paired_runs() {
+  paired cpu "$@"
+  pm=$am
+  qm=$bm
+  rm_=$ratio
   met=$(awk -v r="$rm_" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
 }
 

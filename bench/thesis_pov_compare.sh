@@ -38,45 +38,6 @@ SCREEN=(4096 3072)
 NAME=thesis_pov_compare
 source "$ROOT/bench/pov_common.sh"
 
-# wall DIR CMD...: the wall-clock seconds of CMD run in DIR, output discarded.
-wall() {
-  "$PY" - "$@" <<'PYEOF'
-import subprocess, sys, time
-t = time.perf_counter()
-subprocess.run(sys.argv[2:], cwd=sys.argv[1], check=True,
-               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-print(f"{time.perf_counter() - t:.6f}")
-PYEOF
-}
-
-# paired MEASURE A... -- B...: RUNS pairs measured with MEASURE (cpu or wall),
-# order swapped every pair; sets am, bm (medians) and ratio (median of the
-# per-pair b / a) and rmin, rmax.
-paired() {
-  local measure=$1 a=() b=() ta=() tb=() rs=() x y i
-  shift
-  while [ "$1" != -- ]; do a+=("$1"); shift; done
-  shift
-  b=("$@")
-  for ((i = 0; i < RUNS; i++)); do
-    if ((i % 2 == 0)); then
-      x=$("$measure" "$OUT" "${a[@]}")
-      y=$("$measure" "$OUT" "${b[@]}")
-    else
-      y=$("$measure" "$OUT" "${b[@]}")
-      x=$("$measure" "$OUT" "${a[@]}")
-    fi
-    ta+=("$x")
-    tb+=("$y")
-    rs+=("$(awk -v p="$x" -v q="$y" 'BEGIN {printf "%.4f", q / p}')")
-  done
-  am=$(median "${ta[@]}")
-  bm=$(median "${tb[@]}")
-  ratio=$(median "${rs[@]}")
-  rmin=$(printf '%s\n' "${rs[@]}" | sort -g | head -1)
-  rmax=$(printf '%s\n' "${rs[@]}" | sort -g | tail -1)
-}
-
 rm -rf "$OUT"
 mkdir -p "$OUT/scenes"
 loadStart=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -104,18 +65,18 @@ for name in "${scenes[@]}"; do
 
   paired cpu "${trace[@]}" --profile thesis --threads 1 -- "${povCmd[@]}"
   thesis=$am pov=$bm
-  povRatio=$(awk -v r="$ratio" 'BEGIN {printf "%.3f", 1 / r}')  # median of pov/prime inverted
-  povRange="$(awk -v r="$rmax" 'BEGIN {printf "%.2f", 1 / r}')-$(awk -v r="$rmin" 'BEGIN {printf "%.2f", 1 / r}')"
+  povRatio=$ratio
+  povRange="$(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")"
   povMet=$(awk -v r="$povRatio" 'BEGIN {print (r <= 0.5) ? "yes" : "no"}')
 
-  paired wall "${trace[@]}" --profile thesis --threads 2 -- "${trace[@]}" --profile thesis --threads 1
-  one=$bm two=$am
+  paired wall "${trace[@]}" --profile thesis --threads 1 -- "${trace[@]}" --profile thesis --threads 2
+  one=$am two=$bm
   speedup=$ratio
   speedupRange="$(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")"
   speedupMet=$(awk -v r="$speedup" 'BEGIN {print (r >= 1.9) ? "yes" : "no"}')
 
-  paired cpu "${trace[@]}" --profile 1991 --threads 1 -- "${trace[@]}" --profile modern --threads 1
-  p1991=$am modern=$bm
+  paired cpu "${trace[@]}" --profile modern --threads 1 -- "${trace[@]}" --profile 1991 --threads 1
+  modern=$am p1991=$bm
   modernRatio=$ratio
   modernRange="$(printf '%.2f' "$rmin")-$(printf '%.2f' "$rmax")"
   modernMet=$(awk -v r="$modernRatio" 'BEGIN {print (r <= 1.3) ? "yes" : "no"}')
