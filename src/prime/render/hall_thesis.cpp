@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace prime {
 
@@ -42,68 +41,55 @@ std::array<HallTerms, 3> hallTermsThesis(const HallHue& h, const Rgb& texel, con
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   const Vec3 v = -view;  // towards the viewer
   const double nv = std::clamp(dot(n, v), 0.0, 1.0);
-  // What each light's terms need apart from the channel: the same values,
-  // computed once instead of once per channel.
-  struct Geometry {
-    double nl = 0;     // N.L
-    double cosF = 0;   // the Fresnel term's angle: V.H_j, or |V.H'_j| behind
-    double power = 0;  // (N.H_j)^kRH, or (-N.H'_j)^kTH behind
-    bool transmits = false;
-  };
-  constexpr std::size_t kStack = 16;
-  std::array<Geometry, kStack> stackGeometry{};
-  std::vector<Geometry> heapGeometry;  // (only for more lights than a scene can hold)
-  Geometry* geometry = stackGeometry.data();
-  if (lights.size() > kStack) {
-    heapGeometry.resize(lights.size());
-    geometry = heapGeometry.data();
+  std::array<double, 3> eta{};  // from F(0), per channel
+  for (int c = 0; c < 3; ++c) {
+    const double f0 = texel[c];
+    eta[c] = f0 > 0.0 && f0 < 1.0 ? etaFromF0(f0) : 1.0;
   }
-  for (std::size_t j = 0; j < lights.size(); ++j) {
-    Geometry& g = geometry[j];
-    const Vec3 l = normalized(lights[j].pt - point);
-    g.nl = dot(n, l);
-    if (g.nl > 0.0) {  // the light on the viewer's side: reflection
+  // Lights outside, channels inside: each light's geometry (L, H, the
+  // power) once, not once per channel; each channel still sums its lights
+  // in order, so the sums are the per-channel loop's to the bit.
+  std::array<double, 3> a{}, b{}, cd{}, dd{};
+  for (const ThesisLight& light : lights) {
+    const Vec3 l = normalized(light.pt - point);
+    const double nl = dot(n, l);
+    double cosF = 0, power = 0;  // the Fresnel term's angle, (N.H_j)^kRH or (-N.H'_j)^kTH
+    bool transmits = false;
+    if (nl > 0.0) {  // the light on the viewer's side: reflection
       const Vec3 hj = normalized(l + v);
-      const double nh = std::max(0.0, dot(n, hj));
-      g.cosF = dot(v, hj);
-      g.power = std::pow(nh, std::max(0.0, h.kRH));
-    } else if (g.nl < 0.0 && h.indx != 1.0 && h.indx > 0.0) {
+      cosF = dot(v, hj);
+      power = std::pow(std::max(0.0, dot(n, hj)), std::max(0.0, h.kRH));
+    } else if (nl < 0.0 && h.indx != 1.0 && h.indx > 0.0) {
       // Behind the surface: transmission; H' = (V + indx L)/(indx - 1), along -n (N10).
       const Vec3 ht = normalized((v + l * h.indx) * (1.0 / (h.indx - 1.0)));
-      const double nht = std::max(0.0, -dot(n, ht));
-      g.cosF = std::abs(dot(v, ht));
-      g.power = std::pow(nht, std::max(0.0, h.kTH));
-      g.transmits = true;
+      cosF = std::abs(dot(v, ht));
+      power = std::pow(std::max(0.0, -dot(n, ht)), std::max(0.0, h.kTH));
+      transmits = true;
+    }
+    for (int c = 0; c < 3; ++c) {
+      const double iL = light.intensity[c] * light.visibility[c];
+      if (iL == 0.0) continue;
+      if (nl > 0.0) {
+        a[c] += iL * fresnelWithEta(texel[c], eta[c], cosF) * power;
+        cd[c] += iL * nl;
+      } else if (nl < 0.0) {
+        if (transmits) b[c] += iL * (1.0 - fresnelWithEta(texel[c], eta[c], cosF)) * power;
+        dd[c] += iL * -nl;
+      }
     }
   }
   const double transmissivity = std::pow(h.tT, sT);  // tT^sT, the same for every channel
   std::array<HallTerms, 3> terms{};
   for (int c = 0; c < 3; ++c) {
-    const double f0 = texel[c];
-    const double eta = f0 > 0.0 && f0 < 1.0 ? etaFromF0(f0) : 1.0;
-    double a = 0, b = 0, cd = 0, dd = 0;
-    for (std::size_t j = 0; j < lights.size(); ++j) {
-      const ThesisLight& light = lights[j];
-      const double iL = light.intensity[c] * light.visibility[c];
-      if (iL == 0.0) continue;
-      const Geometry& g = geometry[j];
-      if (g.nl > 0.0) {
-        a += iL * fresnelWithEta(f0, eta, g.cosF) * g.power;
-        cd += iL * g.nl;
-      } else if (g.nl < 0.0) {
-        if (g.transmits) b += iL * (1.0 - fresnelWithEta(f0, eta, g.cosF)) * g.power;
-        dd += iL * -g.nl;
-      }
-    }
     const double ia = ambient[c];
     const double colour = texelInDiffuse ? std::clamp(texel[c], 0.0, 1.0) : 1.0;
     const double fDR = h.fDR[c] * colour, fDT = (1.0 - h.fDR[c]) * colour;
-    const double fsr = fresnelWithEta(f0, eta, nv);
+    const double fsr = fresnelWithEta(texel[c], eta[c], nv);
     HallTerms& t = terms[static_cast<std::size_t>(c)];
-    t.specularReflection = kSR * a;
-    t.specularTransmission = kST * b;
-    t.diffuseReflection = h.kDR * fDR * (ia + cd);
-    t.diffuseTransmission = h.kDT * fDT * (ia + dd);
+    t.specularReflection = kSR * a[c];
+    t.specularTransmission = kST * b[c];
+    t.diffuseReflection = h.kDR * fDR * (ia + cd[c]);
+    t.diffuseTransmission = h.kDT * fDT * (ia + dd[c]);
     t.reflected = kSR * iSR[c] * fsr;
     t.transmitted = kST * iST[c] * (1.0 - fsr) * transmissivity;
   }
