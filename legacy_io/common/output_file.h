@@ -8,6 +8,10 @@
 //     before anything is written: renaming over it would replace the device
 //     node, and opening a FIFO would block. So is a target that is an input of
 //     the run (run_inputs.h), and a target whose directory does not exist.
+//   - Every whole MiB written is handed to the disk at once (write-behind:
+//     sync_file_range on Linux), so that the sync at the end of a long
+//     stream of writes, such as a graph file written while its render runs,
+//     waits for the last MiB only.
 //   - commit() flushes, syncs, closes and renames the temporary over the
 //     target (a symbolic link at the target is replaced, never written
 //     through); an uncommitted temporary is removed when the OutputFile goes,
@@ -54,10 +58,12 @@ class OutputFile {
  private:
   [[noreturn]] void fail(const std::string& what, int error);
   void dropTemporary();
+  void writeBehind();
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
   bool committed_ = false;
-  int slot_ = -1;  // in the signal handler's list of live temporaries
+  int slot_ = -1;                               // in the signal handler's list of live temporaries
+  std::uint64_t written_ = 0, handedOver_ = 0;  // bytes written; bytes handed to the disk
 };
 
 // Throws InputError (naming `path`) unless `path` may be written as an

@@ -1,8 +1,11 @@
 #include "palette/prime/graph_info.h"
 
+#include <xxhash.h>
+
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -20,6 +23,34 @@ std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes, std::uint64_t h) {
   return h;
 }
 
+const char* graphHashName(GraphHashKind kind) {
+  return kind == GraphHashKind::Xxh3_64 ? "xxh3-64" : "fnv1a64";
+}
+
+std::uint64_t graphHash(GraphHashKind kind, std::span<const std::uint8_t> bytes) {
+  if (kind == GraphHashKind::Fnv1a64) return fnv1a64(bytes);
+  return XXH3_64bits(bytes.data(), bytes.size());
+}
+
+struct Xxh3Stream::State {
+  XXH3_state_t* s = XXH3_createState();
+  ~State() { XXH3_freeState(s); }
+};
+
+Xxh3Stream::Xxh3Stream() : state_(std::make_unique<State>()) {
+  if (state_->s == nullptr) throw std::bad_alloc();
+  XXH3_64bits_reset(state_->s);
+}
+Xxh3Stream::~Xxh3Stream() = default;
+
+void Xxh3Stream::add(std::span<const std::uint8_t> bytes) {
+  XXH3_64bits_update(state_->s, bytes.data(), bytes.size());
+}
+
+std::uint64_t Xxh3Stream::digest() const {
+  return XXH3_64bits_digest(state_->s);
+}
+
 std::string graphInfoPath(const std::string& graphPath) {
   return graphPath + ".info";
 }
@@ -31,7 +62,7 @@ std::string formatGraphInfo(const GraphInfo& info) {
   s << "prime-graph-info 1\n"
     << "# beside a graph file: how prime view and prime export show it "
        "(docs/prime/file-formats.md)\n"
-    << "graph " << info.graphBytes << " fnv1a64 " << hash << "\n"
+    << "graph " << info.graphBytes << " " << graphHashName(info.hashKind) << " " << hash << "\n"
     << "profile " << info.profile << "\n"
     << "screen " << info.screenWidth << " " << info.screenHeight << "\n"
     << "at " << info.at.left << " " << info.at.top << "\n";
@@ -116,9 +147,14 @@ GraphInfo parseGraphInfo(std::string_view text, const std::string& fileName) {
     };
     if (w[0] == "graph") {
       once(0);
-      count(4, "graph BYTES fnv1a64 HASH");
+      count(4, "graph BYTES xxh3-64 HASH");
       info.graphBytes = number<std::uint64_t>(w[1], 0, ~0ull, at, "graph size");
-      if (w[2] != "fnv1a64") throw io::InputError(at, "graph hash", "'fnv1a64'", "'" + w[2] + "'");
+      if (w[2] == "xxh3-64")
+        info.hashKind = GraphHashKind::Xxh3_64;
+      else if (w[2] == "fnv1a64")  // the companions written before G12
+        info.hashKind = GraphHashKind::Fnv1a64;
+      else
+        throw io::InputError(at, "graph hash", "'xxh3-64' or 'fnv1a64'", "'" + w[2] + "'");
       if (w[3].size() != 16)
         throw io::InputError(at, "graph hash", "16 hexadecimal digits", "'" + w[3] + "'");
       info.graphHash = number<std::uint64_t>(w[3], 0, ~0ull, at, "graph hash", 16);
@@ -198,7 +234,8 @@ FoundGraphInfo findGraphInfo(const std::string& graphPath,
   if (!std::filesystem::exists(path, ec)) return found;
   const std::string text = io::readInputText(path, {1u << 20, "a graph file's companion", ""});
   GraphInfo info = parseGraphInfo(text, path);
-  if (info.graphBytes != graphBytes.size() || info.graphHash != fnv1a64(graphBytes)) {
+  if (info.graphBytes != graphBytes.size() ||
+      info.graphHash != graphHash(info.hashKind, graphBytes)) {
     found.stale = path + " describes another graph file (size or hash differ): ignored";
     return found;
   }

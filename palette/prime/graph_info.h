@@ -3,12 +3,12 @@
 // `graph_scr` (the graph file's name plus ".info"), recording what the graph
 // file cannot: the screen and the place the picture was drawn at, the palette
 // its indices mean (a built-in name, or the 256 DAC entries of a quantized
-// render), the profile, and the graph file's size and FNV-1a hash so that a
-// companion left beside another graph file is recognised. The graph file
-// itself stays byte-exact.
+// render), the profile, and the graph file's size and hash (XXH3, 64 bits;
+// FNV-1a in companions written before G12) so that a companion left beside
+// another graph file is recognised. The graph file itself stays byte-exact.
 //
 //   prime-graph-info 1
-//   graph 537606 fnv1a64 8f3c0d1e2a4b5c6d
+//   graph 537606 xxh3-64 8f3c0d1e2a4b5c6d
 //   profile 1991
 //   screen 1024 768
 //   at 675 0
@@ -17,6 +17,7 @@
 //   ...                                  INDEX R G B, 0..63, in index order
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -27,9 +28,33 @@
 
 namespace prime {
 
+// The hash a companion records of its graph file's bytes (G7, G12): XXH3
+// (64 bits, seed 0, libxxhash) is written; FNV-1a (64 bits), which the port
+// wrote before, is still read.
+enum class GraphHashKind { Xxh3_64, Fnv1a64 };
+const char* graphHashName(GraphHashKind kind);  // "xxh3-64", "fnv1a64": the file's word
+std::uint64_t graphHash(GraphHashKind kind, std::span<const std::uint8_t> bytes);
+
+// XXH3 (64 bits, seed 0) of bytes handed over piece by piece, in order: the
+// same as graphHash(Xxh3_64, all of them).
+class Xxh3Stream {
+ public:
+  Xxh3Stream();
+  ~Xxh3Stream();
+  Xxh3Stream(const Xxh3Stream&) = delete;
+  Xxh3Stream& operator=(const Xxh3Stream&) = delete;
+  void add(std::span<const std::uint8_t> bytes);
+  std::uint64_t digest() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 struct GraphInfo {
   std::uint64_t graphBytes = 0;  // the graph file's size
-  std::uint64_t graphHash = 0;   // FNV-1a (64 bits) of its bytes
+  GraphHashKind hashKind = GraphHashKind::Xxh3_64;
+  std::uint64_t graphHash = 0;   // of its bytes, by hashKind
   std::string profile = "1991";  // one word
   int screenWidth = Screen::kWidth, screenHeight = Screen::kHeight;
   Placement at;

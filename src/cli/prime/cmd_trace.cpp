@@ -93,8 +93,8 @@ void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, in
                     int screenHeight, const std::string& profile, Placement at,
                     const Palette& palette, bool inlinePalette) {
   const std::vector<std::uint8_t> bytes = io::toBytes(graph);
-  writeCompanion(graphPath, bytes.size(), fnv1a64(bytes), screenWidth, screenHeight, profile, at,
-                 palette, inlinePalette);
+  writeCompanion(graphPath, bytes.size(), graphHash(GraphHashKind::Xxh3_64, bytes), screenWidth,
+                 screenHeight, profile, at, palette, inlinePalette);
 }
 
 // The graph file written while the render runs: each finished row goes out
@@ -121,18 +121,18 @@ class GraphStream {
   void commit() { out_.commit(); }
   // The companion's size and hash of what was written (G7).
   std::size_t bytes() const { return bytes_; }
-  std::uint64_t hash() const { return hash_; }
+  std::uint64_t hash() const { return hash_.digest(); }
 
  private:
   void put(std::span<const std::uint8_t> b) {
     out_.write(b);
-    hash_ = fnv1a64(b, hash_);
+    hash_.add(b);
     bytes_ += b.size();
   }
   io::OutputFile out_;
   std::vector<std::vector<std::int16_t>> pending_;  // finished rows waiting for those above
   std::size_t next_ = 0;                            // the first row not written yet
-  std::uint64_t hash_ = kFnv1a64Offset;
+  Xxh3Stream hash_;
   std::size_t bytes_ = 0;
 };
 
@@ -150,9 +150,9 @@ void writeGraphAndCompanion(const std::string& target, const io::GraphFile& grap
     return;
   }
   auto hashOf = [&graph] {
-    std::uint64_t h = kFnv1a64Offset;
-    io::forEachGraphFileBytes(graph, [&h](std::span<const std::uint8_t> b) { h = fnv1a64(b, h); });
-    return h;
+    Xxh3Stream h;
+    io::forEachGraphFileBytes(graph, [&h](std::span<const std::uint8_t> b) { h.add(b); });
+    return h.digest();
   };
   std::future<std::uint64_t> hash;
   try {

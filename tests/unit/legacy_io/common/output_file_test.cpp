@@ -148,6 +148,29 @@ TEST(OutputFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
   EXPECT_EQ(read(target), "new");
 }
 
+TEST(OutputFile, MegabytesWrittenBehindArriveWholeAndOnlyAtCommit) {
+  // Past every whole MiB the written bytes are handed to the disk early
+  // (write-behind); the file is still the temporary until commit, and its
+  // bytes are exactly those written, in order, across the MiB boundaries.
+  TempDir dir;
+  const fs::path target = dir / "big";
+  std::string expected;
+  {
+    OutputFile out(target.string());
+    for (int piece = 0; expected.size() < 3u * 1024 * 1024 + 12345; ++piece) {
+      std::string s(static_cast<std::size_t>(1000 + piece * 37 % 70000), '\0');
+      for (std::size_t i = 0; i < s.size(); ++i) s[i] = static_cast<char>('a' + (piece + i) % 26);
+      out.write(std::string_view(s));
+      expected += s;
+    }
+    EXPECT_FALSE(fs::exists(target));
+    EXPECT_GE(fs::file_size(out.temporary()), 3u * 1024 * 1024);  // handed over, not yet renamed
+    out.commit();
+  }
+  EXPECT_EQ(read(target), expected);
+  EXPECT_EQ(entries(dir.path()), 1);
+}
+
 TEST(OutputFile, AnOutputKeepsTheUsualPermissions) {
   TempDir dir;
   const mode_t mask = ::umask(022);

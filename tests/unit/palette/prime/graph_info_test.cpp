@@ -3,10 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 
 namespace prime {
 namespace {
@@ -31,14 +33,43 @@ TEST(GraphInfo, Fnv1a64KnownValues) {
   EXPECT_EQ(fnv1a64(a), 0xaf63dc4c8601ec8cull);
 }
 
+TEST(GraphInfo, Xxh3KnownValues) {
+  // The published XXH3-64 test vectors (seed 0): xxHash's own sanity check
+  // for the empty string; "a" and "abc" as other implementations give them.
+  EXPECT_EQ(graphHash(GraphHashKind::Xxh3_64, {}), 0x2d06800538d394c2ull);
+  const std::uint8_t a[] = {'a'}, abc[] = {'a', 'b', 'c'};
+  EXPECT_EQ(graphHash(GraphHashKind::Xxh3_64, a), 0xe6c632b61e964e1full);
+  EXPECT_EQ(graphHash(GraphHashKind::Xxh3_64, abc), 0x78af5f94892f3950ull);
+  EXPECT_EQ(graphHash(GraphHashKind::Fnv1a64, a), 0xaf63dc4c8601ec8cull);
+}
+
+TEST(GraphInfo, Xxh3StreamIsTheHashOfEverythingGiven) {
+  // Pieces of every size across XXH3's internal block boundaries.
+  std::vector<std::uint8_t> bytes(100000);
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    bytes[i] = static_cast<std::uint8_t>(i * 7 + i / 251);
+  Xxh3Stream s;
+  std::size_t at = 0, piece = 1;
+  while (at < bytes.size()) {
+    const std::size_t n = std::min(piece, bytes.size() - at);
+    s.add(std::span(bytes).subspan(at, n));
+    at += n;
+    piece = piece * 3 % 4099 + 1;
+  }
+  EXPECT_EQ(s.digest(), graphHash(GraphHashKind::Xxh3_64, bytes));
+  EXPECT_NE(s.digest(), graphHash(GraphHashKind::Xxh3_64, std::span(bytes).first(99999)));
+  EXPECT_EQ(Xxh3Stream().digest(), 0x2d06800538d394c2ull);
+}
+
 TEST(GraphInfo, BuiltinPaletteRoundTrip) {
   const GraphInfo info = sample();
   const std::string text = formatGraphInfo(info);
-  EXPECT_THAT(text, ::testing::HasSubstr("graph 538306 fnv1a64 0123456789abcdef\n"));
+  EXPECT_THAT(text, ::testing::HasSubstr("graph 538306 xxh3-64 0123456789abcdef\n"));
   EXPECT_THAT(text, ::testing::HasSubstr("palette plate3\n"));
   const GraphInfo back = parseGraphInfo(text, "x.info");
   EXPECT_EQ(back.graphBytes, info.graphBytes);
   EXPECT_EQ(back.graphHash, info.graphHash);
+  EXPECT_EQ(back.hashKind, GraphHashKind::Xxh3_64);
   EXPECT_EQ(back.profile, "modern");
   EXPECT_EQ(back.screenWidth, 800);
   EXPECT_EQ(back.screenHeight, 600);
@@ -84,7 +115,7 @@ TEST(GraphInfo, DamagedFilesAreLocatedErrors) {
   expectError("prime-graph-info 2\n", 1, "first line");
   // Line 2 is the comment, line 3 the graph line.
   std::string t = good;
-  t.replace(t.find("fnv1a64 "), 8, "md5 ");
+  t.replace(t.find("xxh3-64 "), 8, "md5 ");
   expectError(t, 3, "graph hash");
   t = good;
   t.replace(t.find("screen 800"), 10, "screen -800");
@@ -120,13 +151,27 @@ TEST(GraphInfo, FoundOnlyBesideTheBytesItDescribes) {
   EXPECT_FALSE(findGraphInfo(graph, bytes).info);  // none there
   GraphInfo info = sample();
   info.graphBytes = bytes.size();
-  info.graphHash = fnv1a64(bytes);
+  info.graphHash = graphHash(GraphHashKind::Xxh3_64, bytes);
   writeGraphInfo(graphInfoPath(graph), info);
   EXPECT_EQ(graphInfoPath(graph), graph + ".info");
   const FoundGraphInfo found = findGraphInfo(graph, bytes);
   ASSERT_TRUE(found.info);
   EXPECT_EQ(found.info->at.left, 527);
   EXPECT_TRUE(found.stale.empty());
+  // A companion written before G12 carries FNV-1a: still recognised, and
+  // still told apart from other bytes.
+  info.hashKind = GraphHashKind::Fnv1a64;
+  info.graphHash = fnv1a64(bytes);
+  writeGraphInfo(graphInfoPath(graph), info);
+  EXPECT_THAT(io::readInputText(graphInfoPath(graph), {1u << 20, "x", ""}),
+              ::testing::HasSubstr(" fnv1a64 "));
+  ASSERT_TRUE(findGraphInfo(graph, bytes).info);
+  EXPECT_EQ(findGraphInfo(graph, bytes).info->hashKind, GraphHashKind::Fnv1a64);
+  info.graphHash = graphHash(GraphHashKind::Xxh3_64, bytes);  // the other algorithm's value
+  writeGraphInfo(graphInfoPath(graph), info);
+  EXPECT_FALSE(findGraphInfo(graph, bytes).info);
+  info.hashKind = GraphHashKind::Xxh3_64;
+  writeGraphInfo(graphInfoPath(graph), info);
   std::vector<std::uint8_t> other = bytes;
   other.back() = 8;  // same size, other bytes
   const FoundGraphInfo stale = findGraphInfo(graph, other);
