@@ -156,6 +156,17 @@ std::unique_ptr<DirLock> lockForModel(const SceneDir& scene, bool wait) {
 }
 
 std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene) {
+  // A directory with nothing of a PRIME scene in it (another system's scene,
+  // an empty directory) gets no lock file: the reader's error follows, and
+  // the directory is left as it was.
+  std::error_code ec;
+  bool prime = false;
+  for (const char* name : {"Model.txt", kModelStamp, kModelJournal, kModelLock, "prim", "obj"})
+    prime = prime || fs::exists(scene.find(".", name), ec);
+  if (!prime) {
+    verifyModel(scene);
+    return nullptr;
+  }
   std::unique_ptr<DirLock> lock;
   try {
     lock = std::make_unique<DirLock>((scene.root() / kModelLock).string(), "prime model");
@@ -168,7 +179,6 @@ std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene) {
               << scene.display(scene.root()) << "\n";
     lock->lock(DirLock::Mode::Shared);
   }
-  std::error_code ec;
   if (fs::exists(scene.root() / kModelJournal, ec)) {
     // An interrupted run: finish it, alone (flock converts the lock).
     lock->lock(DirLock::Mode::Exclusive);

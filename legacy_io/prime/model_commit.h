@@ -49,7 +49,9 @@ std::unique_ptr<DirLock> lockForModel(const SceneDir& scene, bool wait);
 // finish), finishes an interrupted run's journal, and checks the databases
 // against the stamp; throws InputError. Returns the held lock (release it
 // when the databases are read), or null if the scene directory is not
-// writable (then the databases are only checked).
+// writable or holds nothing of a PRIME scene (no Model.txt, prim/, obj/,
+// stamp, journal or lock: then nothing is created in it and the databases
+// are only checked).
 std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene);
 
 // Writes `files` as one switch (steps 1-4 above). The caller holds the

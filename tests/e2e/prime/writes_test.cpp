@@ -227,6 +227,29 @@ TEST(WritesMalone, TraceDoesNotWriteItsPictureOverItsSceneFile) {
   EXPECT_EQ(s.read("a.mal"), before);
 }
 
+TEST(WritesReaders, ADirectoryWithoutAPrimeSceneIsLeftAsItWas) {
+  // A PRIME reader pointed at an empty directory or at another system's
+  // scene files says what is missing and creates nothing there (before, it
+  // left its lock file, prime-model.lock, behind).
+  TempScene s;
+  const fs::path empty = s.path("empty"), cgl = s.path("cgl");
+  fs::create_directories(empty);
+  fs::create_directories(cgl);
+  fs::copy(fs::path(PRIME_SCENES) / ".." / "cgl" / "ball.cgl", cgl / "ball.cgl");
+  for (const fs::path& dir : {empty, cgl}) {
+    std::vector<std::string> before;
+    for (const auto& e : fs::directory_iterator(dir)) before.push_back(e.path().string());
+    for (const std::string command : {"trace -q --no-window ", "probe --pixel 10 10 "}) {
+      const auto r = runPrime(command + dir.string());
+      EXPECT_EQ(r.status, 1) << command << dir << "\n" << r.output;
+      EXPECT_NE(r.output.find("prim/PrimFile does not exist"), std::string::npos) << r.output;
+    }
+    std::vector<std::string> after;
+    for (const auto& e : fs::directory_iterator(dir)) after.push_back(e.path().string());
+    EXPECT_EQ(after, before);
+  }
+}
+
 TEST(WritesModelTxt, CrOnlyLinesModelTheSameScene) {
   TempScene lf, cr;
   for (TempScene* t : {&lf, &cr})
