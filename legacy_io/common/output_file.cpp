@@ -198,6 +198,9 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
     ::close(fd);
     fail("cannot write", error);
   }
+  // 64 KiB at a time: a graph file written row by row (2.8 KB at 4x) makes
+  // a sixteenth of the system calls stdio's 4 KiB would.
+  std::setvbuf(file_, nullptr, _IOFBF, 1u << 16);
 }
 
 OutputFile::~OutputFile() {

@@ -109,11 +109,12 @@ class GraphStream {
       : out_(target), pending_(static_cast<std::size_t>(rows)) {
     io::forEachGraphFileBytes(header, [this](std::span<const std::uint8_t> b) { put(b); });
   }
-  void row(int i, const std::vector<std::int16_t>& pixels) {
+  // `pixels` stays where it is (the render's picture) until the render
+  // returns: a row that waits for those above it is written from there.
+  void row(int i, std::span<const std::int16_t> pixels) {
     pending_[static_cast<std::size_t>(i)] = pixels;
-    while (next_ < pending_.size() && !pending_[next_].empty()) {
+    while (next_ < pending_.size() && pending_[next_].data() != nullptr) {
       io::forEachPixelBytes(pending_[next_], [this](std::span<const std::uint8_t> b) { put(b); });
-      std::vector<std::int16_t>().swap(pending_[next_]);
       ++next_;
     }
   }
@@ -130,8 +131,8 @@ class GraphStream {
     bytes_ += b.size();
   }
   io::OutputFile out_;
-  std::vector<std::vector<std::int16_t>> pending_;  // finished rows waiting for those above
-  std::size_t next_ = 0;                            // the first row not written yet
+  std::vector<std::span<const std::int16_t>> pending_;  // finished rows (null: not yet)
+  std::size_t next_ = 0;                                // the first row not written yet
   Xxh3Stream hash_;
   std::size_t bytes_ = 0;
 };
@@ -332,7 +333,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
         header.numPixDown = static_cast<std::int16_t>(camera.numPixDown());
         stream.emplace(target, header, camera.rows());
       }
-      cb.rowDone = [&](int row, const std::vector<std::int16_t>& indices) {
+      cb.rowDone = [&](int row, std::span<const std::int16_t> indices) {
         finished[static_cast<std::size_t>(row)] = 1;
         if (stream) stream->row(row, indices);
         if (live.windowed()) screen.drawRow(at, row, indices);  // PutPixel(j, i, color)

@@ -141,7 +141,7 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
   if (callbacks.rowDone)
     rowCallbacks.rowDone = [&](int i) {
       const auto* first = &result.graph.pixels[static_cast<std::size_t>(i) * columns];
-      callbacks.rowDone(i, std::vector<std::int16_t>(first, first + columns));
+      callbacks.rowDone(i, std::span<const std::int16_t>(first, static_cast<std::size_t>(columns)));
     };
   const RowsRun run = renderRows(rows, threads, renderRow, rowCallbacks);
   for (const PerThread& t : perThread) {

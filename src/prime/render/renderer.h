@@ -53,7 +53,9 @@ struct RenderCallbacks {
   // Called on the calling thread about five times a second and once at the end.
   std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
   // Called on the calling thread for every finished row, in no fixed order.
-  std::function<void(int row, const std::vector<std::int16_t>& rowIndices)> rowDone;
+  // rowIndices is the row in the render's picture: it stays there, unchanged,
+  // until render() returns.
+  std::function<void(int row, std::span<const std::int16_t> rowIndices)> rowDone;
   const std::atomic<bool>* abort = nullptr;
 };
 
