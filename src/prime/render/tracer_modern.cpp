@@ -195,6 +195,27 @@ TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& b
 
 bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, double tMax,
                                   TraceStats& stats, TNode& node) const {
+  if (programs_[object].isSingleLeaf()) {
+    // A lone primitive: objectIntervalsAhead's two nodes (entry, exit) and
+    // the first of them ahead, without building the list (N18).
+    ++stats.objectTests;
+    const int prim = scene_.objects[object].entries[0].l;
+    const double entry = bvh_.primBox(prim).entry(boxRay);
+    if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return false;
+    ++stats.primitiveTests;
+    PrimHit in;
+    if (!intersectModernT(scene_.prims[prim].type, transformRay(boxRay.ray, inverse_[prim]), in))
+      return false;
+    if (in.tIn > 0.0) {
+      node = TNode{in.tIn, prim, kSurfOut, kEntryMarker};
+      return true;
+    }
+    if (in.tOut > 0.0) {
+      node = TNode{in.tOut, prim, kSurfIn, kExitMarker};
+      return true;
+    }
+    return false;
+  }
   const std::vector<int>& leaves = unionLeaves_[object];
   if (!leaves.empty()) {
     // A union of primitives seen from outside all of them: its first node
