@@ -1,5 +1,6 @@
 #include "legacy_io/prime/model_commit.h"
 
+#include <openssl/crypto.h>
 #include <openssl/evp.h>
 #include <signal.h>
 #include <unistd.h>
@@ -26,9 +27,17 @@ constexpr const char* kHeader = "prime-model 1";
 constexpr std::uint64_t kMaxDatabase = 64ull << 20;
 
 std::string sha256(const std::vector<std::uint8_t>& bytes) {
+  // Only SHA-256 is asked of OpenSSL: its configuration file (providers,
+  // engines) and its tables of every cipher and digest have nothing to add,
+  // and setting them up cost every reader of a scene half a millisecond of
+  // CPU (perf stat of `prime probe`, 4.2 -> 3.7 ms).
+  static const bool initialised =
+      OPENSSL_init_crypto(OPENSSL_INIT_NO_LOAD_CONFIG | OPENSSL_INIT_NO_ADD_ALL_CIPHERS |
+                              OPENSSL_INIT_NO_ADD_ALL_DIGESTS,
+                          nullptr) == 1;
   unsigned char md[EVP_MAX_MD_SIZE];
   unsigned int n = 0;
-  if (EVP_Digest(bytes.data(), bytes.size(), md, &n, EVP_sha256(), nullptr) != 1)
+  if (!initialised || EVP_Digest(bytes.data(), bytes.size(), md, &n, EVP_sha256(), nullptr) != 1)
     throw std::runtime_error("SHA-256 failed (OpenSSL)");
   static const char* hex = "0123456789abcdef";
   std::string s;
