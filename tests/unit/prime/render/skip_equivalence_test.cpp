@@ -8,7 +8,10 @@
 #include <random>
 
 #include "src/prime/math/listing_matrix.h"
+#include "src/prime/render/probe.h"
 #include "src/prime/render/tracer_1991.h"
+#include "src/prime/render/tracer_modern.h"
+#include "src/prime/render/tracer_thesis.h"
 
 namespace prime {
 namespace {
@@ -90,6 +93,49 @@ TEST(SkipEquivalence, BvhAndBoxCullingGiveTheLinearSearchColours) {
     EXPECT_GT(hits, 500);  // the rays do meet objects
     EXPECT_LT(fatal, 40);  // and almost all of them are compared
     EXPECT_LT(sFast.primitiveTests, sLinear.primitiveTests / 3);  // and the skipping skips
+  }
+}
+
+// The modern and thesis profiles' shortcuts (N18: box culling, a union's or
+// a lone primitive's nearest entry without the list, tests without normals
+// and the normal recovered from a marker) against the full evaluation a
+// probe sees: the same colour bit for bit, for rays from outside every
+// object and for rays that start inside one (a lone primitive's exit, a
+// union's general way).
+TEST(SkipEquivalence, ModernShortcutsGiveTheProbesFullEvaluation) {
+  for (unsigned seed : {4u, 5u}) {
+    const Scene scene = randomScene(seed, 60);
+    const TracerModern modern(scene);
+    const TracerThesis thesis(scene);
+    std::mt19937 rng(seed * 11);
+    std::uniform_real_distribution<double> u(-0.2, 1.2), unit(0, 1), dir(-1, 1);
+    TraceStats fast, full;
+    int hits = 0, inside = 0;
+    for (int i = 0; i < 3000; ++i) {
+      Ray ray{{500, 500, -1500}, {u(rng) * 1000 - 500, u(rng) * 1000 - 500, 1500}};
+      if (i % 2 == 1) {  // from a point in or on a random primitive, any way
+        const ScenePrim& p = scene.prims[rng() % scene.prims.size()];
+        const Vec3 local{0.2 + 0.6 * unit(rng), 0.2 + 0.6 * unit(rng), 0.2 + 0.6 * unit(rng)};
+        ray.o = pointMatrixMul(p.type == io::PrimType::Cube ? local : Vec3{0, 0, 0.5}, p.transform);
+        ray.d = {dir(rng), dir(rng), dir(rng)};
+        ++inside;
+      }
+      Probe probe;
+      const Rgb a = modern.castRay(ray, 0, fast), b = modern.castRay(ray, 0, full, &probe);
+      hits += a != scene.background ? 1 : 0;
+      ASSERT_EQ(std::memcmp(a.data(), b.data(), sizeof a), 0)
+          << "modern, seed " << seed << " ray " << i << ": (" << a[0] << "," << a[1] << "," << a[2]
+          << ") vs (" << b[0] << "," << b[1] << "," << b[2] << ")";
+      Probe probe2;
+      const Rgb c = thesis.castRay(ray, 0, fast, SampleId{}),
+                d = thesis.castRay(ray, 0, full, SampleId{}, &probe2);
+      ASSERT_EQ(std::memcmp(c.data(), d.data(), sizeof c), 0)
+          << "thesis, seed " << seed << " ray " << i << ": (" << c[0] << "," << c[1] << "," << c[2]
+          << ") vs (" << d[0] << "," << d[1] << "," << d[2] << ")";
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_EQ(inside, 1500);
+    EXPECT_LT(fast.primitiveTests, full.primitiveTests);  // the shortcuts skip work
   }
 }
 
