@@ -193,6 +193,30 @@ TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& b
   return program.runModern(leaf);
 }
 
+double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, double tMax,
+                                  TraceStats& stats) const {
+  double inside = 0.0;
+  auto add = [&](double in, double out) {
+    const double lo = std::max(0.0, in), hi = std::min(tMax, out);
+    if (hi > lo) inside += hi - lo;
+  };
+  if (programs_[object].isSingleLeaf()) {  // objectIntervalsAhead's one pair, if any
+    ++stats.objectTests;
+    const int prim = scene_.objects[object].entries[0].l;
+    const double entry = bvh_.primBox(prim).entry(boxRay);
+    if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return inside;
+    ++stats.primitiveTests;
+    PrimHit in;
+    if (intersectModernT(scene_.prims[prim].type, transformRay(boxRay.ray, inverse_[prim]), in))
+      add(in.tIn, in.tOut);
+    return inside;
+  }
+  const TList list =
+      objectIntervalsAhead(scene_.objects[object], boxRay, tMax, stats, Normals::kNone);
+  for (std::size_t i = 0; i + 1 < list.size(); i += 2) add(list[i].t, list[i + 1].t);
+  return inside;
+}
+
 bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, double tMax,
                                   TraceStats& stats, TNode& node) const {
   if (programs_[object].isSingleLeaf()) {

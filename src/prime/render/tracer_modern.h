@@ -72,6 +72,11 @@ class TracerModern {
   enum class Normals { kFull, kNone, kMarkers };
   TList objectIntervalsAhead(const SceneObject& obj, const BoxRay& ray, double tMax,
                              TraceStats& stats, Normals normals = Normals::kFull) const;
+  // The length of object `object`'s solid along `ray` between 0 and tMax
+  // (a shadow ray's path inside it): the sum over objectIntervalsAhead's
+  // pairs of min(tMax, exit) - max(0, entry) where positive, in list order;
+  // a lone primitive's without building the list (N18).
+  double insideLength(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats) const;
 
   // The texel at the hit (inverse mapping, N11, N12, N17), probed.
   Rgb surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const;

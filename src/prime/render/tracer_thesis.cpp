@@ -109,14 +109,17 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
       if (probe) probe->boundTest(depth, obj.number, b.type, obj.boundPrim, met);
       if (!met) return;
     }
-    // Only the segment up to the light matters (N18; all of it for a probe).
-    const TList list = probe ? modern_.objectIntervals(obj, ray, stats, probe, depth)
-                             : modern_.objectIntervalsAhead(obj, boxRay, dist, stats,
-                                                            TracerModern::Normals::kNone);
-    double inside = 0.0;  // the length of the segment inside the solid
-    for (std::size_t i = 0; i + 1 < list.size(); i += 2) {
-      const double lo = std::max(0.0, list[i].t), hi = std::min(dist, list[i + 1].t);
-      if (hi > lo) inside += hi - lo;
+    // The length of the segment inside the solid. Only the segment up to
+    // the light matters (N18; all of it for a probe).
+    double inside = 0.0;
+    if (probe) {
+      const TList list = modern_.objectIntervals(obj, ray, stats, probe, depth);
+      for (std::size_t i = 0; i + 1 < list.size(); i += 2) {
+        const double lo = std::max(0.0, list[i].t), hi = std::min(dist, list[i + 1].t);
+        if (hi > lo) inside += hi - lo;
+      }
+    } else {
+      inside = modern_.insideLength(static_cast<std::size_t>(k), boxRay, dist, stats);
     }
     if (!(inside > 0.0)) return;
     const double kST = opacity_[static_cast<std::size_t>(k)];
