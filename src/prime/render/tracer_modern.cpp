@@ -217,6 +217,36 @@ double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, doub
   return inside;
 }
 
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}  // namespace
+
+bool TracerModern::exitAhead(std::size_t object, const Ray& ray, TraceStats& stats,
+                             TNode& exit) const {
+  const BoxRay boxRay(ray);
+  if (programs_[object].isSingleLeaf()) {  // its pair's exit, the one node that leaves
+    ++stats.objectTests;
+    const int prim = scene_.objects[object].entries[0].l;
+    const double entry = bvh_.primBox(prim).entry(boxRay), tMax = kInfinity;
+    if (entry == kInfinity || !(entry <= tMax)) return false;  // (as objectIntervalsAhead)
+    ++stats.primitiveTests;
+    PrimHit in;
+    if (!intersectModern(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in) ||
+        !(in.tOut > 0.0))
+      return false;
+    exit = TNode{in.tOut, prim, kSurfIn, in.nOut};
+    return true;
+  }
+  const TList list = objectIntervalsAhead(scene_.objects[object], boxRay,
+                                          std::numeric_limits<double>::infinity(), stats);
+  for (const TNode& node : list)
+    if (node.t > 0.0 && node.surfType == kSurfIn) {
+      exit = node;
+      return true;
+    }
+  return false;
+}
+
 bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, double tMax,
                                   TraceStats& stats, TNode& node) const {
   if (programs_[object].isSingleLeaf()) {
@@ -496,19 +526,14 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     return report(0, r, {});
   }
   for (int step = 0; step < kMaxInternalReflections; ++step) {
-    const TList list =
-        objectIntervalsAhead(obj, BoxRay(r), std::numeric_limits<double>::infinity(), stats);
-    const TNode* exit = nullptr;
-    for (const TNode& node : list)
-      if (node.t > 0.0 && node.surfType == kSurfIn) {
-        exit = &node;
-        break;
-      }
-    if (!exit) {  // numerically outside already: leave as we are
+    TNode exitNode;
+    if (!exitAhead(static_cast<std::size_t>(hit.obj), r, stats, exitNode)) {
+      // numerically outside already: leave as we are
       ++stats.emptyTransmitLists;
       through = true;
       return report(step, r, {});
     }
+    const TNode* exit = &exitNode;
     distance += exit->t;
     SurfaceHit at;
     surfaceAt(obj, r, *exit, at);

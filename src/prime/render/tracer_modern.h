@@ -98,6 +98,9 @@ class TracerModern {
   // first node with t > 0, if any.
   bool firstNodeAhead(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats,
                       TNode& node) const;
+  // Where a ray inside the object leaves it: objectIntervalsAhead's (kFull)
+  // first node ahead that leaves the solid, if any.
+  bool exitAhead(std::size_t object, const Ray& ray, TraceStats& stats, TNode& exit) const;
   const Scene& scene_;
   RayTreeOptions options_;
   ObjectBvh bvh_;
