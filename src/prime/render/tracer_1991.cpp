@@ -29,12 +29,7 @@ Tracer1991::Tracer1991(const Scene& scene, TraceOptions options)
 }
 
 std::vector<Aabb> Tracer1991::primaryMaskBoxes() const {
-  std::vector<Aabb> boxes;
-  for (const SceneObject& obj : scene_.objects)
-    for (const CsgEntry& e : obj.entries)
-      if (e.op == 'P' && !bvh_.objectBox(static_cast<int>(&obj - scene_.objects.data())).empty())
-        boxes.push_back(bvh_.primBox(e.l));
-  return boxes;
+  return bvh_.primitiveBoxesOfObjects(scene_);
 }
 
 bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,

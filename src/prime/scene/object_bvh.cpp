@@ -19,6 +19,14 @@ std::vector<Aabb> boxesOfObjects(const Scene& scene, const std::vector<Aabb>& pr
 }
 }  // namespace
 
+std::vector<Aabb> ObjectBvh::primitiveBoxesOfObjects(const Scene& scene) const {
+  std::vector<Aabb> boxes;
+  for (std::size_t k = 0; k < scene.objects.size(); ++k)
+    for (const CsgEntry& e : scene.objects[k].entries)
+      if (e.op == 'P' && !objectBox(static_cast<int>(k)).empty()) boxes.push_back(primBox(e.l));
+  return boxes;
+}
+
 ObjectBvh::ObjectBvh(const Scene& scene) {
   for (const auto& p : scene.prims) primBoxes_.push_back(primitiveBox(p));
   bvh_ = Bvh(boxesOfObjects(scene, primBoxes_));

@@ -32,6 +32,10 @@ class ObjectBvh {
   const Aabb& objectBox(int object) const { return bvh_.box(object); }
   std::span<const Aabb> objectBoxes() const { return bvh_.boxes(); }
   const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
+  // The box of every primitive of every object's CSG tree (not the bounds):
+  // a ray that meets none of them meets no object. Tighter than the object
+  // boxes (each the union of its primitives'), for the primary-ray mask.
+  std::vector<Aabb> primitiveBoxesOfObjects(const Scene& scene) const;
 
  private:
   std::vector<Aabb> primBoxes_;
