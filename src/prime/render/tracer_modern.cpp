@@ -117,7 +117,7 @@ Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec
 }
 
 TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
-    : scene_(scene), options_(options), bvh_(scene) {
+    : scene_(scene), options_(options), bvh_(scene, ObjectBvh::ObjectBoxes::kSolid) {
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
   inverse_.reserve(scene.prims.size());
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));

@@ -14,7 +14,13 @@ namespace prime {
 
 class ObjectBvh {
  public:
-  explicit ObjectBvh(const Scene& scene);
+  // An object's box: the union of its primitives' boxes (kLeaves: the 1991
+  // profile, whose operators are the listing's and may keep nodes the set
+  // operations drop), or the box of its solid by the set operations
+  // (kSolid: a difference's is its left operand's, an intersection's the
+  // common part of its operands'; the modern and thesis profiles, N18).
+  enum class ObjectBoxes { kLeaves, kSolid };
+  explicit ObjectBvh(const Scene& scene, ObjectBoxes objectBoxes = ObjectBoxes::kLeaves);
 
   // Calls visit(objectIndex, boxEntry) for every object whose box the ray
   // meets at boxEntry <= limit(), nearest box first. `limit` is re-read
@@ -32,9 +38,9 @@ class ObjectBvh {
   const Aabb& objectBox(int object) const { return bvh_.box(object); }
   std::span<const Aabb> objectBoxes() const { return bvh_.boxes(); }
   const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
-  // The box of every primitive of every object's CSG tree (not the bounds):
-  // a ray that meets none of them meets no object. Tighter than the object
-  // boxes (each the union of its primitives'), for the primary-ray mask.
+  // The box of every primitive of every object's CSG tree (not the bounds),
+  // each within its object's box: a ray that meets none of them meets no
+  // object. Tighter than the object boxes, for the primary-ray mask.
   std::vector<Aabb> primitiveBoxesOfObjects(const Scene& scene) const;
 
  private:
