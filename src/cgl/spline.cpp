@@ -691,17 +691,22 @@ inline void pushLanes(const SplinePacket& p, const BoxRay& boxRay, double tMax, 
 
 }  // namespace
 
-PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin,
+bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+  return intersectSpline(s, BoxRay(ray), tMin, tMax, hit, counters, record);
+}
+
+PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin,
                                          double tMax, SplineHit& hit, SplineCounters& counters,
                                          std::vector<NewtonStart>* record) {
   ++counters.calls;
   if (s.packets.empty()) return false;
+  const Ray& ray = boxRay.ray;
   std::vector<Tried>& tried = tTried;
   if (tried.size() < s.leafData.size()) tried.resize(s.leafData.size());
   // Each leaf is listed at most once: the sized scratch is enough.
   Tried* const list = tried.data();
   int listed = 0;
-  const BoxRay boxRay(ray);
   RayPlanes planes;
   NewtonOptions options;
   options.tolerance = s.tolerance;
@@ -793,11 +798,16 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
   return found;
 }
 
-PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin,
+bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                    SplineCounters& counters) {
+  return occludesSpline(s, BoxRay(ray), tMin, tMax, counters);
+}
+
+PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin,
                                         double tMax, SplineCounters& counters) {
   ++counters.calls;
   if (s.packets.empty()) return false;
-  const BoxRay boxRay(ray);
+  const Ray& ray = boxRay.ray;
   RayPlanes planes;
   bool havePlanes = false;  // CGL-D173: computed at the first leaf
   NewtonOptions options;

@@ -190,6 +190,11 @@ struct NewtonStart {
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                      SplineHit& hit, SplineCounters& counters,
                      std::vector<NewtonStart>* record = nullptr);
+// The same with the ray's box data prepared by the caller (the renderer's
+// BoxRay of the same ray: the same doubles, made once per ray, CGL-D174).
+bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters,
+                     std::vector<NewtonStart>* record = nullptr);
 bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                              SplineHit& hit, SplineCounters& counters,
                              std::vector<NewtonStart>* record = nullptr);
@@ -198,6 +203,8 @@ bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin
 // document's walk finds a hit exactly when some leaf the ray's box entry
 // puts before tMax converges in range, whatever the order; CGL-D170).
 bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                    SplineCounters& counters);
+bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
                     SplineCounters& counters);
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by
