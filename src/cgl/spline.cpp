@@ -696,11 +696,10 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
   return intersectSpline(s, BoxRay(ray), tMin, tMax, hit, counters, record);
 }
 
-PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin,
-                                         double tMax, SplineHit& hit, SplineCounters& counters,
-                                         std::vector<NewtonStart>* record) {
-  ++counters.calls;
-  if (s.packets.empty()) return false;
+PRIME_SPLINE_CLONES bool intersectSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay,
+                                                  double rootEntry, double tMin, double tMax,
+                                                  SplineHit& hit, SplineCounters& counters,
+                                                  std::vector<NewtonStart>* record) {
   const Ray& ray = boxRay.ray;
   std::vector<Tried>& tried = tTried;
   if (tried.size() < s.leafData.size()) tried.resize(s.leafData.size());
@@ -722,8 +721,9 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const BoxRay& b
   int aheadLeaf = -1;
   NewtonResult ahead;
   StackEntry stack[kStack];
-  int top = 0;
-  pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
+  // The root, entered at rootEntry < tMax (the caller's test, CGL-D174).
+  stack[0] = {rootEntry, s.packets[0].ref[0]};
+  int top = 1;
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.d > bound) continue;
@@ -803,18 +803,17 @@ bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double 
   return occludesSpline(s, BoxRay(ray), tMin, tMax, counters);
 }
 
-PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin,
-                                        double tMax, SplineCounters& counters) {
-  ++counters.calls;
-  if (s.packets.empty()) return false;
+PRIME_SPLINE_CLONES bool occludesSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay,
+                                                 double rootEntry, double tMin, double tMax,
+                                                 SplineCounters& counters) {
   const Ray& ray = boxRay.ray;
   RayPlanes planes;
   bool havePlanes = false;  // CGL-D173: computed at the first leaf
   NewtonOptions options;
   options.tolerance = s.tolerance;
   StackEntry stack[kStack];
-  int top = 0;
-  pushLanes<true>(s.packets[0], boxRay, tMax, kInf, stack, top, counters);
+  stack[0] = {rootEntry, s.packets[0].ref[0]};
+  int top = 1;
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.ref >= 0) {

@@ -192,9 +192,22 @@ bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double
                      std::vector<NewtonStart>* record = nullptr);
 // The same with the ray's box data prepared by the caller (the renderer's
 // BoxRay of the same ray: the same doubles, made once per ray, CGL-D174).
-bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
-                     SplineHit& hit, SplineCounters& counters,
-                     std::vector<NewtonStart>* record = nullptr);
+// The root's box is tested here, inline (the walk's first test, the same
+// double: most rays that reach a surface's object box miss its root box),
+// and the walk below it runs only for a ray that enters it before tMax.
+bool intersectSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay, double rootEntry,
+                              double tMin, double tMax, SplineHit& hit, SplineCounters& counters,
+                              std::vector<NewtonStart>* record);
+inline bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                            SplineHit& hit, SplineCounters& counters,
+                            std::vector<NewtonStart>* record = nullptr) {
+  ++counters.calls;
+  if (s.nodes.empty()) return false;
+  ++counters.boxes;
+  const double rootEntry = s.nodes[0].box.entry(boxRay);
+  if (!(rootEntry < tMax)) return false;
+  return intersectSplineBelowRoot(s, boxRay, rootEntry, tMin, tMax, hit, counters, record);
+}
 bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                              SplineHit& hit, SplineCounters& counters,
                              std::vector<NewtonStart>* record = nullptr);
@@ -204,8 +217,17 @@ bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin
 // puts before tMax converges in range, whatever the order; CGL-D170).
 bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                     SplineCounters& counters);
-bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
-                    SplineCounters& counters);
+bool occludesSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay, double rootEntry,
+                             double tMin, double tMax, SplineCounters& counters);
+inline bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                           SplineCounters& counters) {
+  ++counters.calls;
+  if (s.nodes.empty()) return false;
+  ++counters.boxes;
+  const double rootEntry = s.nodes[0].box.entry(boxRay);
+  if (!(rootEntry < tMax)) return false;
+  return occludesSplineBelowRoot(s, boxRay, rootEntry, tMin, tMax, counters);
+}
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by
 // the convex hull of its 16 refined vertices (so the boxes contain the
