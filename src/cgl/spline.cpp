@@ -308,7 +308,157 @@ void buildPackets(SplineSurface& s) {
   setLane(s.packets[0], 0, s.nodes[0].box, ref);
 }
 
+// CGL-D175: the packets' hierarchy over the document's leaves, grouped in
+// space rather than by knot rectangle: each packet splits its leaves in
+// four by two median cuts on the centres of their boxes (the longest extent
+// of the centres first, ties by node index). Interior boxes are the unions
+// of their leaves' boxes, so a leaf's box is entered only if every packet
+// box above it is, no later: the walk lists the same leaves with the same
+// entries. The root's box is the union of all leaves' boxes, the document's
+// root box (unions of the same boxes by min and max: the same doubles).
+struct SpatialLeaf {
+  Aabb box;
+  Vec3 centre;
+  int node;
+};
+
+int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count);
+
+// Splits items [first, first + count) at first + at along the longest
+// extent of their centres: the `at` smallest by (centre on that axis, node
+// index), a strict order, so the same halves with every library.
+void splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int at) {
+  Aabb c;
+  for (int k = first; k < first + count; ++k) c.add(items[static_cast<std::size_t>(k)].centre);
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis]) axis = a;
+  std::nth_element(items.begin() + first, items.begin() + first + at, items.begin() + first + count,
+                   [axis](const SpatialLeaf& x, const SpatialLeaf& y) {
+                     return x.centre[axis] < y.centre[axis] ||
+                            (x.centre[axis] == y.centre[axis] && x.node < y.node);
+                   });
+}
+
+int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+  int groupFirst[4], groupCount[4];
+  int groups = 0;
+  if (count <= 4) {
+    // The lanes in node order (nth_element leaves a group's order open).
+    std::sort(items.begin() + first, items.begin() + first + count,
+              [](const SpatialLeaf& x, const SpatialLeaf& y) { return x.node < y.node; });
+    for (int k = 0; k < count; ++k) {
+      groupFirst[groups] = first + k;
+      groupCount[groups++] = 1;
+    }
+  } else {
+    const int half = count / 2;
+    splitAlongLongest(items, first, count, half);
+    const int halves[2][2] = {{first, half}, {first + half, count - half}};
+    for (const auto& h : halves) {
+      const int q = h[1] / 2;
+      splitAlongLongest(items, h[0], h[1], q);
+      groupFirst[groups] = h[0];
+      groupCount[groups++] = q;
+      groupFirst[groups] = h[0] + q;
+      groupCount[groups++] = h[1] - q;
+    }
+  }
+  const int at = static_cast<int>(s.packets.size());
+  s.packets.emplace_back();
+  SplinePacket& p0 = s.packets.back();
+  p0.count = groups;
+  for (int lane = 0; lane < 4; ++lane) {
+    for (int a = 0; a < 3; ++a) p0.lo[a][lane] = p0.hi[a][lane] = 0.0;
+    p0.ref[lane] = 0;
+  }
+  for (int g = 0; g < groups; ++g) {
+    Aabb box;
+    for (int k = groupFirst[g]; k < groupFirst[g] + groupCount[g]; ++k)
+      box.add(items[static_cast<std::size_t>(k)].box);
+    const int ref = spatialRef(s, items, groupFirst[g], groupCount[g]);
+    setLane(s.packets[static_cast<std::size_t>(at)], g, box, ref);
+  }
+  return at;
+}
+
+int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+  if (count == 1) {
+    const int node = items[static_cast<std::size_t>(first)].node;
+    const SplineNode& n = s.nodes[static_cast<std::size_t>(node)];
+    SplineLeaf leaf;
+    leaf.u0 = n.u0;
+    leaf.v0 = n.v0;
+    leaf.start = evaluate(s, n.u0, n.v0);
+    leaf.node = node;
+    s.leafData.push_back(leaf);
+    return ~static_cast<int>(s.leafData.size() - 1);
+  }
+  return spatialPacket(s, items, first, count);
+}
+
+void buildSpatialPackets(SplineSurface& s) {
+  s.packets.clear();
+  s.leafData.clear();
+  s.leafData.reserve(static_cast<std::size_t>(s.leaves));
+  if (s.nodes.empty()) return;
+  std::vector<SpatialLeaf> items;
+  items.reserve(static_cast<std::size_t>(s.leaves));
+  for (std::size_t k = 0; k < s.nodes.size(); ++k) {
+    const SplineNode& n = s.nodes[k];
+    if (n.count != 0) continue;
+    items.push_back({n.box, (n.box.lo + n.box.hi) * 0.5, static_cast<int>(k)});
+  }
+  s.packets.emplace_back();
+  for (int lane = 0; lane < 4; ++lane) {
+    for (int a = 0; a < 3; ++a) s.packets[0].lo[a][lane] = s.packets[0].hi[a][lane] = 0.0;
+    s.packets[0].ref[lane] = 0;
+  }
+  s.packets[0].count = 1;
+  const int ref = spatialRef(s, items, 0, static_cast<int>(items.size()));
+  setLane(s.packets[0], 0, s.nodes[0].box, ref);
+}
+
+// The expected box tests of a ray through the root's box (the surface area
+// heuristic): each packet's lanes are tested when its box, the lane above
+// it, is entered, in proportion to that box's area.
+double packetCost(const SplineSurface& s) {
+  auto area = [](const SplinePacket& p, int lane) {
+    const double x = p.hi[0][lane] - p.lo[0][lane], y = p.hi[1][lane] - p.lo[1][lane],
+                 z = p.hi[2][lane] - p.lo[2][lane];
+    return x * y + y * z + z * x;
+  };
+  if (s.packets.empty()) return 0.0;
+  const double root = area(s.packets[0], 0);
+  if (!(root > 0.0)) return 0.0;
+  double cost = 0.0;
+  for (const SplinePacket& p : s.packets)
+    for (int lane = 0; lane < p.count; ++lane)
+      if (p.ref[lane] >= 0)
+        cost += area(p, lane) / root * s.packets[static_cast<std::size_t>(p.ref[lane])].count;
+  return cost;
+}
+
 }  // namespace
+
+// CGL-D175: the document's grouping (knot rectangles) or the grouping in
+// space, whichever the surface area heuristic expects fewer box tests of.
+void buildTraversal(SplineSurface& s, PacketLayout layout) {
+  if (layout == PacketLayout::Spatial) {
+    buildSpatialPackets(s);
+    return;
+  }
+  buildPackets(s);
+  if (layout == PacketLayout::Document) return;
+  const double documentCost = packetCost(s);
+  std::vector<SplinePacket> packets = std::move(s.packets);
+  std::vector<SplineLeaf> leafData = std::move(s.leafData);
+  buildSpatialPackets(s);
+  if (!(packetCost(s) < documentCost)) {
+    s.packets = std::move(packets);
+    s.leafData = std::move(leafData);
+  }
+}
 
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
                           EndCondition vEnd, int divisions, double overlap) {
@@ -371,7 +521,7 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
   TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
   tb.build();
   s.hull.add(s.nodes[0].box);
-  buildPackets(s);
+  buildTraversal(s);
   s.treeSeconds = secondsSince(treeStart);
 
   // CGL-Q143: the tolerance, in scene units, relative to the surface's size.

@@ -112,6 +112,16 @@ struct SplineSurface {
   std::size_t traversalBytes() const;
 };
 
+// The packets and leaf records of CGL-D170 over the surface's tree (CGL-D175):
+// Document groups the leaves as the tree does (knot rectangles quartered),
+// Spatial by two median cuts per packet on the centres of the leaves' boxes;
+// Auto (buildSpline's) takes whichever the surface area heuristic expects to
+// cost fewer box tests. Every layout lists the same leaves with the same
+// entries, so the walk's hits are the same.
+enum class PacketLayout { Auto, Document, Spatial };
+struct SplineSurface;
+void buildTraversal(SplineSurface& s, PacketLayout layout = PacketLayout::Auto);
+
 // Builds a surface from the transformed user control vertices (nv groups of
 // nu, controls[v * nu + u], as the reader stores them). Throws nothing: the
 // reader has checked the counts; divisions >= 1, nu, nv >= 1.
