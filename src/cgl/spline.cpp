@@ -310,12 +310,12 @@ void buildPackets(SplineSurface& s) {
 
 // CGL-D175: the packets' hierarchy over the document's leaves, grouped in
 // space rather than by knot rectangle: each packet splits its leaves in
-// four by two median cuts on the centres of their boxes (the longest extent
-// of the centres first, ties by node index). Interior boxes are the unions
-// of their leaves' boxes, so a leaf's box is entered only if every packet
-// box above it is, no later: the walk lists the same leaves with the same
-// entries. The root's box is the union of all leaves' boxes, the document's
-// root box (unions of the same boxes by min and max: the same doubles).
+// four by two cuts on the centres of their boxes (splitAlongLongest).
+// Interior boxes are the unions of their leaves' boxes, so a leaf's box is
+// entered only if every packet box above it is, no later: the walk lists the
+// same leaves with the same entries. The root's box is the union of all
+// leaves' boxes, the document's root box (unions of the same boxes by min
+// and max: the same doubles).
 struct SpatialLeaf {
   Aabb box;
   Vec3 centre;
@@ -324,20 +324,30 @@ struct SpatialLeaf {
 
 int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count);
 
-// Splits items [first, first + count) at first + at along the longest
-// extent of their centres: the `at` smallest by (centre on that axis, node
-// index), a strict order, so the same halves with every library.
-void splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int at) {
+// Splits items [first, first + count) along the longest extent of their
+// centres: at the middle of that extent, or, when a side would be empty,
+// into the `at` smallest by (centre on that axis, node index). Both sides
+// are sets defined by the items alone (a predicate, a strict order), so the
+// same with every library. Returns the size of the first side.
+int splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int at) {
   Aabb c;
   for (int k = first; k < first + count; ++k) c.add(items[static_cast<std::size_t>(k)].centre);
   int axis = 0;
   for (int a = 1; a < 3; ++a)
     if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis]) axis = a;
+  {
+    const double mid = (c.lo[axis] + c.hi[axis]) * 0.5;
+    const auto m = std::partition(items.begin() + first, items.begin() + first + count,
+                                  [&](const SpatialLeaf& x) { return x.centre[axis] < mid; });
+    const int n = static_cast<int>(m - (items.begin() + first));
+    if (n > 0 && n < count) return n;
+  }
   std::nth_element(items.begin() + first, items.begin() + first + at, items.begin() + first + count,
                    [axis](const SpatialLeaf& x, const SpatialLeaf& y) {
                      return x.centre[axis] < y.centre[axis] ||
                             (x.centre[axis] == y.centre[axis] && x.node < y.node);
                    });
+  return at;
 }
 
 int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
@@ -352,12 +362,15 @@ int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, 
       groupCount[groups++] = 1;
     }
   } else {
-    const int half = count / 2;
-    splitAlongLongest(items, first, count, half);
+    const int half = splitAlongLongest(items, first, count, count / 2);
     const int halves[2][2] = {{first, half}, {first + half, count - half}};
     for (const auto& h : halves) {
-      const int q = h[1] / 2;
-      splitAlongLongest(items, h[0], h[1], q);
+      if (h[1] == 1) {
+        groupFirst[groups] = h[0];
+        groupCount[groups++] = 1;
+        continue;
+      }
+      const int q = splitAlongLongest(items, h[0], h[1], h[1] / 2);
       groupFirst[groups] = h[0];
       groupCount[groups++] = q;
       groupFirst[groups] = h[0] + q;

@@ -114,7 +114,7 @@ struct SplineSurface {
 
 // The packets and leaf records of CGL-D170 over the surface's tree (CGL-D175):
 // Document groups the leaves as the tree does (knot rectangles quartered),
-// Spatial by two median cuts per packet on the centres of the leaves' boxes;
+// Spatial by two cuts per packet on the centres of the leaves' boxes;
 // Auto (buildSpline's) takes whichever the surface area heuristic expects to
 // cost fewer box tests. Every layout lists the same leaves with the same
 // entries, so the walk's hits are the same.
