@@ -308,7 +308,170 @@ void buildPackets(SplineSurface& s) {
   setLane(s.packets[0], 0, s.nodes[0].box, ref);
 }
 
+// CGL-D175: the packets' hierarchy over the document's leaves, grouped in
+// space rather than by knot rectangle: each packet splits its leaves in
+// four by two cuts on the centres of their boxes (splitAlongLongest).
+// Interior boxes are the unions of their leaves' boxes, so a leaf's box is
+// entered only if every packet box above it is, no later: the walk lists the
+// same leaves with the same entries. The root's box is the union of all
+// leaves' boxes, the document's root box (unions of the same boxes by min
+// and max: the same doubles).
+struct SpatialLeaf {
+  Aabb box;
+  Vec3 centre;
+  int node;
+};
+
+int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count);
+
+// Splits items [first, first + count) along the longest extent of their
+// centres: at the middle of that extent, or, when a side would be empty,
+// into the `at` smallest by (centre on that axis, node index). Both sides
+// are sets defined by the items alone (a predicate, a strict order), so the
+// same with every library. Returns the size of the first side.
+int splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int at) {
+  Aabb c;
+  for (int k = first; k < first + count; ++k) c.add(items[static_cast<std::size_t>(k)].centre);
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis]) axis = a;
+  {
+    const double mid = (c.lo[axis] + c.hi[axis]) * 0.5;
+    const auto m = std::partition(items.begin() + first, items.begin() + first + count,
+                                  [&](const SpatialLeaf& x) { return x.centre[axis] < mid; });
+    const int n = static_cast<int>(m - (items.begin() + first));
+    if (n > 0 && n < count) return n;
+  }
+  std::nth_element(items.begin() + first, items.begin() + first + at, items.begin() + first + count,
+                   [axis](const SpatialLeaf& x, const SpatialLeaf& y) {
+                     return x.centre[axis] < y.centre[axis] ||
+                            (x.centre[axis] == y.centre[axis] && x.node < y.node);
+                   });
+  return at;
+}
+
+int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+  int groupFirst[4], groupCount[4];
+  int groups = 0;
+  if (count <= 4) {
+    // The lanes in node order (nth_element leaves a group's order open).
+    std::sort(items.begin() + first, items.begin() + first + count,
+              [](const SpatialLeaf& x, const SpatialLeaf& y) { return x.node < y.node; });
+    for (int k = 0; k < count; ++k) {
+      groupFirst[groups] = first + k;
+      groupCount[groups++] = 1;
+    }
+  } else {
+    const int half = splitAlongLongest(items, first, count, count / 2);
+    const int halves[2][2] = {{first, half}, {first + half, count - half}};
+    for (const auto& h : halves) {
+      if (h[1] == 1) {
+        groupFirst[groups] = h[0];
+        groupCount[groups++] = 1;
+        continue;
+      }
+      const int q = splitAlongLongest(items, h[0], h[1], h[1] / 2);
+      groupFirst[groups] = h[0];
+      groupCount[groups++] = q;
+      groupFirst[groups] = h[0] + q;
+      groupCount[groups++] = h[1] - q;
+    }
+  }
+  const int at = static_cast<int>(s.packets.size());
+  s.packets.emplace_back();
+  SplinePacket& p0 = s.packets.back();
+  p0.count = groups;
+  for (int lane = 0; lane < 4; ++lane) {
+    for (int a = 0; a < 3; ++a) p0.lo[a][lane] = p0.hi[a][lane] = 0.0;
+    p0.ref[lane] = 0;
+  }
+  for (int g = 0; g < groups; ++g) {
+    Aabb box;
+    for (int k = groupFirst[g]; k < groupFirst[g] + groupCount[g]; ++k)
+      box.add(items[static_cast<std::size_t>(k)].box);
+    const int ref = spatialRef(s, items, groupFirst[g], groupCount[g]);
+    setLane(s.packets[static_cast<std::size_t>(at)], g, box, ref);
+  }
+  return at;
+}
+
+int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+  if (count == 1) {
+    const int node = items[static_cast<std::size_t>(first)].node;
+    const SplineNode& n = s.nodes[static_cast<std::size_t>(node)];
+    SplineLeaf leaf;
+    leaf.u0 = n.u0;
+    leaf.v0 = n.v0;
+    leaf.start = evaluate(s, n.u0, n.v0);
+    leaf.node = node;
+    s.leafData.push_back(leaf);
+    return ~static_cast<int>(s.leafData.size() - 1);
+  }
+  return spatialPacket(s, items, first, count);
+}
+
+void buildSpatialPackets(SplineSurface& s) {
+  s.packets.clear();
+  s.leafData.clear();
+  s.leafData.reserve(static_cast<std::size_t>(s.leaves));
+  if (s.nodes.empty()) return;
+  std::vector<SpatialLeaf> items;
+  items.reserve(static_cast<std::size_t>(s.leaves));
+  for (std::size_t k = 0; k < s.nodes.size(); ++k) {
+    const SplineNode& n = s.nodes[k];
+    if (n.count != 0) continue;
+    items.push_back({n.box, (n.box.lo + n.box.hi) * 0.5, static_cast<int>(k)});
+  }
+  s.packets.emplace_back();
+  for (int lane = 0; lane < 4; ++lane) {
+    for (int a = 0; a < 3; ++a) s.packets[0].lo[a][lane] = s.packets[0].hi[a][lane] = 0.0;
+    s.packets[0].ref[lane] = 0;
+  }
+  s.packets[0].count = 1;
+  const int ref = spatialRef(s, items, 0, static_cast<int>(items.size()));
+  setLane(s.packets[0], 0, s.nodes[0].box, ref);
+}
+
+// The expected box tests of a ray through the root's box (the surface area
+// heuristic): each packet's lanes are tested when its box, the lane above
+// it, is entered, in proportion to that box's area.
+double packetCost(const SplineSurface& s) {
+  auto area = [](const SplinePacket& p, int lane) {
+    const double x = p.hi[0][lane] - p.lo[0][lane], y = p.hi[1][lane] - p.lo[1][lane],
+                 z = p.hi[2][lane] - p.lo[2][lane];
+    return x * y + y * z + z * x;
+  };
+  if (s.packets.empty()) return 0.0;
+  const double root = area(s.packets[0], 0);
+  if (!(root > 0.0)) return 0.0;
+  double cost = 0.0;
+  for (const SplinePacket& p : s.packets)
+    for (int lane = 0; lane < p.count; ++lane)
+      if (p.ref[lane] >= 0)
+        cost += area(p, lane) / root * s.packets[static_cast<std::size_t>(p.ref[lane])].count;
+  return cost;
+}
+
 }  // namespace
+
+// CGL-D175: the document's grouping (knot rectangles) or the grouping in
+// space, whichever the surface area heuristic expects fewer box tests of.
+void buildTraversal(SplineSurface& s, PacketLayout layout) {
+  if (layout == PacketLayout::Spatial) {
+    buildSpatialPackets(s);
+    return;
+  }
+  buildPackets(s);
+  if (layout == PacketLayout::Document) return;
+  const double documentCost = packetCost(s);
+  std::vector<SplinePacket> packets = std::move(s.packets);
+  std::vector<SplineLeaf> leafData = std::move(s.leafData);
+  buildSpatialPackets(s);
+  if (!(packetCost(s) < documentCost)) {
+    s.packets = std::move(packets);
+    s.leafData = std::move(leafData);
+  }
+}
 
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
                           EndCondition vEnd, int divisions, double overlap) {
@@ -371,7 +534,7 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
   TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
   tb.build();
   s.hull.add(s.nodes[0].box);
-  buildPackets(s);
+  buildTraversal(s);
   s.treeSeconds = secondsSince(treeStart);
 
   // CGL-Q143: the tolerance, in scene units, relative to the surface's size.
@@ -691,17 +854,21 @@ inline void pushLanes(const SplinePacket& p, const BoxRay& boxRay, double tMax, 
 
 }  // namespace
 
-PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin,
-                                         double tMax, SplineHit& hit, SplineCounters& counters,
-                                         std::vector<NewtonStart>* record) {
-  ++counters.calls;
-  if (s.packets.empty()) return false;
+bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                     SplineHit& hit, SplineCounters& counters, std::vector<NewtonStart>* record) {
+  return intersectSpline(s, BoxRay(ray), tMin, tMax, hit, counters, record);
+}
+
+PRIME_SPLINE_CLONES bool intersectSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay,
+                                                  double rootEntry, double tMin, double tMax,
+                                                  SplineHit& hit, SplineCounters& counters,
+                                                  std::vector<NewtonStart>* record) {
+  const Ray& ray = boxRay.ray;
   std::vector<Tried>& tried = tTried;
   if (tried.size() < s.leafData.size()) tried.resize(s.leafData.size());
   // Each leaf is listed at most once: the sized scratch is enough.
   Tried* const list = tried.data();
   int listed = 0;
-  const BoxRay boxRay(ray);
   RayPlanes planes;
   NewtonOptions options;
   options.tolerance = s.tolerance;
@@ -717,8 +884,9 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
   int aheadLeaf = -1;
   NewtonResult ahead;
   StackEntry stack[kStack];
-  int top = 0;
-  pushLanes<true>(s.packets[0], boxRay, tMax, bound, stack, top, counters);
+  // The root, entered at rootEntry < tMax (the caller's test, CGL-D174).
+  stack[0] = {rootEntry, s.packets[0].ref[0]};
+  int top = 1;
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.d > bound) continue;
@@ -793,18 +961,22 @@ PRIME_SPLINE_CLONES bool intersectSpline(const SplineSurface& s, const Ray& ray,
   return found;
 }
 
-PRIME_SPLINE_CLONES bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin,
-                                        double tMax, SplineCounters& counters) {
-  ++counters.calls;
-  if (s.packets.empty()) return false;
-  const BoxRay boxRay(ray);
+bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                    SplineCounters& counters) {
+  return occludesSpline(s, BoxRay(ray), tMin, tMax, counters);
+}
+
+PRIME_SPLINE_CLONES bool occludesSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay,
+                                                 double rootEntry, double tMin, double tMax,
+                                                 SplineCounters& counters) {
+  const Ray& ray = boxRay.ray;
   RayPlanes planes;
   bool havePlanes = false;  // CGL-D173: computed at the first leaf
   NewtonOptions options;
   options.tolerance = s.tolerance;
   StackEntry stack[kStack];
-  int top = 0;
-  pushLanes<true>(s.packets[0], boxRay, tMax, kInf, stack, top, counters);
+  stack[0] = {rootEntry, s.packets[0].ref[0]};
+  int top = 1;
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.ref >= 0) {

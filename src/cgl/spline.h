@@ -112,6 +112,16 @@ struct SplineSurface {
   std::size_t traversalBytes() const;
 };
 
+// The packets and leaf records of CGL-D170 over the surface's tree (CGL-D175):
+// Document groups the leaves as the tree does (knot rectangles quartered),
+// Spatial by two cuts per packet on the centres of the leaves' boxes;
+// Auto (buildSpline's) takes whichever the surface area heuristic expects to
+// cost fewer box tests. Every layout lists the same leaves with the same
+// entries, so the walk's hits are the same.
+enum class PacketLayout { Auto, Document, Spatial };
+struct SplineSurface;
+void buildTraversal(SplineSurface& s, PacketLayout layout = PacketLayout::Auto);
+
 // Builds a surface from the transformed user control vertices (nv groups of
 // nu, controls[v * nu + u], as the reader stores them). Throws nothing: the
 // reader has checked the counts; divisions >= 1, nu, nv >= 1.
@@ -190,6 +200,24 @@ struct NewtonStart {
 bool intersectSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                      SplineHit& hit, SplineCounters& counters,
                      std::vector<NewtonStart>* record = nullptr);
+// The same with the ray's box data prepared by the caller (the renderer's
+// BoxRay of the same ray: the same doubles, made once per ray, CGL-D174).
+// The root's box is tested here, inline (the walk's first test, the same
+// double: most rays that reach a surface's object box miss its root box),
+// and the walk below it runs only for a ray that enters it before tMax.
+bool intersectSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay, double rootEntry,
+                              double tMin, double tMax, SplineHit& hit, SplineCounters& counters,
+                              std::vector<NewtonStart>* record);
+inline bool intersectSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                            SplineHit& hit, SplineCounters& counters,
+                            std::vector<NewtonStart>* record = nullptr) {
+  ++counters.calls;
+  if (s.nodes.empty()) return false;
+  ++counters.boxes;
+  const double rootEntry = s.nodes[0].box.entry(boxRay);
+  if (!(rootEntry < tMax)) return false;
+  return intersectSplineBelowRoot(s, boxRay, rootEntry, tMin, tMax, hit, counters, record);
+}
 bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                              SplineHit& hit, SplineCounters& counters,
                              std::vector<NewtonStart>* record = nullptr);
@@ -199,6 +227,17 @@ bool intersectSplineDocument(const SplineSurface& s, const Ray& ray, double tMin
 // puts before tMax converges in range, whatever the order; CGL-D170).
 bool occludesSpline(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
                     SplineCounters& counters);
+bool occludesSplineBelowRoot(const SplineSurface& s, const BoxRay& boxRay, double rootEntry,
+                             double tMin, double tMax, SplineCounters& counters);
+inline bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                           SplineCounters& counters) {
+  ++counters.calls;
+  if (s.nodes.empty()) return false;
+  ++counters.boxes;
+  const double rootEntry = s.nodes[0].box.entry(boxRay);
+  if (!(rootEntry < tMax)) return false;
+  return occludesSplineBelowRoot(s, boxRay, rootEntry, tMin, tMax, counters);
+}
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by
 // the convex hull of its 16 refined vertices (so the boxes contain the

@@ -91,10 +91,10 @@ inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, dou
       // A shadow ray needs only whether there is a hit (CGL-D170: the same
       // answer as the nearest hit's search, found sooner).
       if (anyHit)
-        return occludesSpline(scene.splines[static_cast<std::size_t>(o.spline)], br.ray, tMin, tMax,
+        return occludesSpline(scene.splines[static_cast<std::size_t>(o.spline)], br, tMin, tMax,
                               stats.spline);
-      if (!intersectSpline(scene.splines[static_cast<std::size_t>(o.spline)], br.ray, tMin, tMax,
-                           sh, stats.spline))
+      if (!intersectSpline(scene.splines[static_cast<std::size_t>(o.spline)], br, tMin, tMax, sh,
+                           stats.spline))
         return false;
       t = sh.t;
       return true;

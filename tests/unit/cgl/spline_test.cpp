@@ -556,5 +556,63 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
   }
 }
 
+// CGL-D175: whatever the grouping of the leaves into packets, the walk lists
+// the same leaves with the same entries, so its hits are the document's.
+TEST(CglSplineIntersect, EveryPacketLayoutIsTheDocumentsWalkBitForBit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uint64_t hits = 0;
+  for (const char* name : {"spline-bump-single", "spline-bump-triple", "spline-donut",
+                           "spline-mask", "spline-vases", "doc-spline-tube"}) {
+    const SceneFile f = readSceneFile(kScenes + "/" + name + ".cgl");
+    const Scene scene = buildScene(f);
+    ASSERT_FALSE(scene.splines.empty()) << name;
+    const auto& p = f.program;
+    for (const SplineSurface& original : scene.splines) {
+      for (const PacketLayout layout : {PacketLayout::Document, PacketLayout::Spatial}) {
+        SplineSurface s = original;
+        buildTraversal(s, layout);
+        ASSERT_EQ(s.leafData.size(), static_cast<std::size_t>(s.leaves)) << name;
+        // Every leaf once.
+        std::vector<int> seen(s.nodes.size(), 0);
+        for (const SplineLeaf& leaf : s.leafData) ++seen[static_cast<std::size_t>(leaf.node)];
+        for (std::size_t k = 0; k < s.nodes.size(); ++k)
+          ASSERT_EQ(seen[k], s.nodes[k].count == 0 ? 1 : 0) << name << " node " << k;
+        std::vector<Ray> rays;
+        for (int y = p.ylow; y <= p.yhigh; y += 5)
+          for (int x = p.xleft; x <= p.xright; x += 5)
+            rays.push_back(scene.camera.primaryRay(x, y));
+        const Vec3 c = s.hull.centre(), e = s.hull.hi - s.hull.lo;
+        for (int k = 0; k < 5000; ++k) {
+          Vec3 a{}, b{};
+          for (int i = 0; i < 3; ++i) {
+            a[i] = c[i] + 3.0 * e[i] * (unit(rng) - 0.5) +
+                   (i == k % 3 ? (k % 2 ? 2.0 : -2.0) * e[i] : 0.0);
+            b[i] = c[i] + e[i] * (unit(rng) - 0.5);
+          }
+          rays.push_back({a, normalized(b - a)});
+        }
+        for (std::size_t r = 0; r < rays.size(); ++r) {
+          SplineHit a, b;
+          SplineCounters ca, cb;
+          const bool fa = intersectSplineDocument(s, rays[r], 1e-6, 1e10, a, ca);
+          const bool fb = intersectSpline(s, rays[r], 1e-6, 1e10, b, cb);
+          ASSERT_EQ(fa, fb) << name << " ray " << r;
+          ASSERT_EQ(fb, occludesSpline(s, rays[r], 1e-6, 1e10, cb)) << name << " ray " << r;
+          if (!fa) continue;
+          ++hits;
+          ASSERT_EQ(a.t, b.t) << name << " ray " << r;
+          ASSERT_EQ(a.u, b.u) << name << " ray " << r;
+          ASSERT_EQ(a.v, b.v) << name << " ray " << r;
+          ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
+          ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
+          ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 10000u);
+}
+
 }  // namespace
 }  // namespace prime::cgl
