@@ -25,6 +25,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::uint64_t kWriteBehindBytes = 1u << 20;
+constexpr std::size_t kBufferBytes = 1u << 16;
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
   throw InputError({path, std::nullopt, std::nullopt}, why);
@@ -199,8 +200,10 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
     fail("cannot write", error);
   }
   // 64 KiB at a time: a graph file written row by row (2.8 KB at 4x) makes
-  // a sixteenth of the system calls stdio's 4 KiB would.
-  std::setvbuf(file_, nullptr, _IOFBF, 1u << 16);
+  // a sixteenth of the system calls stdio's 4 KiB would. (glibc ignores the
+  // size unless it is given the buffer.)
+  buffer_ = std::make_unique<char[]>(kBufferBytes);
+  std::setvbuf(file_, buffer_.get(), _IOFBF, kBufferBytes);
 }
 
 OutputFile::~OutputFile() {

@@ -24,6 +24,7 @@
 #pragma once
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -60,6 +61,7 @@ class OutputFile {
   void dropTemporary();
   void writeBehind();
   std::string path_, temp_;
+  std::unique_ptr<char[]> buffer_;  // stdio's, for file_: outlives it
   std::FILE* file_ = nullptr;
   bool committed_ = false;
   int slot_ = -1;                               // in the signal handler's list of live temporaries
