@@ -193,6 +193,18 @@ TList TracerModern::objectIntervalsAhead(const SceneObject& obj, const BoxRay& b
   return program.runModern(leaf);
 }
 
+bool TracerModern::lonePair(std::size_t object, const BoxRay& boxRay, double tMax, bool normals,
+                            TraceStats& stats, int& prim, PrimHit& in) const {
+  ++stats.objectTests;
+  prim = scene_.objects[object].entries[0].l;
+  const double entry = bvh_.primBox(prim).entry(boxRay);
+  if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return false;
+  ++stats.primitiveTests;
+  const Ray local = transformRay(boxRay.ray, inverse_[prim]);
+  return normals ? intersectModern(scene_.prims[prim].type, local, in)
+                 : intersectModernT(scene_.prims[prim].type, local, in);
+}
+
 double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, double tMax,
                                   TraceStats& stats) const {
   double inside = 0.0;
@@ -201,14 +213,9 @@ double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, doub
     if (hi > lo) inside += hi - lo;
   };
   if (programs_[object].isSingleLeaf()) {  // objectIntervalsAhead's one pair, if any
-    ++stats.objectTests;
-    const int prim = scene_.objects[object].entries[0].l;
-    const double entry = bvh_.primBox(prim).entry(boxRay);
-    if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return inside;
-    ++stats.primitiveTests;
+    int prim = 0;
     PrimHit in;
-    if (intersectModernT(scene_.prims[prim].type, transformRay(boxRay.ray, inverse_[prim]), in))
-      add(in.tIn, in.tOut);
+    if (lonePair(object, boxRay, tMax, false, stats, prim, in)) add(in.tIn, in.tOut);
     return inside;
   }
   const TList list =
@@ -217,21 +224,13 @@ double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, doub
   return inside;
 }
 
-namespace {
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-}  // namespace
-
 bool TracerModern::exitAhead(std::size_t object, const Ray& ray, TraceStats& stats,
                              TNode& exit) const {
   const BoxRay boxRay(ray);
   if (programs_[object].isSingleLeaf()) {  // its pair's exit, the one node that leaves
-    ++stats.objectTests;
-    const int prim = scene_.objects[object].entries[0].l;
-    const double entry = bvh_.primBox(prim).entry(boxRay), tMax = kInfinity;
-    if (entry == kInfinity || !(entry <= tMax)) return false;  // (as objectIntervalsAhead)
-    ++stats.primitiveTests;
+    int prim = 0;
     PrimHit in;
-    if (!intersectModern(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in) ||
+    if (!lonePair(object, boxRay, std::numeric_limits<double>::infinity(), true, stats, prim, in) ||
         !(in.tOut > 0.0))
       return false;
     exit = TNode{in.tOut, prim, kSurfIn, in.nOut};
@@ -252,14 +251,9 @@ bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, doub
   if (programs_[object].isSingleLeaf()) {
     // A lone primitive: objectIntervalsAhead's two nodes (entry, exit) and
     // the first of them ahead, without building the list (N18).
-    ++stats.objectTests;
-    const int prim = scene_.objects[object].entries[0].l;
-    const double entry = bvh_.primBox(prim).entry(boxRay);
-    if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return false;
-    ++stats.primitiveTests;
+    int prim = 0;
     PrimHit in;
-    if (!intersectModernT(scene_.prims[prim].type, transformRay(boxRay.ray, inverse_[prim]), in))
-      return false;
+    if (!lonePair(object, boxRay, tMax, false, stats, prim, in)) return false;
     if (in.tIn > 0.0) {
       node = TNode{in.tIn, prim, kSurfOut, kEntryMarker};
       return true;

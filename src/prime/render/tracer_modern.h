@@ -98,6 +98,12 @@ class TracerModern {
   // first node with t > 0, if any.
   bool firstNodeAhead(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats,
                       TNode& node) const;
+  // A lone primitive's pair along the ray, counted and culled as
+  // objectIntervalsAhead's leaf (N18): false when its padded box is not
+  // entered in [0, tMax] or the line misses it; with `normals`,
+  // intersectModern's normals, else none (intersectModernT).
+  bool lonePair(std::size_t object, const BoxRay& ray, double tMax, bool normals, TraceStats& stats,
+                int& prim, PrimHit& in) const;
   // Where a ray inside the object leaves it: objectIntervalsAhead's (kFull)
   // first node ahead that leaves the solid, if any.
   bool exitAhead(std::size_t object, const Ray& ray, TraceStats& stats, TNode& exit) const;
