@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "legacy_io/prime/text_inputs.h"
+#include "src/prime/geom/interval_list.h"
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/render/hall_modern.h"
 #include "src/render/sample_random.h"
@@ -178,11 +179,12 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
   // whose every term the hue multiplies by 0 gets no shadow ray: on the
   // viewer's side only the reflection terms (kSR, kDR) use it, behind the
   // surface only the transmission terms (kST, kDT).
-  std::array<ThesisLight, io::kMaxLights> lights{};
+  // (Only the scene's lights are made: a hit does not pay for ten.)
+  SmallVec<ThesisLight, io::kMaxLights> lights;
   const int count = std::min<int>(static_cast<int>(sc.lights.size()), io::kMaxLights);
   for (int j = 0; j < count; ++j) {
     const auto& src = sc.lights[static_cast<std::size_t>(j)];
-    ThesisLight& l = lights[static_cast<std::size_t>(j)];
+    ThesisLight& l = lights.emplace_back();
     l.pt = lightPoint(j, hit.point, sample, depth);
     l.intensity = {src.rgb[0], src.rgb[1], src.rgb[2]};
     const Vec3 toLight = l.pt - hit.point;
@@ -195,10 +197,9 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
   }
 
   const HallHue hue{h.kDR, h.kDT, h.fDR, h.tT, h.kRH, h.kTH, h.indx};
-  const auto terms =
-      hallTermsThesis(hue, surfColor, iSR, iST, sT, ray.d, n, hit.point,
-                      std::span<const ThesisLight>(lights.data(), static_cast<std::size_t>(count)),
-                      sc.ambient, thesis_.texelInDiffuse);
+  const auto terms = hallTermsThesis(hue, surfColor, iSR, iST, sT, ray.d, n, hit.point,
+                                     std::span<const ThesisLight>(lights.data(), lights.size()),
+                                     sc.ambient, thesis_.texelInDiffuse);
   const Rgb color = hallColourModern(terms, stats.nanColours);
   if (probe) {
     probe->hallTerms(depth, terms);
