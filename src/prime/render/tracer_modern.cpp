@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "src/math/float_step.h"
 #include "src/prime/geom/csg_modern.h"
@@ -391,19 +392,29 @@ Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
     return offsetRayOrigin(hit.point, hit.pointError, hit.normal, w);
   }
   // Step to the side of every near surface that w travels into, far enough
-  // that the step survives the other surfaces' tilt (a few rounds).
+  // that the step survives the other surfaces' tilt (a few rounds). w's
+  // side of each surface is the same every round; while the offset is still
+  // zero, the step it has along a (finite, unit) normal is zero.
+  const int count = hit.nearCount;
+  std::array<double, std::tuple_size_v<decltype(hit.near)>> side;
+  for (int k = 0; k < count; ++k) {
+    const double wn = dot(w, hit.near[static_cast<std::size_t>(k)]);
+    // 0: along the surface, either side is as good
+    side[static_cast<std::size_t>(k)] = wn == 0 ? 0.0 : wn > 0 ? 1.0 : -1.0;
+  }
   Vec3 offset{0, 0, 0};
+  bool moved = false;
   for (int round = 0; round < 64; ++round) {
     bool ok = true;
-    for (int k = 0; k < hit.nearCount; ++k) {
+    for (int k = 0; k < count; ++k) {
+      const double sk = side[static_cast<std::size_t>(k)];
+      if (sk == 0.0) continue;
       const Vec3& n = hit.near[static_cast<std::size_t>(k)];
-      const double wn = dot(w, n);
-      if (wn == 0) continue;  // along the surface: either side is as good
-      const double side = wn > 0 ? 1.0 : -1.0;
       const double want = hit.nearStep[static_cast<std::size_t>(k)];
-      const double have = side * dot(n, offset);
+      const double have = moved ? sk * dot(n, offset) : 0.0;
       if (have < want) {
-        offset = offset + n * (side * (want - have) * (round == 0 ? 1.0 : 1.5));
+        offset = offset + n * (sk * (want - have) * (round == 0 ? 1.0 : 1.5));
+        moved = true;
         ok = false;
       }
     }
