@@ -259,17 +259,24 @@ void setLane(SplinePacket& p, int lane, const Aabb& box, int ref) {
 
 int laneRef(SplineSurface& s, int node);
 
-// A packet for the children first .. first + count - 1; returns its index.
-int addPacket(SplineSurface& s, int first, int count) {
+// A new packet of `count` lanes, every lane cleared (unused lanes: an empty
+// box that no ray enters, never read: count); returns its index. (Filling its
+// lanes may add packets: index it again after, never keep a reference.)
+int newPacket(SplineSurface& s, int count) {
   const int at = static_cast<int>(s.packets.size());
   s.packets.emplace_back();
   SplinePacket& p = s.packets.back();
   p.count = count;
   for (int lane = 0; lane < 4; ++lane) {
-    // Unused lanes: an empty box that no ray enters (never read: count).
     for (int a = 0; a < 3; ++a) p.lo[a][lane] = p.hi[a][lane] = 0.0;
     p.ref[lane] = 0;
   }
+  return at;
+}
+
+// A packet for the children first .. first + count - 1; returns its index.
+int addPacket(SplineSurface& s, int first, int count) {
+  const int at = newPacket(s, count);
   for (int c = 0; c < count; ++c) {
     const int ref = laneRef(s, first + c);
     setLane(s.packets[static_cast<std::size_t>(at)], c,
@@ -377,14 +384,7 @@ int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, 
       groupCount[groups++] = h[1] - q;
     }
   }
-  const int at = static_cast<int>(s.packets.size());
-  s.packets.emplace_back();
-  SplinePacket& p0 = s.packets.back();
-  p0.count = groups;
-  for (int lane = 0; lane < 4; ++lane) {
-    for (int a = 0; a < 3; ++a) p0.lo[a][lane] = p0.hi[a][lane] = 0.0;
-    p0.ref[lane] = 0;
-  }
+  const int at = newPacket(s, groups);
   for (int g = 0; g < groups; ++g) {
     Aabb box;
     for (int k = groupFirst[g]; k < groupFirst[g] + groupCount[g]; ++k)

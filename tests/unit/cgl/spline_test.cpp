@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "legacy_io/cgl/scene_file.h"
 #include "src/cgl/scene.h"
@@ -489,6 +490,17 @@ TEST(CglSplineSurface, VectorEvaluationIsTheScalarSumBitForBit) {
   EXPECT_GT(points, 20000u);
 }
 
+// The same hit to the bit: t, the parameters, Newton's start and its
+// iteration count (the packet walk against the document's walk).
+void expectSameHit(const SplineHit& a, const SplineHit& b, const std::string& name, std::size_t r) {
+  ASSERT_EQ(a.t, b.t) << name << " ray " << r;
+  ASSERT_EQ(a.u, b.u) << name << " ray " << r;
+  ASSERT_EQ(a.v, b.v) << name << " ray " << r;
+  ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
+  ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
+  ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+}
+
 TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -527,12 +539,7 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
         ASSERT_GE(cb.newtonCalls, ca.newtonCalls) << name << " ray " << r;
         if (!fa) continue;
         ++hits;
-        ASSERT_EQ(a.t, b.t) << name << " ray " << r;
-        ASSERT_EQ(a.u, b.u) << name << " ray " << r;
-        ASSERT_EQ(a.v, b.v) << name << " ray " << r;
-        ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
-        ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
-        ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+        ASSERT_NO_FATAL_FAILURE(expectSameHit(a, b, name, r));
         // CGL-D173: the normal from Newton's last Q_u, Q_v is the normal
         // evaluated afresh at (u, v), to the bit.
         ASSERT_EQ(splineNormal(s, b), splineNormal(s, b.u, b.v)) << name << " ray " << r;
@@ -601,12 +608,7 @@ TEST(CglSplineIntersect, EveryPacketLayoutIsTheDocumentsWalkBitForBit) {
           ASSERT_EQ(fb, occludesSpline(s, rays[r], 1e-6, 1e10, cb)) << name << " ray " << r;
           if (!fa) continue;
           ++hits;
-          ASSERT_EQ(a.t, b.t) << name << " ray " << r;
-          ASSERT_EQ(a.u, b.u) << name << " ray " << r;
-          ASSERT_EQ(a.v, b.v) << name << " ray " << r;
-          ASSERT_EQ(a.u0, b.u0) << name << " ray " << r;
-          ASSERT_EQ(a.v0, b.v0) << name << " ray " << r;
-          ASSERT_EQ(a.iterations, b.iterations) << name << " ray " << r;
+          ASSERT_NO_FATAL_FAILURE(expectSameHit(a, b, name, r));
         }
       }
     }
