@@ -224,43 +224,40 @@ bool cubeModern(const Ray& r, PrimHit& out) {
   // or d[i], o[i] exactly (the other terms add a zero, and the sign of a zero
   // decides nothing below), so every t, every comparison and every normal
   // is convex()'s, bit for bit, at a third of the work.
+  // The six divisions are made first, side by side (the same operands, so
+  // the same quotients; a zero d's quotients are never read). On each axis
+  // one face is entered and the other left: convex() takes the entered
+  // one's t as a new lo only when it is larger, the left one's as a new hi
+  // only when smaller (a tie keeps the earlier face), and returns false as
+  // soon as lo > hi; lo only grows and hi only shrinks, so that test is made
+  // once at the end.
+  double tMinus[3], tPlus[3];
+  for (int i = 0; i < 3; ++i) {
+    tMinus[i] = (0.0 - (-r.o[i])) / (-r.d[i]);
+    tPlus[i] = (1.0 - r.o[i]) / r.d[i];
+  }
   double lo = -kInf, hi = kInf;
   int faceLo = -1, faceHi = -1;  // 2 i: the -axis face, 2 i + 1: the +axis face
+  bool outside = false;          // parallel to a slab and outside it
   for (int i = 0; i < 3; ++i) {
     const double d = r.d[i], o = r.o[i];
-    // Face -axis_i: n.p <= 0.
     if (d == 0.0) {
-      if (!(-o <= 0.0)) return false;
-    } else {
-      const double t = (0.0 - (-o)) / (-d);
-      if (-d > 0.0) {
-        if (t < hi) {
-          hi = t;
-          faceHi = 2 * i;
-        }
-      } else if (t > lo) {
-        lo = t;
-        faceLo = 2 * i;
-      }
-      if (!(lo <= hi)) return false;
+      outside |= !(-o <= 0.0) || !(o <= 1.0);
+      continue;
     }
-    // Face +axis_i: n.p <= 1.
-    if (d == 0.0) {
-      if (!(o <= 1.0)) return false;
-    } else {
-      const double t = (1.0 - o) / d;
-      if (d > 0.0) {
-        if (t < hi) {
-          hi = t;
-          faceHi = 2 * i + 1;
-        }
-      } else if (t > lo) {
-        lo = t;
-        faceLo = 2 * i + 1;
-      }
-      if (!(lo <= hi)) return false;
+    const bool up = d > 0.0;  // enters by the -axis face, leaves by the +axis one
+    const double tIn = up ? tMinus[i] : tPlus[i], tOut = up ? tPlus[i] : tMinus[i];
+    const int fIn = up ? 2 * i : 2 * i + 1, fOut = up ? 2 * i + 1 : 2 * i;
+    if (tIn > lo) {
+      lo = tIn;
+      faceLo = fIn;
+    }
+    if (tOut < hi) {
+      hi = tOut;
+      faceHi = fOut;
     }
   }
+  if (outside) return false;
   if (!(lo <= hi) || lo == -kInf || hi == kInf) return false;
   auto normal = [](int face) {
     Vec3 n{0, 0, 0};

@@ -44,8 +44,19 @@ std::array<HallTerms, 3> hallTermsThesis(const HallHue& h, const Rgb& texel, con
   std::array<double, 3> eta{};  // from F(0), per channel
   for (int c = 0; c < 3; ++c) {
     const double f0 = texel[c];
-    eta[c] = f0 > 0.0 && f0 < 1.0 ? etaFromF0(f0) : 1.0;
+    eta[c] = c > 0 && f0 == texel[c - 1] ? eta[c - 1] : f0 > 0.0 && f0 < 1.0 ? etaFromF0(f0) : 1.0;
   }
+  // fresnelWithEta is a function of F(0) (eta follows from it) and the
+  // angle: a channel with the previous one's F(0) takes its value (grey
+  // texels: one evaluation instead of three, the same double).
+  struct FresnelMemo {
+    double f0 = std::numeric_limits<double>::quiet_NaN(), cosF = 0, value = 0;
+  };
+  auto fresnel = [&](FresnelMemo& memo, int c, double cosF) {
+    if (!(texel[c] == memo.f0 && cosF == memo.cosF))
+      memo = {texel[c], cosF, fresnelWithEta(texel[c], eta[c], cosF)};
+    return memo.value;
+  };
   // Lights outside, channels inside: each light's geometry (L, H, the
   // power) once, not once per channel; each channel still sums its lights
   // in order, so the sums are the per-channel loop's to the bit.
@@ -66,25 +77,27 @@ std::array<HallTerms, 3> hallTermsThesis(const HallHue& h, const Rgb& texel, con
       power = std::pow(std::max(0.0, -dot(n, ht)), std::max(0.0, h.kTH));
       transmits = true;
     }
+    FresnelMemo memo;
     for (int c = 0; c < 3; ++c) {
       const double iL = light.intensity[c] * light.visibility[c];
       if (iL == 0.0) continue;
       if (nl > 0.0) {
-        a[c] += iL * fresnelWithEta(texel[c], eta[c], cosF) * power;
+        a[c] += iL * fresnel(memo, c, cosF) * power;
         cd[c] += iL * nl;
       } else if (nl < 0.0) {
-        if (transmits) b[c] += iL * (1.0 - fresnelWithEta(texel[c], eta[c], cosF)) * power;
+        if (transmits) b[c] += iL * (1.0 - fresnel(memo, c, cosF)) * power;
         dd[c] += iL * -nl;
       }
     }
   }
   const double transmissivity = std::pow(h.tT, sT);  // tT^sT, the same for every channel
   std::array<HallTerms, 3> terms{};
+  FresnelMemo memo;
   for (int c = 0; c < 3; ++c) {
     const double ia = ambient[c];
     const double colour = texelInDiffuse ? std::clamp(texel[c], 0.0, 1.0) : 1.0;
     const double fDR = h.fDR[c] * colour, fDT = (1.0 - h.fDR[c]) * colour;
-    const double fsr = fresnelWithEta(texel[c], eta[c], nv);
+    const double fsr = fresnel(memo, c, nv);
     HallTerms& t = terms[static_cast<std::size_t>(c)];
     t.specularReflection = kSR * a[c];
     t.specularTransmission = kST * b[c];
