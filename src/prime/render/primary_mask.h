@@ -29,15 +29,23 @@ class PrimaryRayMask {
 
   // False only when no primary ray through (row, column)'s footprint can meet a box.
   bool mayHit(int row, int column) const;
+  struct Run {
+    int c0, c1;  // columns c0..c1 (inclusive) may hit
+  };
+  // Whether the mask rules out any pixel; when it does, runs(row) are the
+  // columns of `row` that may hit: sorted, disjoint, within the picture
+  // (mayHit(row, c) is true exactly for the columns of these runs).
+  bool masks() const { return masked_; }
+  std::span<const Run> runs(int row) const {
+    const auto [first, last] = rowRuns_[static_cast<std::size_t>(row)];
+    return {runs_.data() + first, runs_.data() + last};
+  }
   // The share of pixels that need a ray (1 when the mask covers everything).
   double coverage() const;
 
  private:
   void build(const LinearView& view, std::span<const Aabb> boxes);
   int rows_ = 0, columns_ = 0;
-  struct Run {
-    int c0, c1;  // columns c0..c1 (inclusive) may hit
-  };
   bool masked_ = false;  // false: every pixel may hit
   std::vector<Run> runs_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>>

@@ -1,5 +1,6 @@
 #include "src/prime/render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -43,6 +44,13 @@ class PaletteIndexCache {
     last_ = color;
     valid_ = true;
     return index_;
+  }
+  // get(color, stats) called n >= 1 times: the same index, n times the counts.
+  int getRepeated(const Rgb& color, std::uint64_t n, TraceStats& stats) {
+    const int index = get(color, stats);
+    stats.nanColours += (n - 1) * delta_.nanColours;
+    stats.indicesOutOfRange += (n - 1) * delta_.indicesOutOfRange;
+    return index;
   }
 
  private:
@@ -107,11 +115,50 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
       perThread.back().lattice.emplace(SampleLattice::levelsFor(settings.sampling));
   }
 
+  // In Single mode a masked pixel is its one primary ray's background, so a
+  // row's masked columns are filled run by run: what castPrimary and the
+  // index cache give each of them, the same colour, index and counts.
+  const bool fillMaskedRuns =
+      settings.sampling.mode == Sampling::Mode::Single && mask && mask->masks();
+  const auto& bg = tracer.scene().background;
+  const Rgb background{bg[0], bg[1], bg[2]};
+  auto fillBackground = [&](int i, int j0, int j1, PerThread& local) {
+    if (j0 >= j1) return;
+    checkAbort(callbacks.abort);  // R9
+    const auto n = static_cast<std::uint64_t>(j1 - j0);
+    local.stats.primaryRays += n;
+    local.stats.maskedPrimaryRays += n;
+    if (settings.keepColours)
+      for (int j = j0; j < j1; ++j) result.rgb.at(i, j) = background;
+    const auto index =
+        static_cast<std::int16_t>(local.indexOf.getRepeated(background, n, local.stats));
+    std::int16_t* row = &result.graph.pixels[static_cast<std::size_t>(i) * columns];
+    std::fill(row + j0, row + j1, index);
+  };
+
   auto renderRow = [&](int i, int thread) -> std::uint64_t {
     PerThread& local = perThread[thread];
     TraceStats& stats = local.stats;
     const std::uint64_t raysBefore = stats.rays();
     SampleLattice* lattice = local.lattice ? &*local.lattice : nullptr;
+    if (fillMaskedRuns) {
+      int j = 0;
+      for (const PrimaryRayMask::Run& run : mask->runs(i)) {
+        fillBackground(i, j, run.c0, local);
+        for (j = run.c0; j <= run.c1; ++j) {
+          checkAbort(callbacks.abort);  // R9
+          const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),
+                             static_cast<std::uint32_t>(j)};
+          const PixelTracer<Tracer> pixel{tracer, false, key};
+          const Rgb color = pixel.castPrimary(camera, i, j, stats);
+          if (settings.keepColours) result.rgb.at(i, j) = color;
+          result.graph.pixels[static_cast<std::size_t>(i) * columns + j] =
+              static_cast<std::int16_t>(local.indexOf.get(color, stats));
+        }
+      }
+      fillBackground(i, j, columns, local);
+      return stats.rays() - raysBefore;
+    }
     for (int j = 0; j < columns; ++j) {
       checkAbort(callbacks.abort);  // R9
       const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),

@@ -13,6 +13,8 @@
 
 #include "src/prime/math/listing_vec.h"
 #include "src/prime/render/renderer.h"
+#include "src/prime/render/tracer_modern.h"
+#include "src/prime/render/tracer_thesis.h"
 #include "tests/unit/prime/render/small_scene.h"
 
 namespace prime {
@@ -146,6 +148,46 @@ TEST(PrimaryRayMask, MaskedRenderEqualsTheListingsLinearSearch) {
       ASSERT_EQ(std::memcmp(c.data(), m.data(), sizeof c), 0) << "row " << i << " column " << j;
     }
   EXPECT_GT(hits, 10000);
+  // Every pixel is one primary ray (the masked ones counted, not traced), and
+  // its index is the palette's for its colour: the masked runs are filled
+  // with what each of their pixels would have been given.
+  EXPECT_EQ(r.stats.primaryRays, static_cast<std::uint64_t>(camera.rows()) * camera.columns());
+  for (int i = 0; i < camera.rows(); ++i)
+    for (int j = 0; j < camera.columns(); ++j) {
+      TraceStats unused;
+      ASSERT_EQ(r.graph.at(j, i), paletteIndex(r.rgb.at(i, j), settings, unused))
+          << "row " << i << " column " << j;
+    }
+}
+
+// The modern and thesis profiles always mask; their Single-mode renders
+// against every pixel's primary ray traced by the profile's tracer.
+TEST(PrimaryRayMask, MaskedModernAndThesisRendersEqualEveryRayTraced) {
+  const Scene scene = sceneOfTwo();
+  for (const Profile profile : {Profile::Modern, Profile::Thesis}) {
+    RenderSettings settings;
+    settings.threads = 2;
+    settings.profile = profile;
+    const RenderResult r = render(scene, settings);
+    EXPECT_GT(r.stats.maskedPrimaryRays, 100000u);
+    const PrimeCamera camera(settings.camera);
+    EXPECT_EQ(r.stats.primaryRays, static_cast<std::uint64_t>(camera.rows()) * camera.columns());
+    const TracerModern modern(scene, settings.trace);
+    const TracerThesis thesis(scene, settings.trace, settings.thesis);
+    TraceStats stats;
+    for (int i = 0; i < camera.rows(); ++i)
+      for (int j = 0; j < camera.columns(); ++j) {
+        const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),
+                           static_cast<std::uint32_t>(j)};
+        const Rgb c = profile == Profile::Modern
+                          ? modern.castRay(camera.primaryRay(i, j), 0, stats)
+                          : thesis.castRay(camera.primaryRay(i, j), 0, stats, SampleId{key, 0});
+        ASSERT_EQ(std::memcmp(c.data(), r.rgb.at(i, j).data(), sizeof c), 0)
+            << "row " << i << " column " << j;
+        TraceStats unused;
+        ASSERT_EQ(r.graph.at(j, i), paletteIndex(c, settings, unused));
+      }
+  }
 }
 
 }  // namespace
