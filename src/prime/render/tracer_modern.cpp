@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -52,6 +53,34 @@ double texel(const SceneTexture& m, int c, double u, double v) {
     return std::min(static_cast<int>(x * n), n - 1);
   };
   return m.channel[c][static_cast<std::size_t>(index(u, m.uScale) + m.uScale * index(v, m.vScale))];
+}
+
+// The one colour of a primitive whose every surface, outside and inside,
+// has a map of a single colour, the same for all (bit for bit): texel() gives
+// it for any (u, v). Nothing when a map differs, varies or is missing.
+std::optional<Rgb> plainColourOf(const Scene& scene, const ScenePrim& p) {
+  std::optional<Rgb> colour;
+  const int surfaces = std::min<int>(io::surfaceCount(p.type), io::kMaxSurface);
+  for (int s = 0; s < std::max(surfaces, 1); ++s)
+    for (const int mapNum : p.map[static_cast<std::size_t>(s)]) {
+      if (mapNum < 0 || static_cast<std::size_t>(mapNum) >= scene.maps.size()) return std::nullopt;
+      const SceneTexture& m = scene.maps[static_cast<std::size_t>(mapNum)];
+      const auto texels = static_cast<std::size_t>(m.uScale) * static_cast<std::size_t>(m.vScale);
+      if (m.uScale <= 0 || m.vScale <= 0) return std::nullopt;
+      Rgb c{};
+      for (int k = 0; k < 3; ++k) {
+        const std::vector<double>& channel = m.channel[static_cast<std::size_t>(k)];
+        if (channel.size() < texels) return std::nullopt;
+        c[k] = channel[0];
+        for (std::size_t t = 1; t < texels; ++t)
+          if (std::memcmp(&channel[t], &c[k], sizeof(double)) != 0) return std::nullopt;
+      }
+      if (!colour)
+        colour = c;
+      else if (std::memcmp(colour->data(), c.data(), sizeof c) != 0)
+        return std::nullopt;
+    }
+  return colour;
 }
 
 }  // namespace
@@ -122,6 +151,8 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
   for (const auto& l : scene.lights) lights_.push_back({l.pt, {l.rgb[0], l.rgb[1], l.rgb[2]}});
   inverse_.reserve(scene.prims.size());
   for (const ScenePrim& p : scene.prims) inverse_.push_back(accurateInverse(p.transform));
+  plainColour_.reserve(scene.prims.size());
+  for (const ScenePrim& p : scene.prims) plainColour_.push_back(plainColourOf(scene, p));
   programs_.reserve(scene.objects.size());
   for (const SceneObject& obj : scene.objects) {
     try {
@@ -562,6 +593,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
 }
 
 Rgb TracerModern::surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const {
+  if (!probe && plainColour_[hit.prim]) return *plainColour_[hit.prim];
   const ScenePrim& prim = scene_.prims[hit.prim];
   const InverseMapResult uv = inverseMap1991(prim.type, hit.local);
   const int surface = uv.surface >= 0 && uv.surface < io::surfaceCount(prim.type) ? uv.surface : 0;

@@ -12,6 +12,7 @@
 //   - no NaN or Inf ever reaches a pixel.
 #pragma once
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "src/prime/geom/csg_program_1991.h"
@@ -111,7 +112,12 @@ class TracerModern {
   RayTreeOptions options_;
   ObjectBvh bvh_;
   std::vector<HallLight> lights_;
-  std::vector<Matrix4> inverse_;               // accurateInverse of every primitive's transform
+  std::vector<Matrix4> inverse_;  // accurateInverse of every primitive's transform
+  // Per primitive: the colour every point of it shows when each map its
+  // surfaces use (outside and inside) is one colour, the same for all; the
+  // texel then does not depend on (u, v), and surfaceColour skips the
+  // inverse mapping (probes still make it).
+  std::vector<std::optional<Rgb>> plainColour_;
   std::vector<CsgProgram1991> programs_;       // per object: its tree compiled (compileModern)
   std::vector<std::vector<int>> unionLeaves_;  // per object: CsgProgram1991::unionLeaves
 };

@@ -4,8 +4,10 @@
 // bit for bit (and count that the skipping really skips).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "src/prime/math/listing_matrix.h"
 #include "src/prime/render/probe.h"
@@ -23,8 +25,21 @@ Scene randomScene(unsigned seed, int objects) {
   SceneTexture map;
   map.uScale = map.vScale = 2;
   for (auto& c : map.channel) c = {unit(rng), unit(rng), unit(rng), unit(rng)};
-  s.maps.resize(2);
+  s.maps.resize(5);
   s.maps[1] = map;
+  // Maps of one colour (TracerModern's plain primitives skip the inverse
+  // mapping): 2 and 3 the same colour (1 x 1 and 2 x 2), 4 another.
+  auto plain = [](int size, double r, double g, double b) {
+    SceneTexture t;
+    t.uScale = t.vScale = size;
+    const std::size_t n = static_cast<std::size_t>(size) * size;
+    t.channel = {std::vector<double>(n, r), std::vector<double>(n, g), std::vector<double>(n, b)};
+    t.constant = true;
+    return t;
+  };
+  s.maps[2] = plain(1, 0.7, 0.25, 0.4);
+  s.maps[3] = plain(2, 0.7, 0.25, 0.4);
+  s.maps[4] = plain(1, 0.1, 0.8, 0.3);
   s.ambient = {0.2, 0.2, 0.2};
   s.lights = {{{500, 1500, -1000}, {0.8, 0.8, 0.8}}, {{-200, 300, -500}, {0.3, 0.2, 0.1}}};
   const char types[5] = {'S', 'B', 'C', 'N', 'Y'};
@@ -36,7 +51,14 @@ Scene randomScene(unsigned seed, int objects) {
     transform(p.transform, {k, k * (0.5 + unit(rng)), k}, {pos(rng), pos(rng), pos(rng) * 0.5},
               {0, 0, 0}, {angle(rng), angle(rng), 0});
     EXPECT_TRUE(inverse(p.transform, p.inverse));
-    for (auto& m : p.map) m = {1, 1};
+    // By turns: the 2 x 2 map; one colour; one colour from two maps; and
+    // one colour outside, another inside (not plain).
+    const std::size_t turn = s.prims.size() % 4;
+    for (std::size_t k = 0; k < p.map.size(); ++k)
+      p.map[k] = turn == 0   ? std::array<int, 2>{1, 1}
+                 : turn == 1 ? std::array<int, 2>{2, 2}
+                 : turn == 2 ? std::array<int, 2>{k % 2 == 0 ? 2 : 3, 3}
+                             : std::array<int, 2>{2, 4};
     s.prims.push_back(p);
     return static_cast<int>(s.prims.size()) - 1;
   };
