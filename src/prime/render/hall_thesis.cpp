@@ -62,6 +62,11 @@ std::array<HallTerms, 3> hallTermsThesis(const HallHue& h, const Rgb& texel, con
   // in order, so the sums are the per-channel loop's to the bit.
   std::array<double, 3> a{}, b{}, cd{}, dd{};
   for (const ThesisLight& light : lights) {
+    // A light that adds nothing to any channel (in shadow, or dark) is
+    // skipped whole: its geometry and powers would only be computed.
+    bool adds = false;
+    for (int c = 0; c < 3; ++c) adds = adds || light.intensity[c] * light.visibility[c] != 0.0;
+    if (!adds) continue;
     const Vec3 l = normalized(light.pt - point);
     const double nl = dot(n, l);
     double cosF = 0, power = 0;  // the Fresnel term's angle, (N.H_j)^kRH or (-N.H'_j)^kTH
