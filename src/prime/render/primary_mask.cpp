@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace prime {
 
@@ -12,6 +14,9 @@ constexpr double kPadPixels = 2.0;
 
 struct Rect {
   int row0, row1, col0, col1;  // inclusive
+  // Per row from row0, the columns kept within col0..col1 (c0 > c1: none),
+  // when the box's hull narrows it; empty otherwise.
+  std::vector<std::pair<int, int>> rowColumns;
 };
 
 // The direction of pixel (row, column) is toFirst + column*stepAcross +
@@ -72,22 +77,70 @@ std::optional<Rect> projectedRect(const Projector& proj, const Aabb& box, int ro
   return Rect{clampTo(std::floor(rowLo - kPadPixels), rows),
               clampTo(std::ceil(rowHi + kPadPixels), rows),
               clampTo(std::floor(colLo - kPadPixels), columns),
-              clampTo(std::ceil(colHi + kPadPixels), columns)};
+              clampTo(std::ceil(colHi + kPadPixels), columns),
+              {}};
+}
+
+// Narrows `rect` row by row to the columns within kPadPixels of the convex
+// hull of `points` (their projections): for row i, the hull's part between
+// rows i - kPadPixels and i + kPadPixels, widened by kPadPixels, the margin
+// the rectangle has. That part's column range is reached at a point inside
+// the band or where a segment between two points crosses one of the band's
+// edges (the hull's edges are among those segments, and every segment lies
+// in the hull). Nothing is narrowed when a point is not in front of the eye.
+void narrowToHull(const Projector& proj, const std::array<Vec3, 8>& points, Rect& rect) {
+  std::array<std::pair<double, double>, 8> px;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto p = proj.pixel(points[k]);
+    if (!p) return;
+    px[k] = *p;
+  }
+  auto clampTo = [](double v, int lo, int hi) {
+    return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+  };
+  rect.rowColumns.reserve(static_cast<std::size_t>(rect.row1 - rect.row0 + 1));
+  for (int i = rect.row0; i <= rect.row1; ++i) {
+    const double a = i - kPadPixels, b = i + kPadPixels;
+    double lo = INFINITY, hi = -INFINITY;
+    auto take = [&](double c) {
+      lo = std::min(lo, c);
+      hi = std::max(hi, c);
+    };
+    for (std::size_t k = 0; k < px.size(); ++k) {
+      const auto [rk, ck] = px[k];
+      if (rk >= a && rk <= b) take(ck);
+      for (std::size_t m = k + 1; m < px.size(); ++m) {
+        const auto [rm, cm] = px[m];
+        if (rk == rm) continue;  // a segment along a row: its ends are counted
+        for (const double edge : {a, b})
+          if ((rk - edge) * (rm - edge) <= 0.0) take(ck + (edge - rk) * (cm - ck) / (rm - rk));
+      }
+    }
+    if (!(lo <= hi)) {
+      rect.rowColumns.emplace_back(1, 0);  // the hull does not come near this row
+      continue;
+    }
+    rect.rowColumns.emplace_back(
+        std::max(rect.col0, clampTo(std::floor(lo - kPadPixels), rect.col0 - 1, rect.col1 + 1)),
+        std::min(rect.col1, clampTo(std::ceil(hi + kPadPixels), rect.col0 - 1, rect.col1 + 1)));
+  }
 }
 
 }  // namespace
 
 PrimaryRayMask::PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes)
     : rows_(camera.rows()), columns_(camera.columns()) {
-  build(camera.linearView(), boxes);
+  build(camera.linearView(), boxes, {});
 }
 
-PrimaryRayMask::PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes)
+PrimaryRayMask::PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes,
+                               std::span<const std::array<Vec3, 8>> corners)
     : rows_(camera.rows()), columns_(camera.columns()) {
-  build(camera.linearView(), boxes);
+  build(camera.linearView(), boxes, corners.size() == boxes.size() ? corners : decltype(corners){});
 }
 
-void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes) {
+void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes,
+                           std::span<const std::array<Vec3, 8>> corners) {
   const Projector proj(view);
   if (!proj.usable()) return;
   // Each box's rectangle on the image, then per row the union of the
@@ -97,44 +150,58 @@ void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes) 
   // rows, not with the pixels, and nothing is left for the render threads
   // to wait on.
   std::vector<Rect> rects;
-  for (const Aabb& box : boxes) {
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    const Aabb& box = boxes[k];
     if (box.empty()) continue;  // an object with no primitive box is never tested
     const std::optional<Rect> r = projectedRect(proj, box, rows_, columns_);
     if (!r) return;  // this box may be seen anywhere: no mask
     const int r0 = std::max(r->row0, 0), r1 = std::min(r->row1, rows_ - 1);
     const int c0 = std::max(r->col0, 0), c1 = std::min(r->col1, columns_ - 1);
     if (r0 > r1 || c0 > c1) continue;  // entirely off the image
-    rects.push_back({r0, r1, c0, c1});
+    rects.push_back({r0, r1, c0, c1, {}});
+    if (!corners.empty()) narrowToHull(proj, corners[k], rects.back());
   }
   masked_ = true;
   std::sort(rects.begin(), rects.end(),
             [](const Rect& a, const Rect& b) { return a.row0 < b.row0; });
   rowRuns_.assign(static_cast<std::size_t>(rows_), {0, 0});
-  std::vector<Rect> active;
+  std::vector<const Rect*> active;
+  std::vector<std::pair<int, int>> spans;  // this row's column ranges
   std::size_t next = 0;
   for (int i = 0; i < rows_; ++i) {
     bool changed = false;
     const auto ended =
-        std::remove_if(active.begin(), active.end(), [i](const Rect& r) { return r.row1 < i; });
+        std::remove_if(active.begin(), active.end(), [i](const Rect* r) { return r->row1 < i; });
     changed = ended != active.end();
     active.erase(ended, active.end());
     for (; next < rects.size() && rects[next].row0 <= i; ++next) {
-      active.push_back(rects[next]);
+      active.push_back(&rects[next]);
       changed = true;
     }
-    if (!changed && i > 0) {
+    // A row crossed by the same rectangles as the previous one, none of them
+    // narrowed row by row, shares its runs.
+    const bool narrowed = std::any_of(active.begin(), active.end(),
+                                      [](const Rect* r) { return !r->rowColumns.empty(); });
+    if (!changed && !narrowed && i > 0) {
       rowRuns_[static_cast<std::size_t>(i)] = rowRuns_[static_cast<std::size_t>(i) - 1];
       continue;
     }
-    std::vector<Rect> byColumn = active;
-    std::sort(byColumn.begin(), byColumn.end(),
-              [](const Rect& a, const Rect& b) { return a.col0 < b.col0; });
+    spans.clear();
+    for (const Rect* r : active) {
+      if (r->rowColumns.empty()) {
+        spans.emplace_back(r->col0, r->col1);
+      } else {
+        const auto [c0, c1] = r->rowColumns[static_cast<std::size_t>(i - r->row0)];
+        if (c0 <= c1) spans.emplace_back(c0, c1);
+      }
+    }
+    std::sort(spans.begin(), spans.end());
     const auto first = static_cast<std::uint32_t>(runs_.size());
-    for (const Rect& r : byColumn) {
-      if (runs_.size() > first && r.col0 <= runs_.back().c1 + 1)
-        runs_.back().c1 = std::max(runs_.back().c1, r.col1);
+    for (const auto& [c0, c1] : spans) {
+      if (runs_.size() > first && c0 <= runs_.back().c1 + 1)
+        runs_.back().c1 = std::max(runs_.back().c1, c1);
       else
-        runs_.push_back({r.col0, r.col1});
+        runs_.push_back({c0, c1});
     }
     rowRuns_[static_cast<std::size_t>(i)] = {first, static_cast<std::uint32_t>(runs_.size())};
   }

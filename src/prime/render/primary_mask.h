@@ -9,6 +9,7 @@
 // A box that reaches behind the eye, or a degenerate camera, covers every
 // pixel (the mask is then simply not used).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -25,7 +26,11 @@ class PrimaryRayMask {
   // boxes are objects that cannot be hit).
   PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes);
   // The same for the camera a render uses (the listing's or the free one).
-  PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes);
+  // `corners`, if given, one set per box: what can be hit in that box lies
+  // in the convex hull of those eight points as well, and each row keeps
+  // only the columns near the hull's projection (within the same margin).
+  PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes,
+                 std::span<const std::array<Vec3, 8>> corners = {});
 
   // False only when no primary ray through (row, column)'s footprint can meet a box.
   bool mayHit(int row, int column) const;
@@ -44,7 +49,8 @@ class PrimaryRayMask {
   double coverage() const;
 
  private:
-  void build(const LinearView& view, std::span<const Aabb> boxes);
+  void build(const LinearView& view, std::span<const Aabb> boxes,
+             std::span<const std::array<Vec3, 8>> corners);
   int rows_ = 0, columns_ = 0;
   bool masked_ = false;  // false: every pixel may hit
   std::vector<Run> runs_;

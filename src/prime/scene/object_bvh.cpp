@@ -102,6 +102,17 @@ std::vector<Aabb> ObjectBvh::primitiveBoxesOfObjects(const Scene& scene) const {
   return boxes;
 }
 
+std::vector<std::array<Vec3, 8>> ObjectBvh::primitiveCornersOfObjects(const Scene& scene) const {
+  std::vector<std::array<Vec3, 8>> corners;
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const Aabb& object = objectBox(static_cast<int>(k));
+    for (const CsgEntry& e : scene.objects[k].entries)
+      if (e.op == 'P' && !object.empty() && !primBox(e.l).intersected(object).empty())
+        corners.push_back(primitiveCorners(scene.prims[static_cast<std::size_t>(e.l)]));
+  }
+  return corners;
+}
+
 ObjectBvh::ObjectBvh(const Scene& scene, ObjectBoxes objectBoxes) {
   for (const auto& p : scene.prims) primBoxes_.push_back(primitiveBox(p));
   bvh_ = Bvh(boxesOfObjects(scene, primBoxes_, objectBoxes));

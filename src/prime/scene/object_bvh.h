@@ -4,6 +4,7 @@
 // are pruned only when their box starts strictly beyond the nearest hit so
 // far, and the caller breaks ties between equal t by list order.
 #pragma once
+#include <array>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,9 @@ class ObjectBvh {
   // each within its object's box: a ray that meets none of them meets no
   // object. Tighter than the object boxes, for the primary-ray mask.
   std::vector<Aabb> primitiveBoxesOfObjects(const Scene& scene) const;
+  // The corners (primitiveCorners) of the primitive of each of those boxes,
+  // in the same order: the primitive lies in their convex hull too.
+  std::vector<std::array<Vec3, 8>> primitiveCornersOfObjects(const Scene& scene) const;
 
  private:
   std::vector<Aabb> primBoxes_;

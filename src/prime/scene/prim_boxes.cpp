@@ -4,7 +4,7 @@
 
 namespace prime {
 
-Aabb primitiveBox(const ScenePrim& p) {
+std::array<Vec3, 8> primitiveCorners(const ScenePrim& p) {
   Vec3 lo{}, hi{};
   switch (p.type) {
     case io::PrimType::Sphere:
@@ -22,10 +22,16 @@ Aabb primitiveBox(const ScenePrim& p) {
       hi = {1, 1, 1};
       break;
   }
-  Aabb box;
+  std::array<Vec3, 8> corners;
   for (int c = 0; c < 8; ++c)
-    box.add(pointMatrixMul({c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]},
-                           p.transform));
+    corners[static_cast<std::size_t>(c)] = pointMatrixMul(
+        {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, p.transform);
+  return corners;
+}
+
+Aabb primitiveBox(const ScenePrim& p) {
+  Aabb box;
+  for (const Vec3& corner : primitiveCorners(p)) box.add(corner);
   // Pad by a relative margin far above the rounding of any primitive test
   // (a few ulps of the coordinates) so that the box is conservative.
   double size = 0.0;

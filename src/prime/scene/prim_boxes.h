@@ -4,6 +4,8 @@
 // that rounding in the primitive tests can never put a reported hit outside
 // its box.
 #pragma once
+#include <array>
+
 #include "src/geom/aabb.h"
 #include "src/prime/scene/scene.h"
 
@@ -12,5 +14,9 @@ namespace prime {
 // The unit primitive's box (S, C, N about the z axis; B and Y in the unit
 // cube) mapped by the primitive's transform, padded.
 Aabb primitiveBox(const ScenePrim& p);
+// The same box's eight corners mapped by the transform, unpadded: the
+// primitive lies in their convex hull (a parallelepiped, often much smaller
+// than its axis-aligned box).
+std::array<Vec3, 8> primitiveCorners(const ScenePrim& p);
 
 }  // namespace prime
