@@ -7,7 +7,9 @@
 // pixel) get the background without a ray: the box tests they would run
 // cannot accept the ray, so the pixel is the one the tracer would return.
 // A box that reaches behind the eye, or a degenerate camera, covers every
-// pixel (the mask is then simply not used).
+// pixel (the mask is then simply not used). Given the corners of each
+// primitive's own (turned) box, each rectangle is narrowed row by row to the
+// convex hull of their projections, widened by the same margin.
 #pragma once
 #include <array>
 #include <cstdint>
