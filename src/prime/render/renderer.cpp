@@ -145,6 +145,8 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
       int j = 0;
       for (const PrimaryRayMask::Run& run : mask->runs(i)) {
         fillBackground(i, j, run.c0, local);
+        // Single mode's samplePixel is castPrimary; called directly (one
+        // pixel function shared with the loop below measured 2-4 % slower).
         for (j = run.c0; j <= run.c1; ++j) {
           checkAbort(callbacks.abort);  // R9
           const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),

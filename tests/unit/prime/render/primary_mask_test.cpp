@@ -37,6 +37,24 @@ bool anyBoxAccepts(const std::vector<Aabb>& boxes, Ray ray) {
   return false;
 }
 
+// A random view of the scene space from in front: the window's corner
+// fractions start below maxStart and span at least minSpan (up to 0.4 more).
+CameraSettings randomCamera(std::mt19937& rng, double maxStart, double minSpan, int width,
+                            int height) {
+  std::uniform_real_distribution<double> u(0, 1);
+  CameraSettings s;
+  s.eye = {u(rng) * 1000, u(rng) * 1000, -500 - u(rng) * 3000};
+  s.windowLeft = {u(rng) * 200 - 100, 800 + u(rng) * 400, u(rng) * 200 - 100};
+  s.windowRight = {900 + u(rng) * 200, s.windowLeft[1] + u(rng) * 100 - 50, u(rng) * 200 - 100};
+  s.xMin = u(rng) * maxStart;
+  s.yMin = u(rng) * maxStart;
+  s.xMax = s.xMin + minSpan + u(rng) * 0.4;
+  s.yMax = s.yMin + minSpan + u(rng) * 0.4;
+  s.screenWidth = width;
+  s.screenHeight = height;
+  return s;
+}
+
 TEST(PrimaryRayMask, ListingCameraOneBoxInFront) {
   const ListingCamera camera{CameraSettings{}};  // 350 x 769 pixels
   const std::vector<Aabb> boxes = {box({400, 400, 100}, {600, 600, 300})};
@@ -77,16 +95,7 @@ TEST(PrimaryRayMask, RandomBoxesAndCamerasNeverMaskAnAcceptedRay) {
   std::uniform_real_distribution<double> u(0, 1);
   int accepted = 0, masked = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    CameraSettings s;
-    s.eye = {u(rng) * 1000, u(rng) * 1000, -500 - u(rng) * 3000};
-    s.windowLeft = {u(rng) * 200 - 100, 800 + u(rng) * 400, u(rng) * 200 - 100};
-    s.windowRight = {900 + u(rng) * 200, s.windowLeft[1] + u(rng) * 100 - 50, u(rng) * 200 - 100};
-    s.xMin = u(rng) * 0.5;
-    s.yMin = u(rng) * 0.5;
-    s.xMax = s.xMin + 0.1 + u(rng) * 0.4;
-    s.yMax = s.yMin + 0.1 + u(rng) * 0.4;
-    s.screenWidth = 320;
-    s.screenHeight = 240;
+    const CameraSettings s = randomCamera(rng, 0.5, 0.1, 320, 240);
     const ListingCamera camera(s);
     std::vector<Aabb> boxes;
     for (int k = 0, n = 1 + trial % 6; k < n; ++k) {
@@ -126,16 +135,7 @@ TEST(PrimaryRayMask, HullsOfTurnedPrimitivesNeverMaskARayThatMeetsOne) {
   int hits = 0;
   double boxCoverage = 0, hullCoverage = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    CameraSettings s;
-    s.eye = {u(rng) * 1000, u(rng) * 1000, -500 - u(rng) * 3000};
-    s.windowLeft = {u(rng) * 200 - 100, 800 + u(rng) * 400, u(rng) * 200 - 100};
-    s.windowRight = {900 + u(rng) * 200, s.windowLeft[1] + u(rng) * 100 - 50, u(rng) * 200 - 100};
-    s.xMin = u(rng) * 0.3;
-    s.yMin = u(rng) * 0.3;
-    s.xMax = s.xMin + 0.3 + u(rng) * 0.4;
-    s.yMax = s.yMin + 0.3 + u(rng) * 0.4;
-    s.screenWidth = 240;
-    s.screenHeight = 180;
+    const CameraSettings s = randomCamera(rng, 0.3, 0.3, 240, 180);
     const PrimeCamera camera(s);
     test::SmallScene small;
     for (int k = 0, n = 1 + trial % 5; k < n; ++k) {
