@@ -462,12 +462,13 @@ Vec3 spawnOrigin(const SurfaceHit& hit, const Vec3& w) {
 }
 
 bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats, Probe* probe,
-                              int depth) const {
+                              int depth, int leaves) const {
   double nearest = std::numeric_limits<double>::infinity();
   int bestObj = -1;
   TNode bestNode{};
   const BoxRay boxRay(ray);
   auto consider = [&](int k) {
+    if (k == leaves) return;  // (never for a probe)
     const SceneObject& obj = scene_.objects[k];
     if (obj.boundPrim >= 0) {  // the bound must be met ahead (from inside too)
       ++stats.boundTests;
@@ -539,9 +540,11 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
 // Refract into the object at the hit, walk to where the ray leaves it
 // (reflecting internally while beyond the critical angle), refract out.
 Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance,
-                           bool& through, TraceStats& stats, Probe* probe, int depth) const {
+                           bool& through, TraceStats& stats, Probe* probe, int depth,
+                           int* leaves) const {
   distance = 0.0;
   through = false;
+  if (leaves) *leaves = -1;
   const SceneObject& obj = scene_.objects[hit.obj];
   const Vec3 d = normalized(ray.d);
   // Snell with the facing normal: entering, eta = 1/indx; a ray that starts
@@ -559,6 +562,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
+    if (leaves) *leaves = leavingConvex(hit, r.d);
     return report(0, r, {});
   }
   for (int step = 0; step < kMaxInternalReflections; ++step) {
@@ -586,6 +590,8 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     r.d = normalized(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
     r.o = spawnOrigin(at, r.d);
     through = true;
+    if (leaves && isLonePrimitive(static_cast<std::size_t>(hit.obj)) && leavesThrough(at, r.d))
+      *leaves = hit.obj;
     return report(step + 1, r, {});
   }
   ++stats.cappedTirLoops;  // trapped: the light is absorbed
@@ -609,12 +615,12 @@ Rgb TracerModern::surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) 
 }
 
 Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
-                          double weight) const {
+                          double weight, int leaves) const {
   stats.countRay(kind);
   ray.d = normalized(ray.d);
   if (probe) probe->ray(depth, kind, ray);
   SurfaceHit hit;
-  if (!nearestHit(ray, hit, stats, probe, depth)) {
+  if (!nearestHit(ray, hit, stats, probe, depth, probe ? -1 : leaves)) {
     if (probe) probe->miss(depth, scene_.background);
     return scene_.background;
   }
@@ -633,15 +639,17 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, R
   bool through = false;
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
-  if (kST != 0.0) transmitted = transmit(ray, hit, h.indx, sT, through, stats, probe, depth);
+  int leavesT = -1;
+  if (kST != 0.0)
+    transmitted = transmit(ray, hit, h.indx, sT, through, stats, probe, depth, &leavesT);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
       iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, probe, RayKind::Reflected,
-                    weight * std::abs(kSR));
+                    weight * std::abs(kSR), leavingConvex(hit, refl));
     if (through && weight * std::abs(kST) >= options_.minWeight)
       iST = castRay(transmitted, depth + 1, stats, probe, RayKind::Transmitted,
-                    weight * std::abs(kST));
+                    weight * std::abs(kST), leavesT);
   }
 
   const HallHue hue{h.kDR, h.kDT, h.fDR, h.tT, h.kRH, h.kTH, h.indx};

@@ -43,6 +43,17 @@ struct SurfaceHit {
   int nearCount = 0;
 };
 
+// Whether w leaves through every surface near the hit (hit.near, outward
+// normals): w points out of each, so a ray from spawnOrigin(hit, w) starts
+// outside all of them and, when they bound a convex solid, runs outside it.
+// False when no surface was found near the point.
+inline bool leavesThrough(const SurfaceHit& hit, const Vec3& w) {
+  if (hit.nearCount == 0) return false;
+  for (int k = 0; k < hit.nearCount; ++k)
+    if (!(dot(w, hit.near[static_cast<std::size_t>(k)]) > 0.0)) return false;
+  return true;
+}
+
 class TracerModern {
  public:
   TracerModern(const Scene& scene, RayTreeOptions options = {});
@@ -50,11 +61,14 @@ class TracerModern {
   // With a probe, every ray, the tests of the objects the BVH visits (as a
   // render visits them), the hit, texture, transmission and Hall's terms are
   // recorded, as Tracer1991::castRay records the 1991 profile's.
+  // `leaves`: an object the ray starts on and provably never meets again (a
+  // convex solid it leaves, leavesThrough), not tested; -1 for none.
   Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
-              RayKind kind = RayKind::Primary, double weight = 1.0) const;
-  // The nearest surface along the ray with t > 0, if any.
+              RayKind kind = RayKind::Primary, double weight = 1.0, int leaves = -1) const;
+  // The nearest surface along the ray with t > 0, if any; object `leaves`
+  // (as castRay's) is not tested.
   bool nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats, Probe* probe = nullptr,
-                  int depth = 0) const;
+                  int depth = 0, int leaves = -1) const;
   // The object's solid along the whole line of `ray` (sorted intervals).
   TList objectIntervals(const SceneObject& obj, const Ray& ray, TraceStats& stats,
                         Probe* probe = nullptr, int depth = 0) const;
@@ -78,14 +92,26 @@ class TracerModern {
   // pairs of min(tMax, exit) - max(0, entry) where positive, in list order;
   // a lone primitive's without building the list (N18).
   double insideLength(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats) const;
+  // Whether object `object` is one primitive (no set operation): a convex
+  // solid, since every PRIME primitive is one.
+  bool isLonePrimitive(std::size_t object) const { return programs_[object].isSingleLeaf(); }
+  // The hit's object when a ray leaving the hit in direction w provably never
+  // meets it again: a lone primitive (convex) that w leaves through every
+  // surface near the point (leavesThrough); else -1. (castRay's `leaves`.)
+  int leavingConvex(const SurfaceHit& hit, const Vec3& w) const {
+    return isLonePrimitive(static_cast<std::size_t>(hit.obj)) && leavesThrough(hit, w) ? hit.obj
+                                                                                       : -1;
+  }
 
   // The texel at the hit (inverse mapping, N11, N12, N17), probed.
   Rgb surfaceColour(const SurfaceHit& hit, int depth, Probe* probe) const;
   // Refract into the hit's object, walk to where the ray leaves it and
   // refract out (N9): the leaving ray, the distance inside, and whether it
   // got through (false: total internal reflection or trapped).
+  // `leaves` (if given): the object the leaving ray provably never meets
+  // again (castRay's `leaves`), or -1.
   Ray transmit(const Ray& ray, const SurfaceHit& hit, double indx, double& distance, bool& through,
-               TraceStats& stats, Probe* probe, int depth) const;
+               TraceStats& stats, Probe* probe, int depth, int* leaves = nullptr) const;
 
   const Scene& scene() const { return scene_; }
   // The object boxes every ray is tested against first (the BVH's).

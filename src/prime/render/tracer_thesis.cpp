@@ -81,7 +81,7 @@ Vec3 TracerThesis::lightPoint(int j, const Vec3& from, const SampleId& sample, i
 }
 
 Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceStats& stats,
-                                Probe* probe, int depth) const {
+                                Probe* probe, int depth, int leaves) const {
   stats.countRay(RayKind::Shadow);
   const Vec3 d = target - origin;
   const double dist = std::sqrt(dot(d, d));
@@ -94,6 +94,7 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
   const BoxRay boxRay(ray);
   auto consider = [&](int k, double) {
     if (blocked) return;
+    if (k == leaves) return;
     const SceneObject& obj = sc.objects[static_cast<std::size_t>(k)];
     if (obj.boundPrim >= 0) {  // the bound must be met between the point and the light
       ++stats.boundTests;
@@ -138,13 +139,13 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
 }
 
 Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId& sample,
-                          Probe* probe, RayKind kind, double weight) const {
+                          Probe* probe, RayKind kind, double weight, int leaves) const {
   const Scene& sc = scene();
   stats.countRay(kind);
   ray.d = normalized(ray.d);
   if (probe) probe->ray(depth, kind, ray);
   SurfaceHit hit;
-  if (!modern_.nearestHit(ray, hit, stats, probe, depth)) {
+  if (!modern_.nearestHit(ray, hit, stats, probe, depth, probe ? -1 : leaves)) {
     if (probe) probe->miss(depth, sc.background);
     return sc.background;
   }
@@ -163,16 +164,17 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
   bool through = false;
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
+  int leavesT = -1;  // the object the transmitted ray leaves, as castRay's `leaves`
   if (kST != 0.0)
-    transmitted = modern_.transmit(ray, hit, h.indx, sT, through, stats, probe, depth);
+    transmitted = modern_.transmit(ray, hit, h.indx, sT, through, stats, probe, depth, &leavesT);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
       iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, sample, probe,
-                    RayKind::Reflected, weight * std::abs(kSR));
+                    RayKind::Reflected, weight * std::abs(kSR), modern_.leavingConvex(hit, refl));
     if (through && weight * std::abs(kST) >= options_.minWeight)
       iST = castRay(transmitted, depth + 1, stats, sample, probe, RayKind::Transmitted,
-                    weight * std::abs(kST));
+                    weight * std::abs(kST), leavesT);
   }
 
   // The lights this point sees, through shadow rays (thesis 2.3.2). A light
@@ -191,8 +193,9 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
     const double nl = dot(n, toLight);
     const bool used = nl > 0.0 ? (kSR != 0.0 || h.kDR != 0.0) : (kST != 0.0 || h.kDT != 0.0);
     if (!thesis_.shadows || !used) continue;
-    l.visibility =
-        transmittance(spawnOrigin(hit, normalized(toLight)), l.pt, stats, probe, depth + 1);
+    const Vec3 w = normalized(toLight);
+    l.visibility = transmittance(spawnOrigin(hit, w), l.pt, stats, probe, depth + 1,
+                                 probe ? -1 : modern_.leavingConvex(hit, w));
     if (probe) probe->shadow(depth, j, l.pt, l.visibility);
   }
 

@@ -42,8 +42,9 @@ class TracerThesis {
  public:
   TracerThesis(const Scene& scene, RayTreeOptions options = {}, ThesisOptions thesis = {});
 
+  // `leaves`: as TracerModern::castRay's.
   Rgb castRay(Ray ray, int depth, TraceStats& stats, const SampleId& sample, Probe* probe = nullptr,
-              RayKind kind = RayKind::Primary, double weight = 1.0) const;
+              RayKind kind = RayKind::Primary, double weight = 1.0, int leaves = -1) const;
   // Without a sample id: sample 0 of pixel (0, 0), seed 1.
   Rgb castRay(const Ray& ray, int depth, TraceStats& stats) const {
     return castRay(ray, depth, stats, SampleId{});
@@ -52,9 +53,10 @@ class TracerThesis {
   // The fraction of light that travels from `origin` to `target` per channel:
   // 1 with nothing between, 0 behind an opaque object, kST * tT^d through a
   // transparent one (T3). Counts one shadow ray; stops at the first opaque
-  // blocker.
+  // blocker. `leaves`: an object the segment is known to run outside of (a
+  // convex solid it starts on and leaves, N18), not tested; -1 for none.
   Rgb transmittance(const Vec3& origin, const Vec3& target, TraceStats& stats,
-                    Probe* probe = nullptr, int depth = 0) const;
+                    Probe* probe = nullptr, int depth = 0, int leaves = -1) const;
   // The point of light `j` that sample `sample` at `depth` of the pixel
   // aims its shadow ray at, seen from `from`: the centre for a point light,
   // else a stratified point of the disc of the light's radius facing `from`.

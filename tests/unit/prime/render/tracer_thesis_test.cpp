@@ -147,6 +147,39 @@ TEST(ThesisShadows, SoftShadowPenumbraLiesBetweenUmbraAndLit) {
   EXPECT_TRUE(h == 0.0 || h == 1.0);
 }
 
+// A ray leaving a lone primitive outward is not tested against it again
+// (N18: it is convex), but a ray leaving one part of a set operation may meet
+// another part of the same object. Sphere A (centre (0, 200, 0)) and sphere B
+// (centre (0, 400, 0)), radius 50, opaque and half mirror, light straight
+// above: A's top point, looked at from between them, sees B in its mirror
+// and is in B's shadow whether B is its own object or A's union partner.
+TEST(ThesisShadows, APartOfTheSameObjectStillShadowsAndReflects) {
+  enum class B { kNone, kOwnObject, kUnionPartner };
+  auto topOfA = [](B b, bool thesis) {
+    ShadowScene s(1.0, 1.0);
+    s.scene.objects.clear();
+    s.scene.prims.clear();
+    s.add('S', {50, 50, 50}, {0, 200, 0});
+    s.add('S', {50, 50, 50}, {0, 400, 0});
+    const io::Hue hue{0.5, 1.0, {0.6, 0.4, 0.2}, 1.0, 1, 1, 1.5};  // kSR 0.5, kST 0
+    s.object(0, hue);
+    if (b == B::kOwnObject) s.object(1, hue);
+    if (b == B::kUnionPartner) s.scene.objects[0].entries = {{'+', 1, 2}, {'P', 0, 0}, {'P', 1, 0}};
+    TraceStats stats;
+    const Ray down{{0, 300, 0}, {0, -1, 0}};  // meets A at y = 250, normal (0, 1, 0)
+    return thesis ? TracerThesis(s.scene).castRay(down, 0, stats)
+                  : TracerModern(s.scene).castRay(down, 0, stats);
+  };
+  for (const bool thesis : {false, true}) {
+    const Rgb alone = topOfA(B::kNone, thesis), own = topOfA(B::kOwnObject, thesis),
+              partner = topOfA(B::kUnionPartner, thesis);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(partner[c], own[c], 1e-12) << "thesis " << thesis << " channel " << c;
+      EXPECT_GT(std::abs(own[c] - alone[c]), 0.01) << "thesis " << thesis << " channel " << c;
+    }
+  }
+}
+
 TEST(HallThesis, FresnelFromF0AsSection473) {
   // F(0) = 0.04: eta = (1 + 0.2) / (1 - 0.2) = 1.5.
   EXPECT_NEAR(etaFromF0(0.04), 1.5, 1e-15);
