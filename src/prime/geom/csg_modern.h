@@ -4,6 +4,7 @@
 #pragma once
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "src/prime/geom/csg_1991.h"
 #include "src/prime/geom/csg_program_1991.h"
@@ -27,5 +28,11 @@ CsgProgram1991 compileModern(std::span<const CsgEntry> entries);
 // on every call: a renderer compiles once (compileModern) and calls
 // runModern per ray.
 TList csgModern(std::span<const CsgEntry> entries, LeafFn leaf);
+
+// The primitives whose solid holds the whole solid of the tree, by its
+// structure: a leaf holds itself; A - B lies in what holds A; A & B in what
+// holds A or B; A + B in what holds both. Sorted, no repeats; empty for a
+// union of different primitives. For a tree compileModern accepts.
+std::vector<int> containingPrimitives(std::span<const CsgEntry> entries);
 
 }  // namespace prime

@@ -158,6 +158,7 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
     try {
       programs_.push_back(compileModern(obj.entries));
       unionLeaves_.push_back(programs_.back().unionLeaves());
+      containers_.push_back(containingPrimitives(obj.entries));
     } catch (const CsgError& e) {  // (loadScene refuses such trees: a scene built in code)
       throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
                                std::to_string(obj.number) + "): " + e.what());
@@ -379,6 +380,7 @@ void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode
   hit.normal = normalToWorld(node.norm, inv);  // outward of the primitive (not faced yet)
   // Surfaces near the point, in every primitive of the object.
   hit.nearCount = 0;
+  hit.nearOwn = false;
   for (const CsgEntry& e : obj.entries) {
     if (e.op != 'P' || e.l < 0 || e.l >= static_cast<int>(scene_.prims.size())) continue;
     const ScenePrim& q = scene_.prims[e.l];
@@ -397,6 +399,7 @@ void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode
     Vec3 normals[10];
     const int n = nearSurfacesModern(q.type, ql, qe, normals, 10);
     if (n <= 0) continue;
+    const int before = hit.nearCount;
     // The next ray's transform error at the point along each world axis:
     // gamma(4) |A_q|^T mag, the same for every surface of this primitive.
     Vec3 transformError{};
@@ -415,6 +418,7 @@ void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode
       hit.nearStep[static_cast<std::size_t>(hit.nearCount)] = step;
       ++hit.nearCount;
     }
+    if (e.l == node.prim && hit.nearCount > before) hit.nearOwn = true;
   }
 }
 
@@ -562,7 +566,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
   r.o = spawnOrigin(hit, r.d);
   if (hit.exitsObject) {
     through = true;
-    if (leaves) *leaves = leavingConvex(hit, r.d);
+    if (leaves) *leaves = leavingSolid(hit, r.d);
     return report(0, r, {});
   }
   for (int step = 0; step < kMaxInternalReflections; ++step) {
@@ -590,8 +594,7 @@ Ray TracerModern::transmit(const Ray& ray, const SurfaceHit& hit, double indx, d
     r.d = normalized(r.d * indx + nOut * (std::sqrt(k2) - indx * c));
     r.o = spawnOrigin(at, r.d);
     through = true;
-    if (leaves && isLonePrimitive(static_cast<std::size_t>(hit.obj)) && leavesThrough(at, r.d))
-      *leaves = hit.obj;
+    if (leaves) *leaves = leavingSolid(static_cast<std::size_t>(hit.obj), at, r.d);
     return report(step + 1, r, {});
   }
   ++stats.cappedTirLoops;  // trapped: the light is absorbed
@@ -646,7 +649,7 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, R
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
       iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, probe, RayKind::Reflected,
-                    weight * std::abs(kSR), leavingConvex(hit, refl));
+                    weight * std::abs(kSR), leavingSolid(hit, refl));
     if (through && weight * std::abs(kST) >= options_.minWeight)
       iST = castRay(transmitted, depth + 1, stats, probe, RayKind::Transmitted,
                     weight * std::abs(kST), leavesT);

@@ -11,6 +11,7 @@
 //     dot products and inverse trigonometry, world-frame refraction;
 //   - no NaN or Inf ever reaches a pixel.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -41,6 +42,7 @@ struct SurfaceHit {
   std::array<Vec3, 12> near;
   std::array<double, 12> nearStep;
   int nearCount = 0;
+  bool nearOwn = false;  // a surface of the hit's own primitive is among them
 };
 
 // Whether w leaves through every surface near the hit (hit.near, outward
@@ -61,8 +63,8 @@ class TracerModern {
   // With a probe, every ray, the tests of the objects the BVH visits (as a
   // render visits them), the hit, texture, transmission and Hall's terms are
   // recorded, as Tracer1991::castRay records the 1991 profile's.
-  // `leaves`: an object the ray starts on and provably never meets again (a
-  // convex solid it leaves, leavesThrough), not tested; -1 for none.
+  // `leaves`: an object the ray starts on and provably never meets again
+  // (leavingSolid), not tested; -1 for none.
   Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
               RayKind kind = RayKind::Primary, double weight = 1.0, int leaves = -1) const;
   // The nearest surface along the ray with t > 0, if any; object `leaves`
@@ -92,15 +94,22 @@ class TracerModern {
   // pairs of min(tMax, exit) - max(0, entry) where positive, in list order;
   // a lone primitive's without building the list (N18).
   double insideLength(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats) const;
-  // Whether object `object` is one primitive (no set operation): a convex
-  // solid, since every PRIME primitive is one.
-  bool isLonePrimitive(std::size_t object) const { return programs_[object].isSingleLeaf(); }
-  // The hit's object when a ray leaving the hit in direction w provably never
-  // meets it again: a lone primitive (convex) that w leaves through every
-  // surface near the point (leavesThrough); else -1. (castRay's `leaves`.)
-  int leavingConvex(const SurfaceHit& hit, const Vec3& w) const {
-    return isLonePrimitive(static_cast<std::size_t>(hit.obj)) && leavesThrough(hit, w) ? hit.obj
-                                                                                       : -1;
+  // Object `object` when a ray leaving `at` (a point of its surface, as
+  // surfaceAt gives it) in direction w provably never meets it again, else
+  // -1 (castRay's `leaves`): the point is on a primitive that holds the
+  // whole solid (containingPrimitives: a lone primitive, the left operand
+  // of a difference, either operand of an intersection), that primitive is
+  // convex (every PRIME primitive is), and w leaves through every surface
+  // near the point, the primitive's among them (leavesThrough).
+  int leavingSolid(std::size_t object, const SurfaceHit& at, const Vec3& w) const {
+    const std::vector<int>& holders = containers_[object];
+    return at.nearOwn && std::find(holders.begin(), holders.end(), at.prim) != holders.end() &&
+                   leavesThrough(at, w)
+               ? static_cast<int>(object)
+               : -1;
+  }
+  int leavingSolid(const SurfaceHit& hit, const Vec3& w) const {
+    return leavingSolid(static_cast<std::size_t>(hit.obj), hit, w);
   }
 
   // The texel at the hit (inverse mapping, N11, N12, N17), probed.
@@ -146,6 +155,7 @@ class TracerModern {
   std::vector<std::optional<Rgb>> plainColour_;
   std::vector<CsgProgram1991> programs_;       // per object: its tree compiled (compileModern)
   std::vector<std::vector<int>> unionLeaves_;  // per object: CsgProgram1991::unionLeaves
+  std::vector<std::vector<int>> containers_;   // per object: containingPrimitives
 };
 
 // The inverse of an affine row-vector transform, accurate to about one

@@ -171,7 +171,7 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
   if (depth < options_.maxDepth) {
     if (kSR != 0.0 && weight * std::abs(kSR) >= options_.minWeight)
       iSR = castRay({spawnOrigin(hit, refl), refl}, depth + 1, stats, sample, probe,
-                    RayKind::Reflected, weight * std::abs(kSR), modern_.leavingConvex(hit, refl));
+                    RayKind::Reflected, weight * std::abs(kSR), modern_.leavingSolid(hit, refl));
     if (through && weight * std::abs(kST) >= options_.minWeight)
       iST = castRay(transmitted, depth + 1, stats, sample, probe, RayKind::Transmitted,
                     weight * std::abs(kST), leavesT);
@@ -195,7 +195,7 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
     if (!thesis_.shadows || !used) continue;
     const Vec3 w = normalized(toLight);
     l.visibility = transmittance(spawnOrigin(hit, w), l.pt, stats, probe, depth + 1,
-                                 probe ? -1 : modern_.leavingConvex(hit, w));
+                                 probe ? -1 : modern_.leavingSolid(hit, w));
     if (probe) probe->shadow(depth, j, l.pt, l.visibility);
   }
 

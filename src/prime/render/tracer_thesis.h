@@ -53,8 +53,8 @@ class TracerThesis {
   // The fraction of light that travels from `origin` to `target` per channel:
   // 1 with nothing between, 0 behind an opaque object, kST * tT^d through a
   // transparent one (T3). Counts one shadow ray; stops at the first opaque
-  // blocker. `leaves`: an object the segment is known to run outside of (a
-  // convex solid it starts on and leaves, N18), not tested; -1 for none.
+  // blocker. `leaves`: an object the segment is known to run outside of
+  // (TracerModern::leavingSolid, N18), not tested; -1 for none.
   Rgb transmittance(const Vec3& origin, const Vec3& target, TraceStats& stats,
                     Probe* probe = nullptr, int depth = 0, int leaves = -1) const;
   // The point of light `j` that sample `sample` at `depth` of the pixel

@@ -277,5 +277,42 @@ TEST(CsgProgram1991, DeepChainsNeedNoStack) {
   EXPECT_EQ(differenceList[1].t, 2.0);
 }
 
+// The primitives that hold a tree's whole solid, by its structure (what
+// lets a ray leaving such a primitive skip the object, N18), worked by hand.
+TEST(ContainingPrimitives, FollowTheSetOperations) {
+  using V = std::vector<int>;
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'P', 7, 0}}), V{7});
+  // A - B lies in A; A & B in both; A + B in neither, unless they are one.
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'-', 1, 2}, {'P', 5, 0}, {'P', 3, 0}}),
+            V{5});
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'&', 1, 2}, {'P', 5, 0}, {'P', 3, 0}}),
+            (V{3, 5}));
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'+', 1, 2}, {'P', 5, 0}, {'P', 3, 0}}),
+            V{});
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'+', 1, 2}, {'P', 5, 0}, {'P', 5, 0}}),
+            V{5});
+  // (S & (C + C)) - B, the union's operand a shared entry: S and C hold it.
+  const std::vector<CsgEntry> nested{{'-', 1, 5}, {'&', 2, 3},  {'P', 10, 0},
+                                     {'+', 4, 4}, {'P', 11, 0}, {'P', 12, 0}};
+  EXPECT_EQ(containingPrimitives(nested), (V{10, 11}));
+  // A tree compileModern refuses has none: a cycle, a child outside the
+  // entries, an unknown operator.
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'-', 1, 2}, {'&', 0, 2}, {'P', 3, 0}}),
+            V{});
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'-', 1, 9}, {'P', 3, 0}}), V{});
+  EXPECT_EQ(containingPrimitives(std::vector<CsgEntry>{{'x', 1, 2}, {'P', 3, 0}, {'P', 4, 0}}),
+            V{});
+  // A chain of 200,000 differences needs no stack: its first primitive.
+  constexpr int kDepth = 200000;
+  std::vector<CsgEntry> chain;
+  for (int i = 0; i < kDepth; ++i) chain.push_back({'-', i + 1, kDepth + 1 + i});
+  chain.push_back({'P', 0, 0});
+  for (int i = 0; i < kDepth; ++i) chain.push_back({'P', i + 1, 0});
+  V held;
+  std::thread t([&] { held = containingPrimitives(chain); });
+  t.join();
+  EXPECT_EQ(held, V{0});
+}
+
 }  // namespace
 }  // namespace prime

@@ -180,6 +180,34 @@ TEST(ThesisShadows, APartOfTheSameObjectStillShadowsAndReflects) {
   }
 }
 
+// The solid of a difference lies in its left operand, not its right one. A
+// cube [-100, 100]^3 minus a sphere of radius 50 centred on its top face, a
+// light straight below: the bottom of the hollow, (0, 50, 0), is on the
+// sphere's surface, and its shadow ray runs down through the cube's own
+// material (kDT = 1: the light behind the surface counts). It is in shadow:
+// the light adds what a light of intensity 0 adds, and less than with
+// shadows off.
+TEST(ThesisShadows, AHollowIsShadowedThroughItsOwnSolid) {
+  auto bottomOfHollow = [](double intensity, bool shadows) {
+    ShadowScene s(1.0, 1.0);
+    s.scene.objects.clear();
+    s.scene.prims.clear();
+    s.scene.lights = {{{0, -1000, 0}, {intensity, intensity, intensity}}};
+    s.add('B', {200, 200, 200}, {-100, -100, -100});
+    s.add('S', {50, 50, 50}, {0, 100, 0});
+    s.object(0, {1.0, 1.0, {0.6, 0.4, 0.2}, 1.0, 1, 1, 1.5});  // opaque, diffuse
+    s.scene.objects[0].entries = {{'-', 1, 2}, {'P', 0, 0}, {'P', 1, 0}};
+    ThesisOptions options;
+    options.shadows = shadows;
+    TraceStats stats;
+    return TracerThesis(s.scene, {}, options).castRay({{0, 300, 0}, {0, -1, 0}}, 0, stats);
+  };
+  const Rgb shadowed = bottomOfHollow(0.5, true), dark = bottomOfHollow(0.0, true),
+            lit = bottomOfHollow(0.5, false);
+  EXPECT_EQ(std::memcmp(shadowed.data(), dark.data(), sizeof shadowed), 0);
+  for (int c = 0; c < 3; ++c) EXPECT_GT(lit[c] - shadowed[c], 0.01) << c;
+}
+
 TEST(HallThesis, FresnelFromF0AsSection473) {
   // F(0) = 0.04: eta = (1 + 0.2) / (1 - 0.2) = 1.5.
   EXPECT_NEAR(etaFromF0(0.04), 1.5, 1e-15);
