@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -81,24 +82,54 @@ std::optional<Rect> projectedRect(const Projector& proj, const Aabb& box, int ro
               {}};
 }
 
+// The convex hull of 2-D points (Andrew's monotone chain), counter-clockwise,
+// no repeated point; fewer than three points when they are all on one line.
+std::vector<std::pair<double, double>> convexHull(std::vector<std::pair<double, double>> p) {
+  std::sort(p.begin(), p.end());
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  auto cross = [](const std::pair<double, double>& o, const std::pair<double, double>& a,
+                  const std::pair<double, double>& b) {
+    return (a.first - o.first) * (b.second - o.second) -
+           (a.second - o.second) * (b.first - o.first);
+  };
+  std::vector<std::pair<double, double>> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
+    while (k >= lower && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);  // the last point is the first
+  return h;
+}
+
 // Narrows `rect` row by row to the columns within kPadPixels of the convex
 // hull of `points` (their projections): for row i, the hull's part between
 // rows i - kPadPixels and i + kPadPixels, widened by kPadPixels, the margin
-// the rectangle has. That part's column range is reached at a point inside
-// the band or where a segment between two points crosses one of the band's
-// edges (the hull's edges are among those segments, and every segment lies
-// in the hull). Nothing is narrowed when a point is not in front of the eye.
-void narrowToHull(const Projector& proj, const std::array<Vec3, 8>& points, Rect& rect) {
-  std::array<std::pair<double, double>, 8> px;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const auto p = proj.pixel(points[k]);
+// the rectangle has. That part's column range is reached at a hull vertex
+// inside the band or where a hull edge crosses one of the band's edges.
+// (Rounding in the hull's construction moves a vertex by far less than the
+// margin: a point it drops as inside lies within a rounding error of the
+// hull.) Nothing is narrowed when a point is not in front of the eye.
+void narrowToHull(const Projector& proj, std::span<const Vec3> points, Rect& rect) {
+  std::vector<std::pair<double, double>> px;
+  px.reserve(points.size());
+  for (const Vec3& point : points) {
+    const auto p = proj.pixel(point);
     if (!p) return;
-    px[k] = *p;
+    px.push_back(*p);
   }
+  const std::vector<std::pair<double, double>> hull = convexHull(std::move(px));
+  if (hull.empty()) return;
   auto clampTo = [](double v, int lo, int hi) {
     return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
   };
   rect.rowColumns.reserve(static_cast<std::size_t>(rect.row1 - rect.row0 + 1));
+  const std::size_t n = hull.size();
   for (int i = rect.row0; i <= rect.row1; ++i) {
     const double a = i - kPadPixels, b = i + kPadPixels;
     double lo = INFINITY, hi = -INFINITY;
@@ -106,15 +137,14 @@ void narrowToHull(const Projector& proj, const std::array<Vec3, 8>& points, Rect
       lo = std::min(lo, c);
       hi = std::max(hi, c);
     };
-    for (std::size_t k = 0; k < px.size(); ++k) {
-      const auto [rk, ck] = px[k];
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto [rk, ck] = hull[k];
       if (rk >= a && rk <= b) take(ck);
-      for (std::size_t m = k + 1; m < px.size(); ++m) {
-        const auto [rm, cm] = px[m];
-        if (rk == rm) continue;  // a segment along a row: its ends are counted
-        for (const double edge : {a, b})
-          if ((rk - edge) * (rm - edge) <= 0.0) take(ck + (edge - rk) * (cm - ck) / (rm - rk));
-      }
+      if (n < 2) continue;
+      const auto [rm, cm] = hull[(k + 1) % n];
+      if (rk == rm) continue;  // an edge along a row: its ends are counted
+      for (const double edge : {a, b})
+        if ((rk - edge) * (rm - edge) <= 0.0) take(ck + (edge - rk) * (cm - ck) / (rm - rk));
     }
     if (!(lo <= hi)) {
       rect.rowColumns.emplace_back(1, 0);  // the hull does not come near this row
@@ -134,13 +164,13 @@ PrimaryRayMask::PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb
 }
 
 PrimaryRayMask::PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes,
-                               std::span<const std::array<Vec3, 8>> corners)
+                               std::span<const std::vector<Vec3>> hulls)
     : rows_(camera.rows()), columns_(camera.columns()) {
-  build(camera.linearView(), boxes, corners.size() == boxes.size() ? corners : decltype(corners){});
+  build(camera.linearView(), boxes, hulls.size() == boxes.size() ? hulls : decltype(hulls){});
 }
 
 void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes,
-                           std::span<const std::array<Vec3, 8>> corners) {
+                           std::span<const std::vector<Vec3>> hulls) {
   const Projector proj(view);
   if (!proj.usable()) return;
   // Each box's rectangle on the image, then per row the union of the
@@ -159,7 +189,7 @@ void PrimaryRayMask::build(const LinearView& view, std::span<const Aabb> boxes,
     const int c0 = std::max(r->col0, 0), c1 = std::min(r->col1, columns_ - 1);
     if (r0 > r1 || c0 > c1) continue;  // entirely off the image
     rects.push_back({r0, r1, c0, c1, {}});
-    if (!corners.empty()) narrowToHull(proj, corners[k], rects.back());
+    if (!hulls.empty()) narrowToHull(proj, hulls[k], rects.back());
   }
   masked_ = true;
   std::sort(rects.begin(), rects.end(),

@@ -7,9 +7,10 @@
 // pixel) get the background without a ray: the box tests they would run
 // cannot accept the ray, so the pixel is the one the tracer would return.
 // A box that reaches behind the eye, or a degenerate camera, covers every
-// pixel (the mask is then simply not used). Given the corners of each
-// primitive's own (turned) box, each rectangle is narrowed row by row to the
-// convex hull of their projections, widened by the same margin.
+// pixel (the mask is then simply not used). Given points around each
+// primitive (its own turned box's corners, or a polyhedron closer to a round
+// one), each rectangle is narrowed row by row to the convex hull of their
+// projections, widened by the same margin.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -28,11 +29,11 @@ class PrimaryRayMask {
   // boxes are objects that cannot be hit).
   PrimaryRayMask(const ListingCamera& camera, std::span<const Aabb> boxes);
   // The same for the camera a render uses (the listing's or the free one).
-  // `corners`, if given, one set per box: what can be hit in that box lies
-  // in the convex hull of those eight points as well, and each row keeps
+  // `hulls`, if given, one set of points per box: what can be hit in that
+  // box lies in the convex hull of those points as well, and each row keeps
   // only the columns near the hull's projection (within the same margin).
   PrimaryRayMask(const PrimeCamera& camera, std::span<const Aabb> boxes,
-                 std::span<const std::array<Vec3, 8>> corners = {});
+                 std::span<const std::vector<Vec3>> hulls = {});
 
   // False only when no primary ray through (row, column)'s footprint can meet a box.
   bool mayHit(int row, int column) const;
@@ -52,7 +53,7 @@ class PrimaryRayMask {
 
  private:
   void build(const LinearView& view, std::span<const Aabb> boxes,
-             std::span<const std::array<Vec3, 8>> corners);
+             std::span<const std::vector<Vec3>> hulls);
   int rows_ = 0, columns_ = 0;
   bool masked_ = false;  // false: every pixel may hit
   std::vector<Run> runs_;

@@ -224,12 +224,12 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   if (settings.profile == Profile::Thesis) {
     const TracerThesis tracer(scene, settings.trace, settings.thesis);
     mask.emplace(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
-                 tracer.bvh().primitiveCornersOfObjects(scene));
+                 tracer.bvh().primitiveHullsOfObjects(scene));
     renderWith(tracer, camera, mask, settings, callbacks, result);
   } else if (settings.profile == Profile::Modern) {
     const TracerModern tracer(scene, settings.trace);
     mask.emplace(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
-                 tracer.bvh().primitiveCornersOfObjects(scene));
+                 tracer.bvh().primitiveHullsOfObjects(scene));
     renderWith(tracer, camera, mask, settings, callbacks, result);
   } else {
     const Tracer1991 tracer(scene, settings.trace);

@@ -102,15 +102,15 @@ std::vector<Aabb> ObjectBvh::primitiveBoxesOfObjects(const Scene& scene) const {
   return boxes;
 }
 
-std::vector<std::array<Vec3, 8>> ObjectBvh::primitiveCornersOfObjects(const Scene& scene) const {
-  std::vector<std::array<Vec3, 8>> corners;
+std::vector<std::vector<Vec3>> ObjectBvh::primitiveHullsOfObjects(const Scene& scene) const {
+  std::vector<std::vector<Vec3>> hulls;
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const Aabb& object = objectBox(static_cast<int>(k));
     for (const CsgEntry& e : scene.objects[k].entries)
       if (e.op == 'P' && !object.empty() && !primBox(e.l).intersected(object).empty())
-        corners.push_back(primitiveCorners(scene.prims[static_cast<std::size_t>(e.l)]));
+        hulls.push_back(primitiveHullPoints(scene.prims[static_cast<std::size_t>(e.l)]));
   }
-  return corners;
+  return hulls;
 }
 
 ObjectBvh::ObjectBvh(const Scene& scene, ObjectBoxes objectBoxes) {

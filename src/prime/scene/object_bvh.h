@@ -43,9 +43,9 @@ class ObjectBvh {
   // each within its object's box: a ray that meets none of them meets no
   // object. Tighter than the object boxes, for the primary-ray mask.
   std::vector<Aabb> primitiveBoxesOfObjects(const Scene& scene) const;
-  // The corners (primitiveCorners) of the primitive of each of those boxes,
-  // in the same order: the primitive lies in their convex hull too.
-  std::vector<std::array<Vec3, 8>> primitiveCornersOfObjects(const Scene& scene) const;
+  // Points (primitiveHullPoints) around the primitive of each of those
+  // boxes, in the same order: the primitive lies in their convex hull too.
+  std::vector<std::vector<Vec3>> primitiveHullsOfObjects(const Scene& scene) const;
 
  private:
   std::vector<Aabb> primBoxes_;

@@ -5,6 +5,7 @@
 // its box.
 #pragma once
 #include <array>
+#include <vector>
 
 #include "src/geom/aabb.h"
 #include "src/prime/scene/scene.h"
@@ -18,5 +19,12 @@ Aabb primitiveBox(const ScenePrim& p);
 // primitive lies in their convex hull (a parallelepiped, often much smaller
 // than its axis-aligned box).
 std::array<Vec3, 8> primitiveCorners(const ScenePrim& p);
+// Points whose convex hull holds the primitive, mapped by its transform: the
+// vertices of the cube and the pyramid, and for the round primitives the
+// vertices of a circumscribed polyhedron: the cylinder in a regular
+// 16-gon prism, the cone in a 16-gon pyramid, the sphere in the body a
+// circumscribed octagon sweeps about the z axis, itself in 16-gon frusta.
+// Much closer to a round primitive than its box's corners.
+std::vector<Vec3> primitiveHullPoints(const ScenePrim& p);
 
 }  // namespace prime
