@@ -100,10 +100,12 @@ class TracerModern {
   // whole solid (containingPrimitives: a lone primitive, the left operand
   // of a difference, either operand of an intersection), that primitive is
   // convex (every PRIME primitive is), and w leaves through every surface
-  // near the point, the primitive's among them (leavesThrough).
+  // near the point, the primitive's among them (leavesThrough; not when
+  // at.near is full, since a near surface may have been left out).
   int leavingSolid(std::size_t object, const SurfaceHit& at, const Vec3& w) const {
     const std::vector<int>& holders = containers_[object];
-    return at.nearOwn && std::find(holders.begin(), holders.end(), at.prim) != holders.end() &&
+    return at.nearOwn && at.nearCount < static_cast<int>(at.near.size()) &&
+                   std::find(holders.begin(), holders.end(), at.prim) != holders.end() &&
                    leavesThrough(at, w)
                ? static_cast<int>(object)
                : -1;
