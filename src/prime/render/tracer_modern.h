@@ -48,11 +48,15 @@ struct SurfaceHit {
 // Whether w leaves through every surface near the hit (hit.near, outward
 // normals): w points out of each, so a ray from spawnOrigin(hit, w) starts
 // outside all of them and, when they bound a convex solid, runs outside it.
-// False when no surface was found near the point.
+// "Out" by more than 1e-9 (w and the normals are unit vectors): a ray within
+// rounding of parallel to a surface, whose side the primitive's own test in
+// its local frame might see otherwise, is not counted as leaving. False
+// when no surface was found near the point.
 inline bool leavesThrough(const SurfaceHit& hit, const Vec3& w) {
+  constexpr double kClearlyOut = 1e-9;
   if (hit.nearCount == 0) return false;
   for (int k = 0; k < hit.nearCount; ++k)
-    if (!(dot(w, hit.near[static_cast<std::size_t>(k)]) > 0.0)) return false;
+    if (!(dot(w, hit.near[static_cast<std::size_t>(k)]) > kClearlyOut)) return false;
   return true;
 }
 
