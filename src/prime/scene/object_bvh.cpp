@@ -88,28 +88,31 @@ std::vector<Aabb> boxesOfObjects(const Scene& scene, const std::vector<Aabb>& pr
 }
 }  // namespace
 
-std::vector<Aabb> ObjectBvh::primitiveBoxesOfObjects(const Scene& scene) const {
-  std::vector<Aabb> boxes;
+template <class Visit>
+void ObjectBvh::forEachLeafInObjects(const Scene& scene, Visit&& visit) const {
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const Aabb& object = objectBox(static_cast<int>(k));
+    if (object.empty()) continue;
     for (const CsgEntry& e : scene.objects[k].entries)
-      if (e.op == 'P' && !object.empty()) {
+      if (e.op == 'P') {
         // (Within a union of leaves' box a leaf's box is itself, bit for bit.)
         const Aabb b = primBox(e.l).intersected(object);
-        if (!b.empty()) boxes.push_back(b);
+        if (!b.empty()) visit(e.l, b);
       }
   }
+}
+
+std::vector<Aabb> ObjectBvh::primitiveBoxesOfObjects(const Scene& scene) const {
+  std::vector<Aabb> boxes;
+  forEachLeafInObjects(scene, [&](int, const Aabb& box) { boxes.push_back(box); });
   return boxes;
 }
 
 std::vector<std::vector<Vec3>> ObjectBvh::primitiveHullsOfObjects(const Scene& scene) const {
   std::vector<std::vector<Vec3>> hulls;
-  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
-    const Aabb& object = objectBox(static_cast<int>(k));
-    for (const CsgEntry& e : scene.objects[k].entries)
-      if (e.op == 'P' && !object.empty() && !primBox(e.l).intersected(object).empty())
-        hulls.push_back(primitiveHullPoints(scene.prims[static_cast<std::size_t>(e.l)]));
-  }
+  forEachLeafInObjects(scene, [&](int prim, const Aabb&) {
+    hulls.push_back(primitiveHullPoints(scene.prims[static_cast<std::size_t>(prim)]));
+  });
   return hulls;
 }
 

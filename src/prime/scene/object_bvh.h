@@ -4,7 +4,6 @@
 // are pruned only when their box starts strictly beyond the nearest hit so
 // far, and the caller breaks ties between equal t by list order.
 #pragma once
-#include <array>
 #include <span>
 #include <vector>
 
@@ -48,6 +47,11 @@ class ObjectBvh {
   std::vector<std::vector<Vec3>> primitiveHullsOfObjects(const Scene& scene) const;
 
  private:
+  // visit(prim, box) for each leaf of each object whose box (its
+  // primitive's within its object's) is not empty: the order and the
+  // choice both lists above follow.
+  template <class Visit>
+  void forEachLeafInObjects(const Scene& scene, Visit&& visit) const;
   std::vector<Aabb> primBoxes_;
   Bvh bvh_;
 };

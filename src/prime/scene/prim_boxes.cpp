@@ -64,10 +64,10 @@ std::vector<Vec3> primitiveHullPoints(const ScenePrim& p) {
       local.push_back({0, 0, 0});
       ring(1.0, 1.0);
       break;
-    case io::PrimType::Cube:
-      for (int c = 0; c < 8; ++c)
-        local.push_back({c & 1 ? 1.0 : 0.0, c & 2 ? 1.0 : 0.0, c & 4 ? 1.0 : 0.0});
-      break;
+    case io::PrimType::Cube: {  // its own box
+      const std::array<Vec3, 8> corners = primitiveCorners(p);
+      return {corners.begin(), corners.end()};
+    }
     case io::PrimType::Pyramid:  // the unit square at y = 0, the apex above its centre
       local = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 0, 1}, {0.5, 1, 0.5}};
       break;
