@@ -83,6 +83,8 @@ class CsgProgram1991 {
     int arg;  // Leaf: primitive number; SkipRightIfEmpty: the step after the
               // operator; Call: the shared subtree's number
   };
+  // The main body, then each shared subtree's (from subStart).
+  std::span<const Step> steps() const { return steps_; }
 
  private:
   template <class Combine>

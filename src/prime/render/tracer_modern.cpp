@@ -159,6 +159,8 @@ TracerModern::TracerModern(const Scene& scene, RayTreeOptions options)
       programs_.push_back(compileModern(obj.entries));
       unionLeaves_.push_back(programs_.back().unionLeaves());
       containers_.push_back(containingPrimitives(obj.entries));
+      pointwise_.push_back(
+          programs_.back().isSingleLeaf() ? std::nullopt : CsgPointwise::compile(programs_.back()));
     } catch (const CsgError& e) {  // (loadScene refuses such trees: a scene built in code)
       throw std::runtime_error("object " + std::to_string(obj.number) + " (obj/O" +
                                std::to_string(obj.number) + "): " + e.what());
@@ -238,6 +240,57 @@ bool TracerModern::lonePair(std::size_t object, const BoxRay& boxRay, double tMa
                  : intersectModernT(scene_.prims[prim].type, local, in);
 }
 
+bool TracerModern::leafSpan(int prim, const Ray& ray, TraceStats& stats,
+                            CsgPointwise::Span& span) const {
+  ++stats.primitiveTests;
+  PrimHit in;
+  if (!intersectModernT(scene_.prims[prim].type, transformRay(ray, inverse_[prim]), in))
+    return false;
+  span.tIn = in.tIn;
+  span.tOut = in.tOut;
+  return true;
+}
+
+bool TracerModern::pointwiseSpans(
+    std::size_t object, const BoxRay& boxRay, double tMax, TraceStats& stats,
+    std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves>& spans) const {
+  return pointwise_[object]->gather(
+      [&](int prim, CsgPointwise::Span& span) {
+        const double entry = bvh_.primBox(prim).entry(boxRay);
+        if (entry == std::numeric_limits<double>::infinity() || !(entry <= tMax)) return false;
+        return leafSpan(prim, boxRay.ray, stats, span);
+      },
+      spans);
+}
+
+CsgPointwise::Answer TracerModern::pointwiseFirstAhead(std::size_t object, const BoxRay& boxRay,
+                                                       double tMax, TraceStats& stats,
+                                                       TNode& node) const {
+  return pointwise_[object]->firstAheadLazy(
+      [&](int prim) { return bvh_.primBox(prim).entry(boxRay); },
+      [&](int prim, CsgPointwise::Span& span) { return leafSpan(prim, boxRay.ray, stats, span); },
+      tMax, kEntryMarker, kExitMarker, node);
+}
+
+bool TracerModern::blocks(std::size_t object, const BoxRay& boxRay, double tMax,
+                          TraceStats& stats) const {
+  if (pointwise_[object]) {
+    ++stats.objectTests;
+    TNode node;
+    switch (pointwiseFirstAhead(object, boxRay, tMax, stats, node)) {
+      case CsgPointwise::Answer::kNone:
+        return false;
+      case CsgPointwise::Answer::kFound:
+        // An exit first: the solid holds the start; an entry: before tMax?
+        return node.surfType == kSurfIn || node.t < tMax;
+      case CsgPointwise::Answer::kGeneral:
+        break;
+    }
+    --stats.objectTests;  // counted again below
+  }
+  return insideLength(object, boxRay, tMax, stats) > 0.0;
+}
+
 double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, double tMax,
                                   TraceStats& stats) const {
   double inside = 0.0;
@@ -250,6 +303,15 @@ double TracerModern::insideLength(std::size_t object, const BoxRay& boxRay, doub
     PrimHit in;
     if (lonePair(object, boxRay, tMax, false, stats, prim, in)) add(in.tIn, in.tOut);
     return inside;
+  }
+  if (pointwise_[object]) {  // the list's pairs without the list (N18)
+    ++stats.objectTests;
+    std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves> spans;
+    if (pointwiseSpans(object, boxRay, tMax, stats, spans)) {
+      pointwise_[object]->insideLength(spans, tMax, inside);
+      return inside;
+    }
+    --stats.objectTests;  // counted again below
   }
   const TList list =
       objectIntervalsAhead(scene_.objects[object], boxRay, tMax, stats, Normals::kNone);
@@ -325,6 +387,12 @@ bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, doub
       }
     }
     if (!general) return found;
+    --stats.objectTests;  // counted again below
+  }
+  if (pointwise_[object]) {  // the list's first node ahead without the list (N18)
+    ++stats.objectTests;
+    const CsgPointwise::Answer a = pointwiseFirstAhead(object, boxRay, tMax, stats, node);
+    if (a != CsgPointwise::Answer::kGeneral) return a == CsgPointwise::Answer::kFound;
     --stats.objectTests;  // counted again below
   }
   const TList list =

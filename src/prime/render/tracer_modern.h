@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "src/prime/geom/csg_pointwise.h"
 #include "src/prime/geom/csg_program_1991.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/probe.h"
@@ -98,6 +99,9 @@ class TracerModern {
   // pairs of min(tMax, exit) - max(0, entry) where positive, in list order;
   // a lone primitive's without building the list (N18).
   double insideLength(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats) const;
+  // Whether insideLength(object, ray, tMax) > 0, the solid met between 0
+  // and tMax, asking only the leaves it depends on (N18).
+  bool blocks(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats) const;
   // Object `object` when a ray leaving `at` (a point of its surface, as
   // surfaceAt gives it) in direction w provably never meets it again, else
   // -1 (castRay's `leaves`): the point is on a primitive that holds the
@@ -146,6 +150,17 @@ class TracerModern {
   // intersectModern's normals, else none (intersectModernT).
   bool lonePair(std::size_t object, const BoxRay& ray, double tMax, bool normals, TraceStats& stats,
                 int& prim, PrimHit& in) const;
+  // Primitive `prim`'s interval along the ray (intersectModernT), counted.
+  bool leafSpan(int prim, const Ray& ray, TraceStats& stats, CsgPointwise::Span& span) const;
+  // The spans of object `object`'s leaves along the ray, culled and counted
+  // as objectIntervalsAhead's leaves (CsgPointwise::gather); false when the
+  // list must be built (an empty or NaN interval).
+  bool pointwiseSpans(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats,
+                      std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves>& spans) const;
+  // firstNodeAhead for a tree with a pointwise form: firstAheadLazy with
+  // the leaves culled by their padded boxes and counted.
+  CsgPointwise::Answer pointwiseFirstAhead(std::size_t object, const BoxRay& ray, double tMax,
+                                           TraceStats& stats, TNode& node) const;
   // Where a ray inside the object leaves it: objectIntervalsAhead's (kFull)
   // first node ahead that leaves the solid, if any.
   bool exitAhead(std::size_t object, const Ray& ray, TraceStats& stats, TNode& exit) const;
@@ -162,6 +177,9 @@ class TracerModern {
   std::vector<CsgProgram1991> programs_;       // per object: its tree compiled (compileModern)
   std::vector<std::vector<int>> unionLeaves_;  // per object: CsgProgram1991::unionLeaves
   std::vector<std::vector<int>> containers_;   // per object: containingPrimitives
+  // Per object: its tree read point by point (N18), for trees of up to
+  // CsgPointwise::kMaxLeaves leaves and no shared subtree.
+  std::vector<std::optional<CsgPointwise>> pointwise_;
 };
 
 // The inverse of an affine row-vector transform, accurate to about one

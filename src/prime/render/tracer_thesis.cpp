@@ -120,6 +120,10 @@ Rgb TracerThesis::transmittance(const Vec3& origin, const Vec3& target, TraceSta
         const double lo = std::max(0.0, list[i].t), hi = std::min(dist, list[i + 1].t);
         if (hi > lo) inside += hi - lo;
       }
+    } else if (!(opacity_[static_cast<std::size_t>(k)] > 0.0)) {
+      // Opaque: only whether the segment meets the solid matters (below).
+      if (modern_.blocks(static_cast<std::size_t>(k), boxRay, dist, stats)) blocked = true;
+      return;
     } else {
       inside = modern_.insideLength(static_cast<std::size_t>(k), boxRay, dist, stats);
     }

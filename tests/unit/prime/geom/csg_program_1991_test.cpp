@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "src/prime/geom/csg_modern.h"
+#include "src/prime/geom/csg_pointwise.h"
 
 namespace prime {
 namespace {
@@ -312,6 +316,188 @@ TEST(ContainingPrimitives, FollowTheSetOperations) {
   std::thread t([&] { held = containingPrimitives(chain); });
   t.join();
   EXPECT_EQ(held, V{0});
+}
+
+// A leaf's answer as CsgPointwise takes it.
+bool spanOf(const std::optional<PrimHit>& h, CsgPointwise::Span& span) {
+  if (!h) return false;
+  span.tIn = h->tIn;
+  span.tOut = h->tOut;
+  return true;
+}
+
+// The list's first node with t > 0, if any.
+const TNode* firstNodeAhead(const TList& list) {
+  for (const TNode& n : list)
+    if (n.t > 0.0) return &n;
+  return nullptr;
+}
+
+// CsgPointwise reads from the leaves' intervals what the renderer asks of
+// runModern's list: on random trees of two to six leaves, with ends on a
+// coarse grid so that they often coincide (and sit at t = 0), it asks the
+// same leaves in the same order (Q4's skips included), and its first node
+// ahead and length of solid are the list's to the bit, except where it
+// hands the ray back (kGeneral: ends tied where the solid changes, or an
+// empty interval).
+TEST(CsgPointwise, ReadsTheModernListFromTheLeaves) {
+  const Vec3 entryMarker{1, 0, 0}, exitMarker{1, 1, 0};
+  std::mt19937 rng(1985);
+  int found = 0, none = 0, general = 0, emptyLeaf = 0, skips = 0, lengths = 0;
+  int lazyAnswers = 0, lazyFewer = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int leaves = 2 + static_cast<int>(rng() % 5);
+    const auto entries = randomTree(rng, leaves, false);
+    const CsgProgram1991 program = compileModern(entries);
+    const std::optional<CsgPointwise> pointwise = CsgPointwise::compile(program);
+    ASSERT_TRUE(pointwise.has_value()) << "trial " << trial;
+    ASSERT_EQ(pointwise->leafCount(), leaves);
+    std::vector<std::optional<PrimHit>> hits(static_cast<std::size_t>(leaves));
+    for (auto& h : hits) {
+      if (rng() % 4 == 0) continue;  // a miss
+      // Every other trial on a grid of eighths: ties are rarer there.
+      const double a = static_cast<double>(rng() % 9) - 3.0 +
+                       (trial % 2 == 0 ? 0.0 : static_cast<double>(rng() % 8) / 8.0);
+      const double b = rng() % 25 == 0 ? a : a + 1.0 + static_cast<double>(rng() % 4);
+      h = PrimHit{a, b, entryMarker, exitMarker};
+    }
+    const Outcome list = outcome([&](LeafFn f) { return program.runModern(f); }, hits);
+    ASSERT_TRUE(list.error.empty()) << "trial " << trial;
+    std::vector<int> asked;
+    std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves> spans;
+    const bool taken = pointwise->gather(
+        [&](int prim, CsgPointwise::Span& span) {
+          asked.push_back(prim);
+          return spanOf(hits[static_cast<std::size_t>(prim)], span);
+        },
+        spans);
+    if (!taken) {  // a met leaf with an empty interval: the list serves the ray
+      bool degenerate = false;
+      for (const int prim : asked) {
+        const std::optional<PrimHit>& h = hits[static_cast<std::size_t>(prim)];
+        degenerate = degenerate || (h && !(h->tIn < h->tOut));
+      }
+      ASSERT_TRUE(degenerate) << "trial " << trial;
+      ++emptyLeaf;
+      continue;
+    }
+    ASSERT_EQ(asked, list.asked) << "trial " << trial;
+    skips += static_cast<int>(asked.size()) < leaves;
+
+    const TNode* ahead = firstNodeAhead(list.list);
+    TNode node;
+    switch (pointwise->firstAhead(spans, entryMarker, exitMarker, node)) {
+      case CsgPointwise::Answer::kFound:
+        ASSERT_NE(ahead, nullptr) << "trial " << trial;
+        ASSERT_EQ(node, *ahead) << "trial " << trial << "\n" << list.list;
+        ++found;
+        break;
+      case CsgPointwise::Answer::kNone:
+        ASSERT_EQ(ahead, nullptr) << "trial " << trial << "\n" << list.list;
+        ++none;
+        break;
+      case CsgPointwise::Answer::kGeneral:
+        ++general;
+        break;
+    }
+    // firstAheadLazy against the list of the leaves not culled: a leaf's
+    // box entered at or before its interval (a miss's anywhere, or never),
+    // culled when entered beyond tMax.
+    std::vector<double> box(hits.size());
+    for (std::size_t i = 0; i < hits.size(); ++i)
+      box[i] = hits[i]          ? hits[i]->tIn - static_cast<double>(rng() % 3)
+               : rng() % 2 == 0 ? std::numeric_limits<double>::infinity()
+                                : static_cast<double>(rng() % 9) - 3.0;
+    for (const double tMax : {1.5, 3.0, std::numeric_limits<double>::infinity()}) {
+      std::vector<std::optional<PrimHit>> culled = hits;
+      for (std::size_t i = 0; i < hits.size(); ++i)
+        if (!(box[i] <= tMax)) culled[i].reset();
+      const Outcome expected = outcome([&](LeafFn f) { return program.runModern(f); }, culled);
+      const TNode* first = firstNodeAhead(expected.list);
+      std::vector<int> lazyAsked;
+      const CsgPointwise::Answer a =
+          pointwise->firstAheadLazy([&](int prim) { return box[static_cast<std::size_t>(prim)]; },
+                                    [&](int prim, CsgPointwise::Span& span) {
+                                      lazyAsked.push_back(prim);
+                                      return spanOf(culled[static_cast<std::size_t>(prim)], span);
+                                    },
+                                    tMax, entryMarker, exitMarker, node);
+      for (const int prim : lazyAsked) ASSERT_LE(box[static_cast<std::size_t>(prim)], tMax);
+      if (a == CsgPointwise::Answer::kGeneral) continue;
+      ASSERT_EQ(a == CsgPointwise::Answer::kFound, first != nullptr)
+          << "trial " << trial << " tMax " << tMax << "\n"
+          << expected.list;
+      if (first) {
+        ASSERT_EQ(node, *first) << "trial " << trial << " tMax " << tMax;
+      }
+      ++lazyAnswers;
+      lazyFewer += lazyAsked.size() < expected.asked.size();
+    }
+    for (const double tMax : {2.5, 4.0, std::numeric_limits<double>::infinity()}) {
+      double expected = 0.0;
+      for (std::size_t i = 0; i + 1 < list.list.size(); i += 2) {
+        const double lo = std::max(0.0, list.list[i].t), hi = std::min(tMax, list.list[i + 1].t);
+        if (hi > lo) expected += hi - lo;
+      }
+      double length = -1.0;
+      const CsgPointwise::Answer a = pointwise->insideLength(spans, tMax, length);
+      ASSERT_EQ(length, expected) << "trial " << trial << " tMax " << tMax << "\n" << list.list;
+      ASSERT_EQ(a, expected > 0.0 ? CsgPointwise::Answer::kFound : CsgPointwise::Answer::kNone);
+      lengths += expected > 0.0;
+    }
+  }
+  // Every kind of answer is met, and most rays are answered from the leaves.
+  EXPECT_GT(found, 6000);
+  EXPECT_GT(none, 6000);
+  EXPECT_GT(general, 500);
+  EXPECT_LT(general, found / 4);
+  EXPECT_GT(emptyLeaf, 1000);
+  EXPECT_GT(skips, 4000);
+  EXPECT_GT(lengths, 15000);
+  EXPECT_GT(lazyAnswers, 40000);
+  EXPECT_GT(lazyFewer, 20000);  // ... and the lazy answers ask fewer leaves
+}
+
+// What the pointwise form takes: trees of up to six leaves and no shared
+// subtree; the list walk serves the others.
+TEST(CsgPointwise, TakesSmallTreesWithoutSharing) {
+  std::mt19937 rng(7);
+  EXPECT_TRUE(CsgPointwise::compile(compileModern(randomTree(rng, 6, false))).has_value());
+  EXPECT_FALSE(CsgPointwise::compile(compileModern(randomTree(rng, 7, false))).has_value());
+  // (A & B) + (A & B), one operator entry used twice (a Call).
+  const std::vector<CsgEntry> shared{{'+', 1, 1}, {'&', 2, 3}, {'P', 10, 0}, {'P', 11, 0}};
+  ASSERT_EQ(compileModern(shared).sharedSubtrees(), 1u);
+  EXPECT_FALSE(CsgPointwise::compile(compileModern(shared)).has_value());
+  // A difference by hand: [1, 5] - [2, 3] along the ray from t = 0. The
+  // first node ahead is the entry at 1; from t = 2.5 on (the spans moved
+  // back by 2.5) it is the subtracted leaf's exit at 0.5, an entry of the
+  // solid with its marker negated. The solid is 3 long, 1 of it before 2.
+  const std::vector<CsgEntry> diff{{'-', 1, 2}, {'P', 4, 0}, {'P', 9, 0}};
+  const std::optional<CsgPointwise> pw = CsgPointwise::compile(compileModern(diff));
+  ASSERT_TRUE(pw.has_value());
+  std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves> spans;
+  auto gather = [&](double shift) {
+    return pw->gather(
+        [&](int prim, CsgPointwise::Span& s) {
+          s.tIn = (prim == 4 ? 1.0 : 2.0) - shift;
+          s.tOut = (prim == 4 ? 5.0 : 3.0) - shift;
+          return true;
+        },
+        spans);
+  };
+  const Vec3 in{1, 0, 0}, out{1, 1, 0};
+  TNode node;
+  ASSERT_TRUE(gather(0.0));
+  ASSERT_EQ(pw->firstAhead(spans, in, out, node), CsgPointwise::Answer::kFound);
+  EXPECT_EQ(node, (TNode{1.0, 4, kSurfOut, in}));
+  double length = 0;
+  EXPECT_EQ(pw->insideLength(spans, 2.0, length), CsgPointwise::Answer::kFound);
+  EXPECT_EQ(length, 1.0);
+  EXPECT_EQ(pw->insideLength(spans, 10.0, length), CsgPointwise::Answer::kFound);
+  EXPECT_EQ(length, 3.0);
+  ASSERT_TRUE(gather(2.5));
+  ASSERT_EQ(pw->firstAhead(spans, in, out, node), CsgPointwise::Answer::kFound);
+  EXPECT_EQ(node, (TNode{0.5, 9, kSurfOut, -out}));
 }
 
 }  // namespace

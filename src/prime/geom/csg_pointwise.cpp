@@ -1,0 +1,204 @@
+#include "src/prime/geom/csg_pointwise.h"
+
+#include <algorithm>
+
+namespace prime {
+
+std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program) {
+  using PK = CsgProgram1991::StepKind;
+  if (program.sharedSubtrees() != 0) return std::nullopt;
+  CsgPointwise p;
+  // Per operand on the stack: its first step and its leaves [first, end).
+  struct Operand {
+    std::size_t step;
+    int firstLeaf, endLeaf;
+  };
+  // The truth table of steps [from, to) over every set of leaves.
+  auto table = [&p](std::size_t from, std::size_t to) {
+    std::uint64_t t = 0;
+    for (unsigned in = 0; in < (1u << kMaxLeaves); ++in)
+      if (p.holds(in, from, to)) t |= std::uint64_t{1} << in;
+    return t;
+  };
+  std::vector<std::size_t> skips;
+  std::vector<Operand> stack;
+  const std::span<const CsgProgram1991::Step> steps = program.steps();
+  for (std::size_t pc = 0; pc < steps.size(); ++pc) {
+    const CsgProgram1991::Step& st = steps[pc];
+    switch (st.kind) {
+      case PK::Leaf: {
+        if (p.leafCount_ == kMaxLeaves) return std::nullopt;
+        stack.push_back({pc, p.leafCount_, p.leafCount_ + 1});
+        p.steps_.push_back({Kind::kLeaf, p.leafCount_});
+        p.leafPrim_.push_back(st.arg);
+        p.leafNegated_.push_back(false);
+        ++p.leafCount_;
+        break;
+      }
+      case PK::SkipRightIfEmpty:
+        if (stack.empty()) return std::nullopt;  // (compileChecked never writes one first)
+        // (`left` holds the left operand's first step until its table is made)
+        skips.push_back(p.steps_.size());
+        p.steps_.push_back(
+            {Kind::kSkipRightIfEmpty,
+             stack.back().endLeaf - stack.back().firstLeaf == 1 ? stack.back().firstLeaf : -1,
+             st.arg, stack.back().step});
+        break;
+      case PK::Union:
+      case PK::Difference:
+      case PK::Intersection: {
+        if (stack.size() < 2) return std::nullopt;
+        const Operand right = stack.back();
+        stack.pop_back();
+        if (st.kind == PK::Difference)
+          for (int i = right.firstLeaf; i < right.endLeaf; ++i)
+            p.leafNegated_[static_cast<std::size_t>(i)] =
+                !p.leafNegated_[static_cast<std::size_t>(i)];
+        stack.back().endLeaf = right.endLeaf;
+        p.steps_.push_back({st.kind == PK::Union        ? Kind::kUnion
+                            : st.kind == PK::Difference ? Kind::kDifference
+                                                        : Kind::kIntersection});
+        break;
+      }
+      case PK::Return:
+        if (stack.size() != 1 || pc + 1 != steps.size()) return std::nullopt;
+        p.table_ = table(0, p.steps_.size());
+        for (unsigned out = 0; out < (1u << kMaxLeaves); ++out) {
+          bool never = true;
+          for (unsigned in = 0; in < (1u << kMaxLeaves) && never; ++in)
+            never = (in & out) != 0 || ((p.table_ >> in) & 1u) == 0;
+          if (never) p.never_ |= std::uint64_t{1} << out;
+        }
+        for (const std::size_t k : skips) {
+          Step& skip = p.steps_[k];
+          skip.left = table(static_cast<std::size_t>(skip.left), k);
+        }
+        return p;
+      case PK::Call:
+        return std::nullopt;
+    }
+  }
+  return std::nullopt;  // (no Return: not a compiled program)
+}
+
+bool CsgPointwise::holds(unsigned in, std::size_t from, std::size_t to) const {
+  std::uint32_t stack = 0;  // a stack of bits, the top in bit 0 (at most kMaxLeaves deep)
+  for (std::size_t pc = from; pc < to; ++pc) {
+    const Step& st = steps_[pc];
+    if (st.kind == Kind::kLeaf) {
+      stack = (stack << 1) | ((in >> st.leaf) & 1u);
+    } else if (st.kind != Kind::kSkipRightIfEmpty) {
+      const std::uint32_t b = stack & 1u, a = (stack >> 1) & 1u;
+      const std::uint32_t r = st.kind == Kind::kUnion        ? (a | b)
+                              : st.kind == Kind::kDifference ? (a & ~b & 1u)
+                                                             : (a & b);
+      stack = ((stack >> 2) << 1) | r;
+    }
+  }
+  return (stack & 1u) != 0;
+}
+
+namespace {
+
+struct End {
+  double t;
+  int leaf;
+  bool exit;
+};
+
+// The met leaves' ends (those with t > after, or all), sorted by t.
+template <class Keep>
+int sortedEnds(const std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves>& spans, int leaves,
+               Keep keep, std::array<End, 2 * CsgPointwise::kMaxLeaves>& ends) {
+  int n = 0;
+  for (int i = 0; i < leaves; ++i) {
+    const CsgPointwise::Span& s = spans[static_cast<std::size_t>(i)];
+    if (!s.hit) continue;
+    if (keep(s.tIn)) ends[static_cast<std::size_t>(n++)] = {s.tIn, i, false};
+    if (keep(s.tOut)) ends[static_cast<std::size_t>(n++)] = {s.tOut, i, true};
+  }
+  // Insertion sort: a handful of ends.
+  for (int i = 1; i < n; ++i) {
+    const End e = ends[static_cast<std::size_t>(i)];
+    int j = i;
+    for (; j > 0 && ends[static_cast<std::size_t>(j - 1)].t > e.t; --j)
+      ends[static_cast<std::size_t>(j)] = ends[static_cast<std::size_t>(j - 1)];
+    ends[static_cast<std::size_t>(j)] = e;
+  }
+  return n;
+}
+
+}  // namespace
+
+bool CsgPointwise::neverHolds(const std::array<Span, kMaxLeaves>& spans, const Step& st) const {
+  if (st.leaf >= 0) return !spans[static_cast<std::size_t>(st.leaf)].hit;  // one leaf: met or not
+  std::array<End, 2 * kMaxLeaves> ends;
+  const int n = sortedEnds(
+      spans, leafCount_, [](double) { return true; }, ends);
+  // (The leaves outside the left operand, met or not, take no part in its table.)
+  unsigned in = 0;
+  for (int k = 0; k < n;) {
+    const double t = ends[static_cast<std::size_t>(k)].t;
+    for (; k < n && ends[static_cast<std::size_t>(k)].t == t; ++k)
+      in ^= 1u << ends[static_cast<std::size_t>(k)].leaf;
+    if (k < n && ((st.left >> in) & 1u) != 0) return false;  // the open interval after t
+  }
+  return true;
+}
+
+CsgPointwise::Answer CsgPointwise::firstAhead(const std::array<Span, kMaxLeaves>& spans,
+                                              const Vec3& entry, const Vec3& exit,
+                                              TNode& node) const {
+  std::array<End, 2 * kMaxLeaves> ends;
+  const int n = sortedEnds(
+      spans, leafCount_, [](double t) { return t > 0.0; }, ends);
+  unsigned in = 0;  // the leaves holding the open interval just after t = 0
+  for (int i = 0; i < leafCount_; ++i) {
+    const Span& s = spans[static_cast<std::size_t>(i)];
+    if (s.hit && s.tIn <= 0.0 && s.tOut > 0.0) in |= 1u << i;
+  }
+  bool now = ((table_ >> in) & 1u) != 0;
+  for (int k = 0; k < n;) {
+    const int first = k;
+    const double t = ends[static_cast<std::size_t>(k)].t;
+    for (; k < n && ends[static_cast<std::size_t>(k)].t == t; ++k)
+      in ^= 1u << ends[static_cast<std::size_t>(k)].leaf;
+    const bool next = ((table_ >> in) & 1u) != 0;
+    if (next == now) continue;
+    if (k - first > 1) return Answer::kGeneral;  // which end the sweeps keep: the list's
+    const End& e = ends[static_cast<std::size_t>(first)];
+    const Vec3& marker = e.exit ? exit : entry;
+    node = TNode{t, leafPrim_[static_cast<std::size_t>(e.leaf)], next ? kSurfOut : kSurfIn,
+                 leafNegated_[static_cast<std::size_t>(e.leaf)] ? -marker : marker};
+    return Answer::kFound;
+  }
+  return Answer::kNone;
+}
+
+CsgPointwise::Answer CsgPointwise::insideLength(const std::array<Span, kMaxLeaves>& spans,
+                                                double tMax, double& length) const {
+  std::array<End, 2 * kMaxLeaves> ends;
+  const int n = sortedEnds(
+      spans, leafCount_, [](double) { return true; }, ends);
+  length = 0.0;
+  unsigned in = 0;
+  bool now = false;  // before every end no leaf holds, nor does the formula
+  double entry = 0.0;
+  for (int k = 0; k < n;) {
+    const double t = ends[static_cast<std::size_t>(k)].t;
+    for (; k < n && ends[static_cast<std::size_t>(k)].t == t; ++k)
+      in ^= 1u << ends[static_cast<std::size_t>(k)].leaf;
+    const bool next = ((table_ >> in) & 1u) != 0;
+    if (next == now) continue;
+    now = next;
+    if (now) {
+      entry = t;
+    } else {  // a run [entry, t]: the list's pair
+      const double lo = std::max(0.0, entry), hi = std::min(tMax, t);
+      if (hi > lo) length += hi - lo;
+    }
+  }
+  return length > 0.0 ? Answer::kFound : Answer::kNone;
+}
+
+}  // namespace prime

@@ -1,0 +1,178 @@
+// The modern profile's CSG tree read as what it is point by point: the
+// solid holds a point of the ray exactly when the tree's boolean formula
+// (union = or, intersection = and, difference = and-not) holds for which of
+// its leaves hold the point. Every PRIME primitive is convex, so a leaf
+// holds one interval of the ray, [tIn, tOut]; between two consecutive ends
+// of those intervals nothing changes. The regularised set operations of
+// csg_sets give, at every t, the list whose pairs are the runs where the
+// formula holds (Table 3.1 applied open interval by open interval), so
+// what the renderer asks of the list -- its first node ahead, the length
+// of solid along a segment -- can be read from the leaves' ends without
+// building a list (N18 of docs/prime/deviations.md):
+//   - firstAhead: the first end t > 0 where the formula changes; the node
+//     there is that end's leaf's entry or exit, its surface type the
+//     formula's new state, its normal marker negated once for every
+//     difference whose right operand the leaf is in (the sweep of
+//     setDifference negates a subtracted node's normal);
+//   - insideLength: the runs where the formula holds, each clipped to
+//     [0, tMax] and added in order, as the list's pairs are.
+// When the answer would depend on which of several ends at the same t the
+// sweeps keep (two ends at the t where the formula changes), or a leaf's
+// interval is empty or NaN (normalisation drops it; Q4 below sees it), the
+// caller builds the list (kGeneral): the answer is then the list's.
+//
+// The leaves are asked in the order and number runModern asks them: left
+// to right, and the right operand of '-' and '&' is not asked when the
+// left operand's list is empty (Q4 as compileModern compiles it). That
+// list is empty exactly when the left subtree's formula holds on no open
+// interval between its leaves' ends.
+//
+// The formula is kept as its truth table over the leaves (a bit per set of
+// leaves holding the point), so trees with shared subtrees (Calls) or more
+// than kMaxLeaves leaves are not taken (compile gives nothing); the list
+// walk serves them.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "src/prime/geom/csg_program_1991.h"
+#include "src/prime/geom/interval_list.h"
+
+namespace prime {
+
+class CsgPointwise {
+ public:
+  static constexpr int kMaxLeaves = 6;  // a truth table of 2^6 bits
+
+  // The pointwise form of a program compiled by compileModern; nothing
+  // for a program with shared subtrees or more than kMaxLeaves leaves.
+  static std::optional<CsgPointwise> compile(const CsgProgram1991& program);
+
+  enum class Answer { kNone, kFound, kGeneral };
+
+  // One leaf's answer: its primitive's interval along the ray, if it has one.
+  struct Span {
+    double tIn = 0, tOut = 0;
+    bool hit = false;
+  };
+
+  // The leaves' intervals, asked as runModern asks them: `leaf(prim, span)`
+  // fills span.tIn, span.tOut and returns whether the primitive is met.
+  // False (kGeneral) when an interval met is NaN or not tIn < tOut.
+  template <class Leaf>
+  bool gather(Leaf&& leaf, std::array<Span, kMaxLeaves>& spans) const {
+    for (int i = 0; i < leafCount_; ++i) spans[static_cast<std::size_t>(i)].hit = false;
+    for (std::size_t pc = 0; pc < steps_.size(); ++pc) {
+      const Step& st = steps_[pc];
+      if (st.kind == Kind::kLeaf) {
+        Span& s = spans[static_cast<std::size_t>(st.leaf)];
+        s.hit = leaf(leafPrim_[static_cast<std::size_t>(st.leaf)], s);
+        if (s.hit && !(s.tIn < s.tOut)) return false;  // also NaN
+      } else if (st.kind == Kind::kSkipRightIfEmpty && neverHolds(spans, st)) {
+        pc = static_cast<std::size_t>(st.to) - 1;  // (the right operand's leaves stay unmet)
+      }
+    }
+    return true;
+  }
+
+  // firstAhead's answer with the leaves asked only while it could depend on
+  // them (a render's question: runModern's order is not kept). A leaf's
+  // padded box, `entryOf(prim)` where the ray enters it (+inf for none), is
+  // a lower bound of where the ray can enter the primitive, so until then
+  // the leaf holds no point ahead: the leaves are asked nearest box first
+  // (`leaf` as gather's), every one whose box is entered at t <= 0 before
+  // t = 0+ is judged, and the answer is final once the first change lies
+  // before the next box, or when the formula cannot hold with the leaves
+  // known to be missed. A box entered beyond tMax counts as missed, as
+  // objectIntervalsAhead's leaves do; the list of the leaves asked gives
+  // the same first node as runModern's in [0, tMax] (and beyond, unless a
+  // leaf culled there would have changed it: the render compares it with
+  // tMax).
+  template <class EntryOf, class Leaf>
+  Answer firstAheadLazy(EntryOf&& entryOf, Leaf&& leaf, double tMax, const Vec3& entry,
+                        const Vec3& exit, TNode& node) const {
+    std::array<Span, kMaxLeaves> spans;
+    std::array<double, kMaxLeaves> enter;
+    std::array<int, kMaxLeaves> order;  // the leaves not culled, nearest box first
+    int n = 0;
+    unsigned missed = 0;  // the leaves that hold no point (culled or missed)
+    for (int i = 0; i < leafCount_; ++i) {
+      spans[static_cast<std::size_t>(i)].hit = false;
+      const double e = entryOf(leafPrim_[static_cast<std::size_t>(i)]);
+      if (!(e <= tMax)) {  // (also +inf and NaN)
+        missed |= 1u << i;
+        continue;
+      }
+      enter[static_cast<std::size_t>(i)] = e;
+      int j = n++;
+      for (; j > 0 && enter[static_cast<std::size_t>(order[static_cast<std::size_t>(j - 1)])] > e;
+           --j)
+        order[static_cast<std::size_t>(j)] = order[static_cast<std::size_t>(j - 1)];
+      order[static_cast<std::size_t>(j)] = i;
+    }
+    Answer answer = Answer::kNone;
+    bool known = true;  // `answer` is firstAhead's for the spans so far
+    for (int k = 0; k < n;) {
+      if (((never_ >> missed) & 1u) != 0) return Answer::kNone;
+      const int i = order[static_cast<std::size_t>(k++)];
+      Span& s = spans[static_cast<std::size_t>(i)];
+      s.hit = leaf(leafPrim_[static_cast<std::size_t>(i)], s);
+      if (s.hit) {
+        if (!(s.tIn < s.tOut)) return Answer::kGeneral;  // also NaN
+        known = false;
+      } else {
+        missed |= 1u << i;
+      }
+      const double next = k < n
+                              ? enter[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]
+                              : std::numeric_limits<double>::infinity();
+      if (!(next > 0.0)) continue;  // a box holding the origin: nothing can come before it
+      if (!known) {
+        answer = firstAhead(spans, entry, exit, node);
+        known = true;
+      }
+      if (answer == Answer::kFound && node.t < next) return answer;
+    }
+    return answer;  // (the last leaf asked made it known: nothing is left beyond)
+  }
+
+  // runModern's list's first node with t > 0, from the gathered spans: its
+  // t, primitive and surface type, and for its normal the marker `entry`
+  // or `exit` of the leaf's end, negated as the list would negate it.
+  Answer firstAhead(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
+                    TNode& node) const;
+  // The sum over runModern's list's pairs of min(tMax, exit) - max(0, entry)
+  // where positive, in list order (kFound, or kNone for 0: no run there).
+  Answer insideLength(const std::array<Span, kMaxLeaves>& spans, double tMax, double& length) const;
+
+  int leafCount() const { return leafCount_; }
+
+ private:
+  enum class Kind : std::uint8_t { kLeaf, kUnion, kDifference, kIntersection, kSkipRightIfEmpty };
+  struct Step {
+    Kind kind;
+    int leaf = 0;            // kLeaf: the leaf's index (left to right); kSkipRightIfEmpty:
+                             // the left operand's leaf when it is one leaf, else -1
+    int to = 0;              // kSkipRightIfEmpty: the step after the operator (where it goes on)
+    std::uint64_t left = 0;  // kSkipRightIfEmpty: the left operand's truth table
+  };
+  // The formula of steps [from, to) (one whole subtree) with leaf i holding
+  // the point when bit i of `in` is set.
+  bool holds(unsigned in, std::size_t from, std::size_t to) const;
+  // Whether the left operand of skip step `st` holds on no open interval
+  // between the met leaves' ends (its list is empty).
+  bool neverHolds(const std::array<Span, kMaxLeaves>& spans, const Step& st) const;
+
+  std::vector<Step> steps_;
+  std::uint64_t table_ = 0;  // bit `in`: the whole formula
+  // bit `out`: the formula holds for no set of leaves disjoint from `out`
+  std::uint64_t never_ = 0;
+  std::vector<int> leafPrim_;      // per leaf: its primitive
+  std::vector<bool> leafNegated_;  // per leaf: in the right operand of an odd number of '-'
+  int leafCount_ = 0;
+};
+
+}  // namespace prime
