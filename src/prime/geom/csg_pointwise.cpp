@@ -1,6 +1,7 @@
 #include "src/prime/geom/csg_pointwise.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace prime {
 
@@ -30,8 +31,7 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
         if (p.leafCount_ == kMaxLeaves) return std::nullopt;
         stack.push_back({pc, p.leafCount_, p.leafCount_ + 1});
         p.steps_.push_back({Kind::kLeaf, p.leafCount_});
-        p.leafPrim_.push_back(st.arg);
-        p.leafNegated_.push_back(false);
+        p.leafPrim_[static_cast<std::size_t>(p.leafCount_)] = st.arg;
         ++p.leafCount_;
         break;
       }
@@ -51,9 +51,7 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
         const Operand right = stack.back();
         stack.pop_back();
         if (st.kind == PK::Difference)
-          for (int i = right.firstLeaf; i < right.endLeaf; ++i)
-            p.leafNegated_[static_cast<std::size_t>(i)] =
-                !p.leafNegated_[static_cast<std::size_t>(i)];
+          for (int i = right.firstLeaf; i < right.endLeaf; ++i) p.leafNegated_ ^= 1u << i;
         stack.back().endLeaf = right.endLeaf;
         p.steps_.push_back({st.kind == PK::Union        ? Kind::kUnion
                             : st.kind == PK::Difference ? Kind::kDifference
@@ -149,30 +147,43 @@ bool CsgPointwise::neverHolds(const std::array<Span, kMaxLeaves>& spans, const S
 CsgPointwise::Answer CsgPointwise::firstAhead(const std::array<Span, kMaxLeaves>& spans,
                                               const Vec3& entry, const Vec3& exit,
                                               TNode& node) const {
-  std::array<End, 2 * kMaxLeaves> ends;
-  const int n = sortedEnds(
-      spans, leafCount_, [](double t) { return t > 0.0; }, ends);
-  unsigned in = 0;  // the leaves holding the open interval just after t = 0
+  // Each end t > 0 in turn, without sorting: the leaves holding the open
+  // interval just before it and just after it, and whether the formula
+  // differs there; the nearest such end is the first node.
+  double best = std::numeric_limits<double>::infinity();
+  int bestLeaf = -1;
+  bool bestExit = false, bestNow = false;
   for (int i = 0; i < leafCount_; ++i) {
     const Span& s = spans[static_cast<std::size_t>(i)];
-    if (s.hit && s.tIn <= 0.0 && s.tOut > 0.0) in |= 1u << i;
+    if (!s.hit) continue;
+    for (const bool isExit : {false, true}) {
+      const double t = isExit ? s.tOut : s.tIn;
+      if (!(t > 0.0) || !(t < best)) continue;  // (an end tied with the best: counted below)
+      unsigned before = 0, after = 0;
+      for (int j = 0; j < leafCount_; ++j) {
+        const Span& o = spans[static_cast<std::size_t>(j)];
+        before |= static_cast<unsigned>(o.hit && o.tIn < t && o.tOut >= t) << j;
+        after |= static_cast<unsigned>(o.hit && o.tIn <= t && o.tOut > t) << j;
+      }
+      const bool now = ((table_ >> after) & 1u) != 0;
+      if (now == (((table_ >> before) & 1u) != 0)) continue;
+      best = t;
+      bestLeaf = i;
+      bestExit = isExit;
+      bestNow = now;
+    }
   }
-  bool now = ((table_ >> in) & 1u) != 0;
-  for (int k = 0; k < n;) {
-    const int first = k;
-    const double t = ends[static_cast<std::size_t>(k)].t;
-    for (; k < n && ends[static_cast<std::size_t>(k)].t == t; ++k)
-      in ^= 1u << ends[static_cast<std::size_t>(k)].leaf;
-    const bool next = ((table_ >> in) & 1u) != 0;
-    if (next == now) continue;
-    if (k - first > 1) return Answer::kGeneral;  // which end the sweeps keep: the list's
-    const End& e = ends[static_cast<std::size_t>(first)];
-    const Vec3& marker = e.exit ? exit : entry;
-    node = TNode{t, leafPrim_[static_cast<std::size_t>(e.leaf)], next ? kSurfOut : kSurfIn,
-                 leafNegated_[static_cast<std::size_t>(e.leaf)] ? -marker : marker};
-    return Answer::kFound;
+  if (bestLeaf < 0) return Answer::kNone;
+  int tied = 0;  // the ends at the first node's t: more than one, the sweeps choose
+  for (int i = 0; i < leafCount_; ++i) {
+    const Span& s = spans[static_cast<std::size_t>(i)];
+    tied += s.hit ? static_cast<int>(s.tIn == best) + static_cast<int>(s.tOut == best) : 0;
   }
-  return Answer::kNone;
+  if (tied > 1) return Answer::kGeneral;  // which end the sweeps keep: the list's
+  const Vec3& marker = bestExit ? exit : entry;
+  node = TNode{best, leafPrim_[static_cast<std::size_t>(bestLeaf)], bestNow ? kSurfOut : kSurfIn,
+               (leafNegated_ >> bestLeaf) & 1u ? -marker : marker};
+  return Answer::kFound;
 }
 
 CsgPointwise::Answer CsgPointwise::insideLength(const std::array<Span, kMaxLeaves>& spans,

@@ -170,8 +170,8 @@ class CsgPointwise {
   std::uint64_t table_ = 0;  // bit `in`: the whole formula
   // bit `out`: the formula holds for no set of leaves disjoint from `out`
   std::uint64_t never_ = 0;
-  std::vector<int> leafPrim_;      // per leaf: its primitive
-  std::vector<bool> leafNegated_;  // per leaf: in the right operand of an odd number of '-'
+  std::array<int, kMaxLeaves> leafPrim_{};  // per leaf: its primitive
+  unsigned leafNegated_ = 0;  // bit i: leaf i is in the right operand of an odd number of '-'
   int leafCount_ = 0;
 };
 

@@ -67,7 +67,7 @@ std::array<HallTerms, 3> hallTermsThesis(const HallHue& h, const Rgb& texel, con
     bool adds = false;
     for (int c = 0; c < 3; ++c) adds = adds || light.intensity[c] * light.visibility[c] != 0.0;
     if (!adds) continue;
-    const Vec3 l = normalized(light.pt - point);
+    const Vec3 l = light.hasDir ? light.dir : normalized(light.pt - point);
     const double nl = dot(n, l);
     double cosF = 0, power = 0;  // the Fresnel term's angle, (N.H_j)^kRH or (-N.H'_j)^kTH
     bool transmits = false;

@@ -35,6 +35,10 @@ struct ThesisLight {
   Vec3 pt{};
   Rgb intensity{};
   Rgb visibility{1.0, 1.0, 1.0};
+  // normalized(pt - point) when the caller has worked it out already (for
+  // its shadow ray): the same bits, not computed again.
+  Vec3 dir{};
+  bool hasDir = false;
 };
 
 // eta from F(0), thesis 4.7.3: F(0) = ((eta - 1)/(eta + 1))^2. F(0) is

@@ -415,11 +415,11 @@ bool TracerModern::firstNodeAhead(std::size_t object, const BoxRay& boxRay, doub
 // a face, two or three at an edge or corner, those of other operands where
 // CSG faces meet), so that secondary rays can step off all of them.
 void TracerModern::surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node,
-                             SurfaceHit& hit) const {
+                             SurfaceHit& hit, const Ray* inLocal) const {
   const ScenePrim& prim = scene_.prims[node.prim];
   const Matrix4& inv = inverse_[node.prim];
   const Matrix4& a = prim.transform;
-  const Ray local = transformRay(ray, inv);
+  const Ray local = inLocal ? *inLocal : transformRay(ray, inv);
   const double t = node.t;
   hit.t = t;
   hit.prim = node.prim;
@@ -583,8 +583,8 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
   // The hit primitive met in full: its normals (the candidates carried
   // markers, N18) and which side of its own surface the ray is on.
   PrimHit own;
-  const bool ownHit = intersectModern(scene_.prims[bestNode.prim].type,
-                                      transformRay(ray, inverse_[bestNode.prim]), own);
+  const Ray ownLocal = transformRay(ray, inverse_[bestNode.prim]);
+  const bool ownHit = intersectModern(scene_.prims[bestNode.prim].type, ownLocal, own);
   if (!probe) {
     if (ownHit) {
       const Vec3& n = bestNode.norm[1] != 0.0 ? own.nOut : own.nIn;
@@ -598,7 +598,7 @@ bool TracerModern::nearestHit(const Ray& ray, SurfaceHit& hit, TraceStats& stats
         }
     }
   }
-  surfaceAt(scene_.objects[bestObj], ray, bestNode, hit);
+  surfaceAt(scene_.objects[bestObj], ray, bestNode, hit, &ownLocal);
   hit.obj = bestObj;
   Vec3 n = hit.normal;
   // Which side of the PRIMITIVE's own surface the ray is on picks the

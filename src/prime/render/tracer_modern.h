@@ -139,7 +139,9 @@ class TracerModern {
   const Matrix4& primInverse(int prim) const { return inverse_[static_cast<std::size_t>(prim)]; }
 
  private:
-  void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit) const;
+  // `local`: the ray in the node's primitive's frame, when the caller has it.
+  void surfaceAt(const SceneObject& obj, const Ray& ray, const TNode& node, SurfaceHit& hit,
+                 const Ray* local = nullptr) const;
   // The object's first surface at 0 < t <= tMax: objectIntervalsAhead's
   // first node with t > 0, if any.
   bool firstNodeAhead(std::size_t object, const BoxRay& ray, double tMax, TraceStats& stats,

@@ -198,6 +198,8 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
     const bool used = nl > 0.0 ? (kSR != 0.0 || h.kDR != 0.0) : (kST != 0.0 || h.kDT != 0.0);
     if (!thesis_.shadows || !used) continue;
     const Vec3 w = normalized(toLight);
+    l.dir = w;
+    l.hasDir = true;
     l.visibility = transmittance(spawnOrigin(hit, w), l.pt, stats, probe, depth + 1,
                                  probe ? -1 : modern_.leavingSolid(hit, w));
     if (probe) probe->shadow(depth, j, l.pt, l.visibility);
