@@ -144,9 +144,9 @@ bool CsgPointwise::neverHolds(const std::array<Span, kMaxLeaves>& spans, const S
   return true;
 }
 
-CsgPointwise::Answer CsgPointwise::firstAhead(const std::array<Span, kMaxLeaves>& spans,
-                                              const Vec3& entry, const Vec3& exit,
-                                              TNode& node) const {
+CsgPointwise::Answer CsgPointwise::firstChange(const std::array<Span, kMaxLeaves>& spans,
+                                               const Vec3& entry, const Vec3& exit, bool exitsOnly,
+                                               TNode& node) const {
   // Each end t > 0 in turn, without sorting: the leaves holding the open
   // interval just before it and just after it, and whether the formula
   // differs there; the nearest such end is the first node.
@@ -166,7 +166,7 @@ CsgPointwise::Answer CsgPointwise::firstAhead(const std::array<Span, kMaxLeaves>
         after |= static_cast<unsigned>(o.hit && o.tIn <= t && o.tOut > t) << j;
       }
       const bool now = ((table_ >> after) & 1u) != 0;
-      if (now == (((table_ >> before) & 1u) != 0)) continue;
+      if (now == (((table_ >> before) & 1u) != 0) || (exitsOnly && now)) continue;
       best = t;
       bestLeaf = i;
       bestExit = isExit;

@@ -143,7 +143,15 @@ class CsgPointwise {
   // t, primitive and surface type, and for its normal the marker `entry`
   // or `exit` of the leaf's end, negated as the list would negate it.
   Answer firstAhead(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
-                    TNode& node) const;
+                    TNode& node) const {
+    return firstChange(spans, entry, exit, false, node);
+  }
+  // The same for runModern's list's first exit node (surface type In) with
+  // t > 0: the first end t > 0 where the formula stops holding.
+  Answer firstExit(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
+                   TNode& node) const {
+    return firstChange(spans, entry, exit, true, node);
+  }
   // The sum over runModern's list's pairs of min(tMax, exit) - max(0, entry)
   // where positive, in list order (kFound, or kNone for 0: no run there).
   Answer insideLength(const std::array<Span, kMaxLeaves>& spans, double tMax, double& length) const;
@@ -159,6 +167,9 @@ class CsgPointwise {
     int to = 0;              // kSkipRightIfEmpty: the step after the operator (where it goes on)
     std::uint64_t left = 0;  // kSkipRightIfEmpty: the left operand's truth table
   };
+  // firstAhead, or with `exitsOnly` firstExit.
+  Answer firstChange(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
+                     bool exitsOnly, TNode& node) const;
   // The formula of steps [from, to) (one whole subtree) with leaf i holding
   // the point when bit i of `in` is set.
   bool holds(unsigned in, std::size_t from, std::size_t to) const;

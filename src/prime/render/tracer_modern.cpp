@@ -331,6 +331,30 @@ bool TracerModern::exitAhead(std::size_t object, const Ray& ray, TraceStats& sta
     exit = TNode{in.tOut, prim, kSurfIn, in.nOut};
     return true;
   }
+  if (pointwise_[object]) {  // the list's first exit ahead without the list (N18)
+    ++stats.objectTests;
+    std::array<CsgPointwise::Span, CsgPointwise::kMaxLeaves> spans;
+    TNode node;
+    if (pointwiseSpans(object, boxRay, std::numeric_limits<double>::infinity(), stats, spans)) {
+      switch (pointwise_[object]->firstExit(spans, kEntryMarker, kExitMarker, node)) {
+        case CsgPointwise::Answer::kNone:
+          return false;
+        case CsgPointwise::Answer::kFound: {
+          // The primitive's own normal at that end, as the list carries it.
+          PrimHit in;
+          if (!intersectModern(scene_.prims[node.prim].type, transformRay(ray, inverse_[node.prim]),
+                               in))
+            break;  // (not reached: the same test found the end)
+          const Vec3& n = node.norm[1] != 0.0 ? in.nOut : in.nIn;
+          exit = TNode{node.t, node.prim, kSurfIn, node.norm[0] < 0.0 ? -n : n};
+          return true;
+        }
+        case CsgPointwise::Answer::kGeneral:
+          break;
+      }
+    }
+    --stats.objectTests;  // counted again below
+  }
   const TList list = objectIntervalsAhead(scene_.objects[object], boxRay,
                                           std::numeric_limits<double>::infinity(), stats);
   for (const TNode& node : list)
@@ -711,7 +735,11 @@ Rgb TracerModern::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, R
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
   int leavesT = -1;
-  if (kST != 0.0)
+  // At the depth limit no transmitted ray is cast, and the distance inside
+  // only scales that ray's colour, which is zero: with 0 <= tT <= 1 the
+  // scale tT^sT is finite and the term the same zero whatever sT, so the
+  // walk through the solid is not made (N18; a probe still sees it).
+  if (kST != 0.0 && (probe || depth < options_.maxDepth || !(h.tT >= 0.0 && h.tT <= 1.0)))
     transmitted = transmit(ray, hit, h.indx, sT, through, stats, probe, depth, &leavesT);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {

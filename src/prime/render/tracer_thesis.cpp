@@ -169,7 +169,11 @@ Rgb TracerThesis::castRay(Ray ray, int depth, TraceStats& stats, const SampleId&
   const double kSR = 1.0 - h.kDR, kST = 1.0 - h.kDT;
   Ray transmitted{};
   int leavesT = -1;  // the object the transmitted ray leaves, as castRay's `leaves`
-  if (kST != 0.0)
+  // At the depth limit no transmitted ray is cast, and the distance inside
+  // only scales that ray's colour, which is zero: with 0 <= tT <= 1 the
+  // scale tT^sT is finite and the term the same zero whatever sT, so the
+  // walk through the solid is not made (N18; a probe still sees it).
+  if (kST != 0.0 && (probe || depth < options_.maxDepth || !(h.tT >= 0.0 && h.tT <= 1.0)))
     transmitted = modern_.transmit(ray, hit, h.indx, sT, through, stats, probe, depth, &leavesT);
   Rgb iSR{}, iST{};
   if (depth < options_.maxDepth) {

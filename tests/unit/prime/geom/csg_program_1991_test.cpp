@@ -344,7 +344,7 @@ TEST(CsgPointwise, ReadsTheModernListFromTheLeaves) {
   const Vec3 entryMarker{1, 0, 0}, exitMarker{1, 1, 0};
   std::mt19937 rng(1985);
   int found = 0, none = 0, general = 0, emptyLeaf = 0, skips = 0, lengths = 0;
-  int lazyAnswers = 0, lazyFewer = 0;
+  int lazyAnswers = 0, lazyFewer = 0, exits = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const int leaves = 2 + static_cast<int>(rng() % 5);
     const auto entries = randomTree(rng, leaves, false);
@@ -399,6 +399,24 @@ TEST(CsgPointwise, ReadsTheModernListFromTheLeaves) {
       case CsgPointwise::Answer::kGeneral:
         ++general;
         break;
+    }
+    // The first exit ahead (a refracted ray's walk out of the solid).
+    const TNode* exitNode = nullptr;
+    for (const TNode& n : list.list)
+      if (n.t > 0.0 && n.surfType == kSurfIn) {
+        exitNode = &n;
+        break;
+      }
+    const CsgPointwise::Answer exitAnswer =
+        pointwise->firstExit(spans, entryMarker, exitMarker, node);
+    if (exitAnswer != CsgPointwise::Answer::kGeneral) {
+      ASSERT_EQ(exitAnswer == CsgPointwise::Answer::kFound, exitNode != nullptr)
+          << "trial " << trial << "\n"
+          << list.list;
+      if (exitNode) {
+        ASSERT_EQ(node, *exitNode) << "trial " << trial << "\n" << list.list;
+      }
+      exits += exitNode != nullptr;
     }
     // firstAheadLazy against the list of the leaves not culled: a leaf's
     // box entered at or before its interval (a miss's anywhere, or never),
@@ -456,6 +474,7 @@ TEST(CsgPointwise, ReadsTheModernListFromTheLeaves) {
   EXPECT_GT(lengths, 15000);
   EXPECT_GT(lazyAnswers, 40000);
   EXPECT_GT(lazyFewer, 20000);  // ... and the lazy answers ask fewer leaves
+  EXPECT_GT(exits, 6000);
 }
 
 // What the pointwise form takes: trees of up to six leaves and no shared
