@@ -1,6 +1,7 @@
 #include "src/prime/geom/csg_pointwise.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 namespace prime {
@@ -148,38 +149,37 @@ CsgPointwise::Answer CsgPointwise::firstChange(const std::array<Span, kMaxLeaves
                                                const Vec3& entry, const Vec3& exit, bool exitsOnly,
                                                TNode& node) const {
   // Each end t > 0 in turn, without sorting: the leaves holding the open
-  // interval just before it and just after it, and whether the formula
-  // differs there; the nearest such end is the first node.
+  // interval just before it and just after it (those strictly around it,
+  // and those leaving or entering there), and whether the formula differs
+  // there; the nearest such end is the first node. (A leaf not met has NaN
+  // ends: no comparison holds.)
   double best = std::numeric_limits<double>::infinity();
-  int bestLeaf = -1;
+  int bestLeaf = -1, bestTied = 0;
   bool bestExit = false, bestNow = false;
   for (int i = 0; i < leafCount_; ++i) {
     const Span& s = spans[static_cast<std::size_t>(i)];
-    if (!s.hit) continue;
     for (const bool isExit : {false, true}) {
       const double t = isExit ? s.tOut : s.tIn;
-      if (!(t > 0.0) || !(t < best)) continue;  // (an end tied with the best: counted below)
-      unsigned before = 0, after = 0;
+      if (!(t > 0.0) || !(t < best)) continue;  // (an end tied with the best: counted there)
+      unsigned around = 0, entering = 0, leaving = 0;
       for (int j = 0; j < leafCount_; ++j) {
         const Span& o = spans[static_cast<std::size_t>(j)];
-        before |= static_cast<unsigned>(o.hit && o.tIn < t && o.tOut >= t) << j;
-        after |= static_cast<unsigned>(o.hit && o.tIn <= t && o.tOut > t) << j;
+        around |= static_cast<unsigned>((o.tIn < t) & (o.tOut > t)) << j;
+        entering |= static_cast<unsigned>(o.tIn == t) << j;
+        leaving |= static_cast<unsigned>(o.tOut == t) << j;
       }
-      const bool now = ((table_ >> after) & 1u) != 0;
-      if (now == (((table_ >> before) & 1u) != 0) || (exitsOnly && now)) continue;
+      const bool now = ((table_ >> (around | entering)) & 1u) != 0;
+      if (now == (((table_ >> (around | leaving)) & 1u) != 0) || (exitsOnly && now)) continue;
       best = t;
       bestLeaf = i;
       bestExit = isExit;
       bestNow = now;
+      bestTied = std::popcount(entering) + std::popcount(leaving);
     }
   }
   if (bestLeaf < 0) return Answer::kNone;
-  int tied = 0;  // the ends at the first node's t: more than one, the sweeps choose
-  for (int i = 0; i < leafCount_; ++i) {
-    const Span& s = spans[static_cast<std::size_t>(i)];
-    tied += s.hit ? static_cast<int>(s.tIn == best) + static_cast<int>(s.tOut == best) : 0;
-  }
-  if (tied > 1) return Answer::kGeneral;  // which end the sweeps keep: the list's
+  // More than one end at the first node's t: which the sweeps keep is the list's.
+  if (bestTied > 1) return Answer::kGeneral;
   const Vec3& marker = bestExit ? exit : entry;
   node = TNode{best, leafPrim_[static_cast<std::size_t>(bestLeaf)], bestNow ? kSurfOut : kSurfIn,
                (leafNegated_ >> bestLeaf) & 1u ? -marker : marker};

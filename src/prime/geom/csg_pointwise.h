@@ -53,23 +53,26 @@ class CsgPointwise {
 
   enum class Answer { kNone, kFound, kGeneral };
 
-  // One leaf's answer: its primitive's interval along the ray, if it has one.
+  // One leaf's answer: its primitive's interval along the ray, if it has
+  // one (a leaf not met, or not asked, keeps NaN ends).
   struct Span {
-    double tIn = 0, tOut = 0;
+    double tIn = kNaN, tOut = kNaN;
     bool hit = false;
   };
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   // The leaves' intervals, asked as runModern asks them: `leaf(prim, span)`
   // fills span.tIn, span.tOut and returns whether the primitive is met.
   // False (kGeneral) when an interval met is NaN or not tIn < tOut.
   template <class Leaf>
   bool gather(Leaf&& leaf, std::array<Span, kMaxLeaves>& spans) const {
-    for (int i = 0; i < leafCount_; ++i) spans[static_cast<std::size_t>(i)].hit = false;
+    for (int i = 0; i < leafCount_; ++i) spans[static_cast<std::size_t>(i)] = Span{};
     for (std::size_t pc = 0; pc < steps_.size(); ++pc) {
       const Step& st = steps_[pc];
       if (st.kind == Kind::kLeaf) {
         Span& s = spans[static_cast<std::size_t>(st.leaf)];
         s.hit = leaf(leafPrim_[static_cast<std::size_t>(st.leaf)], s);
+        if (!s.hit) s = Span{};
         if (s.hit && !(s.tIn < s.tOut)) return false;  // also NaN
       } else if (st.kind == Kind::kSkipRightIfEmpty && neverHolds(spans, st)) {
         pc = static_cast<std::size_t>(st.to) - 1;  // (the right operand's leaves stay unmet)
@@ -100,7 +103,7 @@ class CsgPointwise {
     int n = 0;
     unsigned missed = 0;  // the leaves that hold no point (culled or missed)
     for (int i = 0; i < leafCount_; ++i) {
-      spans[static_cast<std::size_t>(i)].hit = false;
+      spans[static_cast<std::size_t>(i)] = Span{};
       const double e = entryOf(leafPrim_[static_cast<std::size_t>(i)]);
       if (!(e <= tMax)) {  // (also +inf and NaN)
         missed |= 1u << i;
@@ -120,6 +123,7 @@ class CsgPointwise {
       const int i = order[static_cast<std::size_t>(k++)];
       Span& s = spans[static_cast<std::size_t>(i)];
       s.hit = leaf(leafPrim_[static_cast<std::size_t>(i)], s);
+      if (!s.hit) s = Span{};  // (a leaf may write its span and still miss)
       if (s.hit) {
         if (!(s.tIn < s.tOut)) return Answer::kGeneral;  // also NaN
         known = false;
