@@ -1,7 +1,6 @@
 #include "src/prime/geom/csg_pointwise.h"
 
 #include <algorithm>
-#include <bit>
 #include <limits>
 
 namespace prime {
@@ -14,6 +13,12 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
   struct Operand {
     std::size_t step;
     int firstLeaf, endLeaf;
+    int skip = -1;  // the skip step after this operand when it is a left operand
+  };
+  auto leaves = [](int first, int end) {
+    unsigned m = 0;
+    for (int i = first; i < end; ++i) m |= 1u << i;
+    return m;
   };
   // The truth table of steps [from, to) over every set of leaves.
   auto table = [&p](std::size_t from, std::size_t to) {
@@ -40,6 +45,7 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
         if (stack.empty()) return std::nullopt;  // (compileChecked never writes one first)
         // (`left` holds the left operand's first step until its table is made)
         skips.push_back(p.steps_.size());
+        stack.back().skip = static_cast<int>(p.steps_.size());
         p.steps_.push_back(
             {Kind::kSkipRightIfEmpty,
              stack.back().endLeaf - stack.back().firstLeaf == 1 ? stack.back().firstLeaf : -1,
@@ -53,6 +59,14 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
         stack.pop_back();
         if (st.kind == PK::Difference)
           for (int i = right.firstLeaf; i < right.endLeaf; ++i) p.leafNegated_ ^= 1u << i;
+        if (const int k = stack.back().skip; k >= 0) {  // its skip: the gate of the right operand
+          const Operand& left = stack.back();
+          if (left.endLeaf - left.firstLeaf > 1)  // (one leaf: missed or not, depends_ sees it)
+            p.gates_[static_cast<std::size_t>(p.gateCount_++)] = {
+                leaves(left.firstLeaf, left.endLeaf), leaves(right.firstLeaf, right.endLeaf),
+                static_cast<std::size_t>(k)};
+          stack.back().skip = -1;
+        }
         stack.back().endLeaf = right.endLeaf;
         p.steps_.push_back({st.kind == PK::Union        ? Kind::kUnion
                             : st.kind == PK::Difference ? Kind::kDifference
@@ -67,6 +81,19 @@ std::optional<CsgPointwise> CsgPointwise::compile(const CsgProgram1991& program)
           for (unsigned in = 0; in < (1u << kMaxLeaves) && never; ++in)
             never = (in & out) != 0 || ((p.table_ >> in) & 1u) == 0;
           if (never) p.never_ |= std::uint64_t{1} << out;
+        }
+        for (unsigned out = 0; out < (1u << kMaxLeaves); ++out) {
+          if (((p.never_ >> out) & 1u) != 0) continue;
+          for (int i = 0; i < p.leafCount_; ++i) {
+            const unsigned bit = 1u << i;
+            if ((out & bit) != 0) continue;
+            for (unsigned in = 0; in < (1u << kMaxLeaves); ++in)
+              if ((in & (out | bit)) == 0 &&
+                  ((p.table_ >> in) & 1u) != ((p.table_ >> (in | bit)) & 1u)) {
+                p.depends_[out] |= bit;
+                break;
+              }
+          }
         }
         for (const std::size_t k : skips) {
           Step& skip = p.steps_[k];
@@ -154,7 +181,8 @@ CsgPointwise::Answer CsgPointwise::firstChange(const std::array<Span, kMaxLeaves
   // there; the nearest such end is the first node. (A leaf not met has NaN
   // ends: no comparison holds.)
   double best = std::numeric_limits<double>::infinity();
-  int bestLeaf = -1, bestTied = 0;
+  int bestLeaf = -1;
+  unsigned tiedHere = 0;  // the leaves with an end at the best t (none has both there)
   bool bestExit = false, bestNow = false;
   for (int i = 0; i < leafCount_; ++i) {
     const Span& s = spans[static_cast<std::size_t>(i)];
@@ -174,12 +202,12 @@ CsgPointwise::Answer CsgPointwise::firstChange(const std::array<Span, kMaxLeaves
       bestLeaf = i;
       bestExit = isExit;
       bestNow = now;
-      bestTied = std::popcount(entering) + std::popcount(leaving);
+      tiedHere = entering | leaving;
     }
   }
   if (bestLeaf < 0) return Answer::kNone;
   // More than one end at the first node's t: which the sweeps keep is the list's.
-  if (bestTied > 1) return Answer::kGeneral;
+  if ((tiedHere & (tiedHere - 1)) != 0) return Answer::kGeneral;
   const Vec3& marker = bestExit ? exit : entry;
   node = TNode{best, leafPrim_[static_cast<std::size_t>(bestLeaf)], bestNow ? kSurfOut : kSurfIn,
                (leafNegated_ >> bestLeaf) & 1u ? -marker : marker};

@@ -32,6 +32,7 @@
 // than kMaxLeaves leaves are not taken (compile gives nothing); the list
 // walk serves them.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -82,45 +83,71 @@ class CsgPointwise {
   }
 
   // firstAhead's answer with the leaves asked only while it could depend on
-  // them (a render's question: runModern's order is not kept). A leaf's
-  // padded box, `entryOf(prim)` where the ray enters it (+inf for none), is
-  // a lower bound of where the ray can enter the primitive, so until then
-  // the leaf holds no point ahead: the leaves are asked nearest box first
-  // (`leaf` as gather's), every one whose box is entered at t <= 0 before
-  // t = 0+ is judged, and the answer is final once the first change lies
-  // before the next box, or when the formula cannot hold with the leaves
-  // known to be missed. A box entered beyond tMax counts as missed, as
-  // objectIntervalsAhead's leaves do; the list of the leaves asked gives
-  // the same first node as runModern's in [0, tMax] (and beyond, unless a
-  // leaf culled there would have changed it: the render compares it with
-  // tMax).
+  // them (a render's question). A leaf's padded box, `entryOf(prim)` where
+  // the ray enters it ahead (+inf for none), is a lower bound of where the
+  // ray can enter the primitive, so until then the leaf holds no point
+  // ahead. The leaves are asked (`leaf` as gather's) in runModern's order,
+  // each only while the formula depends on it: not when a missed leaf makes
+  // its part empty (with A missed, A - B and A & B do not depend on B), nor
+  // when it is in the right operand of a '-' or '&' whose left operand is
+  // known and holds on no open interval (Q4); so never a leaf runModern
+  // would not ask. The answer is final once the first change lies before
+  // every box still to be asked (every box entered at t <= 0 is asked
+  // before t = 0+ is judged), or when no leaf is left to ask. A box not
+  // entered by tMax counts as missed, as objectIntervalsAhead's leaves do;
+  // the list of the leaves asked gives the same first node as runModern's in
+  // [0, tMax] (and beyond, unless a leaf culled there would have changed it:
+  // the render compares it with tMax).
   template <class EntryOf, class Leaf>
   Answer firstAheadLazy(EntryOf&& entryOf, Leaf&& leaf, double tMax, const Vec3& entry,
                         const Vec3& exit, TNode& node) const {
     std::array<Span, kMaxLeaves> spans;
     std::array<double, kMaxLeaves> enter;
-    std::array<int, kMaxLeaves> order;  // the leaves not culled, nearest box first
-    int n = 0;
-    unsigned missed = 0;  // the leaves that hold no point (culled or missed)
+    unsigned missed = 0;   // the leaves that hold no point (culled or missed)
+    unsigned waiting = 0;  // the leaves not asked yet
     for (int i = 0; i < leafCount_; ++i) {
       spans[static_cast<std::size_t>(i)] = Span{};
       const double e = entryOf(leafPrim_[static_cast<std::size_t>(i)]);
-      if (!(e <= tMax)) {  // (also +inf and NaN)
-        missed |= 1u << i;
-        continue;
-      }
       enter[static_cast<std::size_t>(i)] = e;
-      int j = n++;
-      for (; j > 0 && enter[static_cast<std::size_t>(order[static_cast<std::size_t>(j - 1)])] > e;
-           --j)
-        order[static_cast<std::size_t>(j)] = order[static_cast<std::size_t>(j - 1)];
-      order[static_cast<std::size_t>(j)] = i;
+      if (e == std::numeric_limits<double>::infinity() || !(e <= tMax))  // (also NaN)
+        missed |= 1u << i;
+      else
+        waiting |= 1u << i;
     }
     Answer answer = Answer::kNone;
     bool known = true;  // `answer` is firstAhead's for the spans so far
-    for (int k = 0; k < n;) {
-      if (((never_ >> missed) & 1u) != 0) return Answer::kNone;
-      const int i = order[static_cast<std::size_t>(k++)];
+    for (;;) {
+      // The leaves still to ask: not gated, and the formula depends on them
+      // (none when it cannot hold). A gate's left operand is known when no
+      // leaf of it is still to ask (a leaf the formula does not depend on
+      // lies in a part made empty by a missed leaf, which is the left
+      // operand's own or holds the gate's right operand too); gates come in
+      // post-order, an inner one's right operand known for an outer one.
+      unsigned ask = waiting & depends_[missed];
+      for (int g = 0; g < gateCount_; ++g) {
+        const Gate& gate = gates_[static_cast<std::size_t>(g)];
+        if ((gate.left & ask) == 0 && (gate.right & ask) != 0 &&
+            neverHolds(spans, steps_[gate.skip]))
+          ask &= ~gate.right;
+      }
+      if (ask == 0) break;
+      // The nearest box of those still to be asked, and the one to ask now:
+      // the leftmost (runModern's order).
+      double next = std::numeric_limits<double>::infinity();
+      int i = -1;
+      for (int j = 0; j < leafCount_; ++j)
+        if (((ask >> j) & 1u) != 0) {
+          next = std::min(next, enter[static_cast<std::size_t>(j)]);
+          if (i < 0) i = j;
+        }
+      if (next > 0.0) {  // t = 0+ is known (no box still to ask holds the origin)
+        if (!known) {
+          answer = firstAhead(spans, entry, exit, node);
+          known = true;
+        }
+        if (answer == Answer::kFound && node.t < next) return answer;
+      }
+      waiting &= ~(1u << i);
       Span& s = spans[static_cast<std::size_t>(i)];
       s.hit = leaf(leafPrim_[static_cast<std::size_t>(i)], s);
       if (!s.hit) s = Span{};  // (a leaf may write its span and still miss)
@@ -130,17 +157,9 @@ class CsgPointwise {
       } else {
         missed |= 1u << i;
       }
-      const double next = k < n
-                              ? enter[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]
-                              : std::numeric_limits<double>::infinity();
-      if (!(next > 0.0)) continue;  // a box holding the origin: nothing can come before it
-      if (!known) {
-        answer = firstAhead(spans, entry, exit, node);
-        known = true;
-      }
-      if (answer == Answer::kFound && node.t < next) return answer;
     }
-    return answer;  // (the last leaf asked made it known: nothing is left beyond)
+    // No leaf left that the formula depends on: those not asked are out.
+    return known ? answer : firstAhead(spans, entry, exit, node);
   }
 
   // runModern's list's first node with t > 0, from the gathered spans: its
@@ -185,6 +204,19 @@ class CsgPointwise {
   std::uint64_t table_ = 0;  // bit `in`: the whole formula
   // bit `out`: the formula holds for no set of leaves disjoint from `out`
   std::uint64_t never_ = 0;
+  // [out]: the leaves the formula depends on when those of `out` hold no
+  // point (none when it cannot hold).
+  std::array<unsigned char, 64> depends_{};
+  // The right operands of '-' and '&' whose left operand has more than one
+  // leaf: when every leaf of the left operand is known and it holds on no
+  // open interval (its list is empty: Q4), the right operand's leaves do
+  // not matter.
+  struct Gate {
+    unsigned left = 0, right = 0;  // the operands' leaves
+    std::size_t skip = 0;          // the skip step (its `left` table)
+  };
+  std::array<Gate, kMaxLeaves> gates_{};
+  int gateCount_ = 0;
   std::array<int, kMaxLeaves> leafPrim_{};  // per leaf: its primitive
   unsigned leafNegated_ = 0;  // bit i: leaf i is in the right operand of an odd number of '-'
   int leafCount_ = 0;
