@@ -14,6 +14,8 @@
 //     formula's new state, its normal marker negated once for every
 //     difference whose right operand the leaf is in (the sweep of
 //     setDifference negates a subtracted node's normal);
+//   - firstExit: the same for the first end t > 0 where it stops holding
+//     (a refracted ray's way out of the solid);
 //   - insideLength: the runs where the formula holds, each clipped to
 //     [0, tMax] and added in order, as the list's pairs are.
 // When the answer would depend on which of several ends at the same t the
@@ -21,11 +23,12 @@
 // interval is empty or NaN (normalisation drops it; Q4 below sees it), the
 // caller builds the list (kGeneral): the answer is then the list's.
 //
-// The leaves are asked in the order and number runModern asks them: left
+// gather asks the leaves in the order and number runModern asks them: left
 // to right, and the right operand of '-' and '&' is not asked when the
 // left operand's list is empty (Q4 as compileModern compiles it). That
 // list is empty exactly when the left subtree's formula holds on no open
-// interval between its leaves' ends.
+// interval between its leaves' ends. firstAheadLazy asks some of those
+// leaves, in the same order: only while the answer depends on them.
 //
 // The formula is kept as its truth table over the leaves (a bit per set of
 // leaves holding the point), so trees with shared subtrees (Calls) or more
