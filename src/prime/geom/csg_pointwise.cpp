@@ -126,6 +126,8 @@ bool CsgPointwise::holds(unsigned in, std::size_t from, std::size_t to) const {
 
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
 struct End {
   double t;
   int leaf;
@@ -175,43 +177,84 @@ bool CsgPointwise::neverHolds(const std::array<Span, kMaxLeaves>& spans, const S
 CsgPointwise::Answer CsgPointwise::firstChange(const std::array<Span, kMaxLeaves>& spans,
                                                const Vec3& entry, const Vec3& exit, bool exitsOnly,
                                                TNode& node) const {
-  // Each end t > 0 in turn, without sorting: the leaves holding the open
-  // interval just before it and just after it (those strictly around it,
-  // and those leaving or entering there), and whether the formula differs
-  // there; the nearest such end is the first node. (A leaf not met has NaN
-  // ends: no comparison holds.)
-  double best = std::numeric_limits<double>::infinity();
-  int bestLeaf = -1;
-  unsigned tiedHere = 0;  // the leaves with an end at the best t (none has both there)
-  bool bestExit = false, bestNow = false;
-  for (int i = 0; i < leafCount_; ++i) {
-    const Span& s = spans[static_cast<std::size_t>(i)];
-    for (const bool isExit : {false, true}) {
-      const double t = isExit ? s.tOut : s.tIn;
-      if (!(t > 0.0) || !(t < best)) continue;  // (an end tied with the best: counted there)
-      unsigned around = 0, entering = 0, leaving = 0;
-      for (int j = 0; j < leafCount_; ++j) {
-        const Span& o = spans[static_cast<std::size_t>(j)];
-        around |= static_cast<unsigned>((o.tIn < t) & (o.tOut > t)) << j;
-        entering |= static_cast<unsigned>(o.tIn == t) << j;
-        leaving |= static_cast<unsigned>(o.tOut == t) << j;
-      }
-      const bool now = ((table_ >> (around | entering)) & 1u) != 0;
-      if (now == (((table_ >> (around | leaving)) & 1u) != 0) || (exitsOnly && now)) continue;
-      best = t;
-      bestLeaf = i;
-      bestExit = isExit;
-      bestNow = now;
-      tiedHere = entering | leaving;
-    }
+  switch (leafCount_) {
+    case 1:
+      return firstChangeOf<1>(spans, entry, exit, exitsOnly, node);
+    case 2:
+      return firstChangeOf<2>(spans, entry, exit, exitsOnly, node);
+    case 3:
+      return firstChangeOf<3>(spans, entry, exit, exitsOnly, node);
+    case 4:
+      return firstChangeOf<4>(spans, entry, exit, exitsOnly, node);
+    case 5:
+      return firstChangeOf<5>(spans, entry, exit, exitsOnly, node);
+    default:
+      return firstChangeOf<kMaxLeaves>(spans, entry, exit, exitsOnly, node);
   }
-  if (bestLeaf < 0) return Answer::kNone;
-  // More than one end at the first node's t: which the sweeps keep is the list's.
-  if ((tiedHere & (tiedHere - 1)) != 0) return Answer::kGeneral;
-  const Vec3& marker = bestExit ? exit : entry;
-  node = TNode{best, leafPrim_[static_cast<std::size_t>(bestLeaf)], bestNow ? kSurfOut : kSurfIn,
-               (leafNegated_ >> bestLeaf) & 1u ? -marker : marker};
-  return Answer::kFound;
+}
+
+template <int N>
+CsgPointwise::Answer CsgPointwise::firstChangeOf(const std::array<Span, kMaxLeaves>& spans,
+                                                 const Vec3& entry, const Vec3& exit,
+                                                 bool exitsOnly, TNode& node) const {
+  // The ends 0 < t < +inf of the met leaves, taken nearest first, every end
+  // at one t together (a leaf not met has NaN ends: no comparison holds).
+  // `cur`: the leaves holding the open interval just before the next end,
+  // at first those with tIn <= 0 < tOut. At an end t, the leaves holding
+  // just after it are those of `cur` not leaving there and those entering
+  // there; the first t where the formula differs across it is the first
+  // node, usually the first end or the second.
+  std::array<double, 2 * N> at;
+  std::array<unsigned char, 2 * N> end;  // 2 leaf + (1 for an exit)
+  int n = 0;
+  unsigned cur = 0;
+  for (int i = 0; i < N; ++i) {
+    const Span& s = spans[static_cast<std::size_t>(i)];
+    if (s.tIn > 0.0 && s.tIn < kInf) {
+      at[static_cast<std::size_t>(n)] = s.tIn;
+      end[static_cast<std::size_t>(n++)] = static_cast<unsigned char>(2 * i);
+    }
+    if (s.tOut > 0.0 && s.tOut < kInf) {
+      at[static_cast<std::size_t>(n)] = s.tOut;
+      end[static_cast<std::size_t>(n++)] = static_cast<unsigned char>(2 * i + 1);
+    }
+    cur |= static_cast<unsigned>((s.tIn <= 0.0) & (s.tOut > 0.0)) << i;
+  }
+  // Insertion sort by t: a handful of ends.
+  for (int i = 1; i < n; ++i) {
+    const double t = at[static_cast<std::size_t>(i)];
+    const unsigned char e = end[static_cast<std::size_t>(i)];
+    int j = i;
+    for (; j > 0 && at[static_cast<std::size_t>(j - 1)] > t; --j) {
+      at[static_cast<std::size_t>(j)] = at[static_cast<std::size_t>(j - 1)];
+      end[static_cast<std::size_t>(j)] = end[static_cast<std::size_t>(j - 1)];
+    }
+    at[static_cast<std::size_t>(j)] = t;
+    end[static_cast<std::size_t>(j)] = e;
+  }
+  for (int k = 0; k < n;) {
+    const double t = at[static_cast<std::size_t>(k)];
+    unsigned entering = 0, leaving = 0;
+    int last = 0;
+    for (; k < n && at[static_cast<std::size_t>(k)] == t; ++k) {
+      last = end[static_cast<std::size_t>(k)];
+      (last & 1 ? leaving : entering) |= 1u << (last >> 1);
+    }
+    const unsigned after = (cur & ~leaving) | entering;
+    const bool now = ((table_ >> after) & 1u) != 0;
+    if (now != (((table_ >> cur) & 1u) != 0) && !(exitsOnly && now)) {
+      // More than one end at the first node's t: which the sweeps keep is the list's.
+      const unsigned tied = entering | leaving;
+      if ((tied & (tied - 1)) != 0) return Answer::kGeneral;
+      const int leaf = last >> 1;
+      const Vec3& marker = (last & 1) != 0 ? exit : entry;
+      node = TNode{t, leafPrim_[static_cast<std::size_t>(leaf)], now ? kSurfOut : kSurfIn,
+                   (leafNegated_ >> leaf) & 1u ? -marker : marker};
+      return Answer::kFound;
+    }
+    cur = after;
+  }
+  return Answer::kNone;
 }
 
 CsgPointwise::Answer CsgPointwise::insideLength(const std::array<Span, kMaxLeaves>& spans,

@@ -104,12 +104,48 @@ class CsgPointwise {
   template <class EntryOf, class Leaf>
   Answer firstAheadLazy(EntryOf&& entryOf, Leaf&& leaf, double tMax, const Vec3& entry,
                         const Vec3& exit, TNode& node) const {
-    std::array<Span, kMaxLeaves> spans;
+    switch (leafCount_) {  // (the loops over the leaves unrolled)
+      case 2:
+        return firstAheadLazyOf<2>(entryOf, leaf, tMax, entry, exit, node);
+      case 3:
+        return firstAheadLazyOf<3>(entryOf, leaf, tMax, entry, exit, node);
+      case 4:
+        return firstAheadLazyOf<4>(entryOf, leaf, tMax, entry, exit, node);
+      default:
+        return firstAheadLazyOf<0>(entryOf, leaf, tMax, entry, exit, node);
+    }
+  }
+
+  // runModern's list's first node with t > 0, from the gathered spans: its
+  // t, primitive and surface type, and for its normal the marker `entry`
+  // or `exit` of the leaf's end, negated as the list would negate it.
+  Answer firstAhead(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
+                    TNode& node) const {
+    return firstChange(spans, entry, exit, false, node);
+  }
+  // The same for runModern's list's first exit node (surface type In) with
+  // t > 0: the first end t > 0 where the formula stops holding.
+  Answer firstExit(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
+                   TNode& node) const {
+    return firstChange(spans, entry, exit, true, node);
+  }
+  // The sum over runModern's list's pairs of min(tMax, exit) - max(0, entry)
+  // where positive, in list order (kFound, or kNone for 0: no run there).
+  Answer insideLength(const std::array<Span, kMaxLeaves>& spans, double tMax, double& length) const;
+
+  int leafCount() const { return leafCount_; }
+
+ private:
+  // firstAheadLazy for a tree of N leaves, or of leafCount_ leaves (N = 0).
+  template <int N, class EntryOf, class Leaf>
+  Answer firstAheadLazyOf(EntryOf& entryOf, Leaf& leaf, double tMax, const Vec3& entry,
+                          const Vec3& exit, TNode& node) const {
+    const int leaves = N > 0 ? N : leafCount_;
+    std::array<Span, kMaxLeaves> spans;  // (every one not met: NaN ends)
     std::array<double, kMaxLeaves> enter;
     unsigned missed = 0;   // the leaves that hold no point (culled or missed)
     unsigned waiting = 0;  // the leaves not asked yet
-    for (int i = 0; i < leafCount_; ++i) {
-      spans[static_cast<std::size_t>(i)] = Span{};
+    for (int i = 0; i < leaves; ++i) {
       const double e = entryOf(leafPrim_[static_cast<std::size_t>(i)]);
       enter[static_cast<std::size_t>(i)] = e;
       if (e == std::numeric_limits<double>::infinity() || !(e <= tMax))  // (also NaN)
@@ -138,7 +174,7 @@ class CsgPointwise {
       // the leftmost (runModern's order).
       double next = std::numeric_limits<double>::infinity();
       int i = -1;
-      for (int j = 0; j < leafCount_; ++j)
+      for (int j = 0; j < leaves; ++j)
         if (((ask >> j) & 1u) != 0) {
           next = std::min(next, enter[static_cast<std::size_t>(j)]);
           if (i < 0) i = j;
@@ -164,27 +200,6 @@ class CsgPointwise {
     // No leaf left that the formula depends on: those not asked are out.
     return known ? answer : firstAhead(spans, entry, exit, node);
   }
-
-  // runModern's list's first node with t > 0, from the gathered spans: its
-  // t, primitive and surface type, and for its normal the marker `entry`
-  // or `exit` of the leaf's end, negated as the list would negate it.
-  Answer firstAhead(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
-                    TNode& node) const {
-    return firstChange(spans, entry, exit, false, node);
-  }
-  // The same for runModern's list's first exit node (surface type In) with
-  // t > 0: the first end t > 0 where the formula stops holding.
-  Answer firstExit(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
-                   TNode& node) const {
-    return firstChange(spans, entry, exit, true, node);
-  }
-  // The sum over runModern's list's pairs of min(tMax, exit) - max(0, entry)
-  // where positive, in list order (kFound, or kNone for 0: no run there).
-  Answer insideLength(const std::array<Span, kMaxLeaves>& spans, double tMax, double& length) const;
-
-  int leafCount() const { return leafCount_; }
-
- private:
   enum class Kind : std::uint8_t { kLeaf, kUnion, kDifference, kIntersection, kSkipRightIfEmpty };
   struct Step {
     Kind kind;
@@ -196,6 +211,10 @@ class CsgPointwise {
   // firstAhead, or with `exitsOnly` firstExit.
   Answer firstChange(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry, const Vec3& exit,
                      bool exitsOnly, TNode& node) const;
+  // firstChange for a tree of N leaves (the loops unrolled).
+  template <int N>
+  Answer firstChangeOf(const std::array<Span, kMaxLeaves>& spans, const Vec3& entry,
+                       const Vec3& exit, bool exitsOnly, TNode& node) const;
   // The formula of steps [from, to) (one whole subtree) with leaf i holding
   // the point when bit i of `in` is set.
   bool holds(unsigned in, std::size_t from, std::size_t to) const;
