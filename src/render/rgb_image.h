@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/math/rgb.h"
+#include "src/render/picture_buffer.h"
 
 namespace prime {
 
@@ -16,7 +17,7 @@ struct RgbImage {
   void assign(int w, int h) {
     width = w;
     height = h;
-    pixels.assign(static_cast<std::size_t>(w) * h, Rgb{});
+    assignPicture(pixels, static_cast<std::size_t>(w) * h, Rgb{});
   }
   bool empty() const { return pixels.empty(); }
   Rgb& at(int row, int column) { return pixels[static_cast<std::size_t>(row) * width + column]; }
