@@ -1,5 +1,5 @@
 // A picture's pixel buffer sized in one go: megabytes that every pixel of
-// the render then writes. Zeroing them is the one serial piece of work
+// the render then writes. Zeroing them is the largest serial piece of work
 // between reading the scene and the render threads, and most of its time is
 // the kernel's, one page fault per 4 KiB page; on a virtual machine that is
 // several microseconds a page (an 8.5 MB graph file at 4x the listing's

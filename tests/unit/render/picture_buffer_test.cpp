@@ -41,13 +41,5 @@ TEST(PictureBuffer, AssignsAsVectorAssignDoes) {
   expectAll(colours, kLarge / 4, Rgb{});
 }
 
-TEST(PictureBuffer, AdviceOnAnyRangeIsHarmless) {
-  adviseHugePages(nullptr, 0);
-  adviseHugePages(nullptr, std::size_t{8} << 20);
-  std::vector<char> small(100, 'x');
-  adviseHugePages(small.data(), small.size());  // no 2 MiB-aligned part: nothing asked
-  EXPECT_EQ(std::count(small.begin(), small.end(), 'x'), 100);
-}
-
 }  // namespace
 }  // namespace prime
