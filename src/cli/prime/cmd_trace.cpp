@@ -69,6 +69,21 @@ void printSummary(const RenderResult& r, const std::string& out) {
       static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
+// A picture whose every pixel is one palette index although rays met objects:
+// its shading never reaches the mapping's first step (plate 2 under the
+// thesis profile, docs/prime/plates.md). Said on stderr, with what shows it.
+void noteOneIndex(const RenderResult& r) {
+  const auto& px = r.graph.pixels;
+  if (px.empty() || r.stats.hits == 0) return;
+  for (const std::int16_t v : px)
+    if (v != px.front()) return;
+  std::fprintf(stderr,
+               "prime: note: every pixel has palette index %d although rays met objects: the "
+               "shading stays below the palette's first step (docs/prime/plates.md, \"Plate 2 is "
+               "dark\"); --true-color-png FILE or --quantize METHOD shows the picture\n",
+               static_cast<int>(px.front()));
+}
+
 // The companion file beside a graph file (G7): what view and export need to
 // show it as the render did. Written after the graph file, each through
 // OutputFile; a companion that does not match its graph file's bytes is
@@ -351,6 +366,7 @@ void addTraceCommand(CLI::App& app, Action& action) {
       writePngs(result, camera, at, palette, *display, *png, *trueColourPng);
       if (!*quiet) {
         printSummary(result, target);
+        if (!quantizing) noteOneIndex(result);
         // One "wrote PATH" line per file written, as every command (issue 16).
         for (const std::string& f : {target, *png, *trueColourPng})
           if (!f.empty()) std::printf("wrote %s\n", f.c_str());

@@ -73,6 +73,33 @@ TEST(ThesisProfile, SummaryAndProbeShowTheShadowRays) {
   EXPECT_EQ(r.output.find("shadow rays"), std::string::npos) << r.output;
 }
 
+// Plate 2 under the thesis' model stays below the listing palette's first
+// step: every pixel one index (docs/prime/plates.md, "Plate 2 is dark"). The
+// trace says so, and what shows the picture; plate 3 (visible) says nothing.
+TEST(ThesisProfile, AOneIndexPictureIsPointedOut) {
+  prime::test::TempScene s;
+  fs::copy(fs::path(PRIME_SCENES) / "plate2", s.path(),
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  ASSERT_EQ(runPrime("model -q " + s.path().string()).status, 0);
+  const std::string out = " --screen 256 192 --out " + (s.path() / "g").string();
+  auto r = runPrime("trace " + s.path().string() + " --profile thesis" + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("note: every pixel has palette index 1 although rays met objects"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("--true-color-png FILE or --quantize METHOD"), std::string::npos);
+  r = runPrime("trace " + s.path().string() + " --profile thesis --quantize octree" + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("note: every pixel"), std::string::npos) << r.output;
+  r = runPrime("trace " + s.path().string() + out);  // the 1991 profile: a visible picture
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("note: every pixel"), std::string::npos) << r.output;
+  const Plate3 p;
+  r = runPrime("trace " + p.dir() + " --profile thesis" + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("note: every pixel"), std::string::npos) << r.output;
+}
+
 TEST(ThesisProfile, ThesisOptionsAreUsageErrorsElsewhere) {
   const Plate3 p;
   for (const char* bad : {"--light-radius 5", "--no-shadows", "--texel fresnel",
