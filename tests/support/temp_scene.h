@@ -48,4 +48,15 @@ class TempScene {
   std::filesystem::path root_;
 };
 
+#ifdef PRIME_TEST_DATA
+// Fills the scene with the sphere test scene's text inputs
+// (tests/data/prime/sphere) and returns its path.
+inline std::filesystem::path sphere(const TempScene& s) {
+  std::filesystem::copy(
+      std::filesystem::path(PRIME_TEST_DATA) / "sphere", s.path(),
+      std::filesystem::copy_options::recursive | std::filesystem::copy_options::overwrite_existing);
+  return s.path();
+}
+#endif
+
 }  // namespace prime::test

@@ -26,7 +26,7 @@ namespace {
 
 using test::runPrime;
 
-const fs::path kScenes = CGL_SCENES;
+const fs::path kShippedScenes = CGL_SCENES;
 
 fs::path tempDir() {
   std::random_device rd;
@@ -37,7 +37,7 @@ fs::path tempDir() {
 
 std::vector<std::string> shippedScenes() {
   std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(kScenes))
+  for (const auto& e : fs::directory_iterator(kShippedScenes))
     if (e.path().extension() == ".cgl" && e.path().stem().string().rfind("doc-", 0) != 0)
       out.push_back(e.path().stem().string());
   std::sort(out.begin(), out.end());
@@ -53,7 +53,7 @@ TEST(CglExportPov, EveryShippedSceneExportsAndPovRayRendersIt) {
   for (const std::string& name : names) {
     const fs::path pov = dir / (name + ".pov");
     const auto r =
-        runPrime("export-pov " + (kScenes / (name + ".cgl")).string() + " " + pov.string());
+        runPrime("export-pov " + (kShippedScenes / (name + ".cgl")).string() + " " + pov.string());
     ASSERT_EQ(r.status, 0) << name << ": " << r.output;
     ASSERT_TRUE(fs::exists(pov)) << name;
     // The million-facet fractals (fractal-9, fractal-10) export meshes of
@@ -99,8 +99,8 @@ TEST(CglBench, PrintsARowAndWritesTheCsv) {
   const fs::path dir = tempDir();
   const fs::path csv = dir / "bench.csv";
   const auto r =
-      runPrime("bench " + (kScenes / "ball.cgl").string() + " " +
-               (kScenes / "nine-cubes-boxed.cgl").string() +
+      runPrime("bench " + (kShippedScenes / "ball.cgl").string() + " " +
+               (kShippedScenes / "nine-cubes-boxed.cgl").string() +
                " --runs 1 --threads 1 --aalevel 0 --linear-search --csv " + csv.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("# prime bench (Waterloo CGL)"), std::string::npos) << r.output;

@@ -24,8 +24,6 @@ namespace {
 
 using test::runPrime;
 
-const fs::path kScenes = CGL_SCENES;
-
 // The document's copper (Appendix 1 section 8): its first Fresnel vector, the
 // normal reflectance its table was made from (CGL-Q106).
 const char* kCopper =
@@ -83,7 +81,7 @@ TEST(CglUtilities, CookWritesTheMetalsCopper) {
   // header, diffuse, 4 lines of D, specular m, 66 * 4 lines of F.
   const int lines = 1 + 1 + 4 + 1 + 66 * 4;
   const auto got = recordWords(text, "5 cook", lines);
-  const auto want = recordWords(fileText(kScenes / "metals.cgl"), "5 cook", lines);
+  const auto want = recordWords(fileText(fs::path(CGL_SCENES) / "metals.cgl"), "5 cook", lines);
   EXPECT_EQ(got.size(), 6u + 1u + 33u + 2u + 66u * 33u);  // header, diffuse, D, specular m, F
   expectSameNumbers(got, want);
   // The document's printed normal-colour-vector: 0.0223 first, 0.2403 last.

@@ -18,9 +18,8 @@ using ::testing::MatchesRegex;
 namespace fs = std::filesystem;
 using prime::test::runPrime;
 
-std::string sphere(const prime::test::TempScene& s) {
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+std::string modelledSphere(const prime::test::TempScene& s) {
+  prime::test::sphere(s);
   const auto r = runPrime("model " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   return s.path().string();
@@ -28,7 +27,7 @@ std::string sphere(const prime::test::TempScene& s) {
 
 TEST(FreeCameraTrace, HeaderAndPngFollowTheSize_T32) {
   prime::test::TempScene s;
-  const std::string dir = sphere(s);
+  const std::string dir = modelledSphere(s);
   const auto r =
       runPrime("trace --no-window -q " + dir + " --frame-listing-window --size 120 90 " + "--png " +
                s.path("shot.png").string() + " --true-color-png " + s.path("tc.png").string());
@@ -46,7 +45,7 @@ TEST(FreeCameraTrace, HeaderAndPngFollowTheSize_T32) {
 
 TEST(FreeCameraTrace, ListingDefaultIsUnchangedAndBadCamerasAreUsageErrors) {
   prime::test::TempScene s;
-  const std::string dir = sphere(s);
+  const std::string dir = modelledSphere(s);
   ASSERT_EQ(runPrime("trace --no-window -q " + dir).status, 0);
   const prime::io::GraphFile g = prime::io::readGraphFile(s.path("graph_scr").string());
   EXPECT_EQ(g.numPixAcross, 349);
@@ -71,7 +70,7 @@ TEST(FreeCameraTrace, ListingDefaultIsUnchangedAndBadCamerasAreUsageErrors) {
 
 TEST(Compare, ReportsDifferencesAndWritesThreePicturesSideBySide_T36) {
   prime::test::TempScene s;
-  const std::string dir = sphere(s);
+  const std::string dir = modelledSphere(s);
   const std::string png = s.path("cmp.png").string();
   auto r = runPrime("compare " + dir + " --b=\"--profile modern\" --png " + png +
                     " --divergence-samples 3 --frame-listing-window --size 80 60");
@@ -107,7 +106,7 @@ TEST(Compare, ReportsDifferencesAndWritesThreePicturesSideBySide_T36) {
 
 TEST(WalkBench, RunsHeadlessAndPrintsFrameRates) {
   prime::test::TempScene s;
-  const std::string dir = sphere(s);
+  const std::string dir = modelledSphere(s);
   const auto r = runPrime("walk " + dir + " --bench 2 --size 64 48 --threads 1");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("walk bench: "));

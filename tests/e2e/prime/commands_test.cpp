@@ -16,14 +16,9 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 using prime::test::CommandResult;
-CommandResult prime(const std::string& args) {
-  return prime::test::runPrime(args);
-}
+using prime::test::prime;
 
-void sphere(const prime::test::TempScene& s) {
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-}
+using prime::test::sphere;
 
 TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
   prime::test::TempScene s;

@@ -28,7 +28,7 @@ struct Outcome {
   std::string out, err;
 };
 
-Outcome prime(const std::vector<std::string>& args) {
+Outcome primeHeadless(const std::vector<std::string>& args) {
   std::vector<std::string> argv{PRIME_EXE};
   argv.insert(argv.end(), args.begin(), args.end());
   ChildProcess p(argv, kHeadless);
@@ -62,7 +62,7 @@ prime::Rgb8 shown(const std::string& palette, int value) {
 TEST(PrimeExport, ImageScreenAndFileAreas) {
   prime::test::TempScene d;
   prime::io::writeGraphFile(d.path("g").string(), smallGraph());
-  Outcome r = prime({"export", d.path("g").string(), d.path("image.png").string()});
+  Outcome r = primeHeadless({"export", d.path("g").string(), d.path("image.png").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(
       r.out,
@@ -75,10 +75,10 @@ TEST(PrimeExport, ImageScreenAndFileAreas) {
     for (int x = 0; x < 12; ++x)
       ASSERT_EQ(at(image, x, y), shown("listing", 40 * y + 23 * x - 60)) << x << "," << y;
 
-  ASSERT_EQ(
-      prime({"export", d.path("g").string(), d.path("screen.png").string(), "--area", "screen"})
-          .status,
-      0);
+  ASSERT_EQ(primeHeadless(
+                {"export", d.path("g").string(), d.path("screen.png").string(), "--area", "screen"})
+                .status,
+            0);
   const prime::Image8 screen = prime::readPng(d.path("screen.png").string());
   EXPECT_EQ(screen.width, 1024);
   EXPECT_EQ(screen.height, 768);
@@ -88,12 +88,13 @@ TEST(PrimeExport, ImageScreenAndFileAreas) {
 
   // Placed so that it overhangs the screen: the image area is clipped, the
   // file area is not.
-  r = prime({"export", d.path("g").string(), d.path("clip.png").string(), "--at", "1020", "764"});
+  r = primeHeadless(
+      {"export", d.path("g").string(), d.path("clip.png").string(), "--at", "1020", "764"});
   ASSERT_EQ(r.status, 0);
   EXPECT_THAT(r.err, HasSubstr("does not fit the 1024 x 768 screen"));
   EXPECT_EQ(prime::readPng(d.path("clip.png").string()).width, 4);
-  ASSERT_EQ(prime({"export", d.path("g").string(), d.path("file.png").string(), "--area", "file",
-                   "--at", "1020", "764"})
+  ASSERT_EQ(primeHeadless({"export", d.path("g").string(), d.path("file.png").string(), "--area",
+                           "file", "--at", "1020", "764"})
                 .status,
             0);
   EXPECT_EQ(prime::readPng(d.path("file.png").string()).width, 12);
@@ -102,56 +103,59 @@ TEST(PrimeExport, ImageScreenAndFileAreas) {
 TEST(PrimeExport, PalettesByNameByGraphTypeAndFromAFile) {
   prime::test::TempScene d;
   prime::io::writeGraphFile(d.path("vga").string(), smallGraph(0));
-  ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("a.png").string()}).status, 0);
+  ASSERT_EQ(primeHeadless({"export", d.path("vga").string(), d.path("a.png").string()}).status, 0);
   EXPECT_EQ(at(prime::readPng(d.path("a.png").string()), 3, 0),
             shown("vga", 9));  // graphType 0 -> vga
-  ASSERT_EQ(
-      prime({"export", d.path("vga").string(), d.path("b.png").string(), "--palette", "plate3"})
-          .status,
-      0);
+  ASSERT_EQ(primeHeadless(
+                {"export", d.path("vga").string(), d.path("b.png").string(), "--palette", "plate3"})
+                .status,
+            0);
   EXPECT_EQ(at(prime::readPng(d.path("b.png").string()), 3, 0), shown("plate3", 9));
 
   d.write("grey.pal", "prime-palette 1\nbase listing\nvalues dac\n9 10 20 30\n");
-  ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("c.png").string(), "--palette",
-                   d.path("grey.pal").string()})
+  ASSERT_EQ(primeHeadless({"export", d.path("vga").string(), d.path("c.png").string(), "--palette",
+                           d.path("grey.pal").string()})
                 .status,
             0);
   EXPECT_EQ(at(prime::readPng(d.path("c.png").string()), 3, 0),
             (prime::Rgb8{40, 81, 121}));  // 10, 20, 30 rounded
-  ASSERT_EQ(prime({"export", d.path("vga").string(), d.path("d.png").string(), "--palette",
-                   d.path("grey.pal").string(), "--dac", "replicate"})
+  ASSERT_EQ(primeHeadless({"export", d.path("vga").string(), d.path("d.png").string(), "--palette",
+                           d.path("grey.pal").string(), "--dac", "replicate"})
                 .status,
             0);
   EXPECT_EQ(at(prime::readPng(d.path("d.png").string()), 3, 0),
             (prime::Rgb8{40, 81, 121}));  // 40|0, 80|1, 120|1
 
   d.write("bad.pal", "prime-palette 1\nvalues dac\n0 0 0 70\n");
-  Outcome r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--palette",
-                     d.path("bad.pal").string()});
+  Outcome r = primeHeadless({"export", d.path("vga").string(), d.path("e.png").string(),
+                             "--palette", d.path("bad.pal").string()});
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.err,
               HasSubstr("bad.pal:3: blue: expected an integer 0..63 (values dac), found \"70\""));
   EXPECT_FALSE(d.exists("e.png"));
-  r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--palette", "sepia"});
+  r = primeHeadless(
+      {"export", d.path("vga").string(), d.path("e.png").string(), "--palette", "sepia"});
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(
       r.err,
       HasSubstr(
           "sepia: palette: expected a built-in palette (listing, plate3, vga) or a palette file"));
-  r = prime({"export", d.path("vga").string(), d.path("e.png").string(), "--dac", "nearest"});
+  r = primeHeadless(
+      {"export", d.path("vga").string(), d.path("e.png").string(), "--dac", "nearest"});
   EXPECT_NE(r.status, 0);
 }
 
 TEST(PrimeExport, BrokenAndPartialGraphFiles) {
   prime::test::TempScene d;
   d.writeBytes("short", {1, 0, 11, 0});
-  Outcome r = prime({"export", d.path("short").string(), d.path("x.png").string()});
+  Outcome r = primeHeadless({"export", d.path("short").string(), d.path("x.png").string()});
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.err, HasSubstr("short (byte 4): numPixDown"));
   auto bytes = prime::io::toBytes(smallGraph());
   bytes.resize(6 + 2 * 12 * 2 + 2 * 5);  // two rows and five pixels
   d.writeBytes("g.partial", bytes);
-  r = prime({"export", d.path("g.partial").string(), d.path("p.png").string(), "--area", "file"});
+  r = primeHeadless(
+      {"export", d.path("g.partial").string(), d.path("p.png").string(), "--area", "file"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("partial graph file (an aborted trace): 2 of 6 rows"));
   const prime::Image8 img = prime::readPng(d.path("p.png").string());
@@ -166,18 +170,18 @@ TEST(PrimeExport, TruncatedGraphFileIsRefused) {
   auto bytes = prime::io::toBytes(smallGraph());
   bytes.resize(6 + 2 * 12 * 2 + 2 * 5);  // two rows and five pixels of 6 x 12
   d.writeBytes("graph_scr", bytes);
-  Outcome r = prime({"export", d.path("graph_scr").string(), d.path("x.png").string()});
+  Outcome r = primeHeadless({"export", d.path("graph_scr").string(), d.path("x.png").string()});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("graph_scr (byte 64): pixel data"));
   EXPECT_THAT(r.err, HasSubstr("29 whole pixels: the file is truncated"));
   EXPECT_FALSE(std::filesystem::exists(d.path("x.png")));
   bytes.resize(7);
   d.writeBytes("seven", bytes);
-  r = prime({"export", d.path("seven").string(), d.path("y.png").string()});
+  r = primeHeadless({"export", d.path("seven").string(), d.path("y.png").string()});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("the file is truncated"));
   EXPECT_FALSE(std::filesystem::exists(d.path("y.png")));
-  r = prime({"view", d.path("seven").string(), "--no-window"});
+  r = primeHeadless({"view", d.path("seven").string(), "--no-window"});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_THAT(r.err, HasSubstr("the file is truncated"));
 }
@@ -192,12 +196,12 @@ TEST(PrimeDiff, ExitStatusCountsAndImage) {
   prime::io::writeGraphFile(d.path("b").string(), b);
   prime::io::writeGraphFile(d.path("a2").string(), a);
 
-  Outcome r = prime({"diff", d.path("a").string(), d.path("a2").string()});
+  Outcome r = primeHeadless({"diff", d.path("a").string(), d.path("a2").string()});
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("pixels differing: 0 of 72 (0.0000%)"));
   EXPECT_THAT(r.out, HasSubstr("\nidentical\n"));
 
-  r = prime(
+  r = primeHeadless(
       {"diff", d.path("a").string(), d.path("b").string(), "--image", d.path("diff.png").string()});
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_THAT(
@@ -216,14 +220,14 @@ TEST(PrimeDiff, ExitStatusCountsAndImage) {
   EXPECT_EQ(at(img, 1, 1), (prime::Rgb8{255, 0, 255}));
   EXPECT_EQ(at(img, 2, 1), (prime::Rgb8{0, 255, 255}));
 
-  r = prime({"diff", "-q", d.path("a").string(), d.path("b").string()});
+  r = primeHeadless({"diff", "-q", d.path("a").string(), d.path("b").string()});
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.out, "");
 
   prime::io::GraphFile other = a;
   other.graphType = 0;
   prime::io::writeGraphFile(d.path("c").string(), other);
-  r = prime({"diff", d.path("a").string(), d.path("c").string()});
+  r = primeHeadless({"diff", d.path("a").string(), d.path("c").string()});
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.out, HasSubstr("graphType differs: 1 and 0"));
 
@@ -231,51 +235,48 @@ TEST(PrimeDiff, ExitStatusCountsAndImage) {
   small.numPixDown = 4;
   small.pixels.resize(60);
   prime::io::writeGraphFile(d.path("s").string(), small);
-  r = prime({"diff", d.path("a").string(), d.path("s").string()});
+  r = primeHeadless({"diff", d.path("a").string(), d.path("s").string()});
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.out, HasSubstr("sizes differ: no pixels compared"));
 
-  r = prime({"diff", d.path("a").string(), d.path("missing").string()});
+  r = primeHeadless({"diff", d.path("a").string(), d.path("missing").string()});
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("missing"));
 }
 
 TEST(PrimePalette, PrintsALoadableTableAndLists) {
   prime::test::TempScene d;
-  Outcome r = prime({"palette"});
+  Outcome r = primeHeadless({"palette"});
   ASSERT_EQ(r.status, 0);
   EXPECT_THAT(r.out, HasSubstr("prime-palette 1\nname listing\nvalues dac\n"));
   EXPECT_THAT(r.out, HasSubstr("\n  1 20 44 15  # #51b23d\n"));
   EXPECT_THAT(r.out, HasSubstr("\n255 56 56 48  # #e3e3c2\n"));
   d.write("copy.pal", r.out);
-  r = prime({"palette", d.path("copy.pal").string()});
+  r = primeHeadless({"palette", d.path("copy.pal").string()});
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.out, HasSubstr("\n  1 20 44 15  # #51b23d\n"));
-  r = prime({"palette", "--list"});
+  r = primeHeadless({"palette", "--list"});
   EXPECT_THAT(r.out, HasSubstr("plate3\tColour Plate 3"));
 }
 
 TEST(PrimeView, HeadlessSaysSoAndSucceeds) {
   prime::test::TempScene d;
   prime::io::writeGraphFile(d.path("g").string(), smallGraph());
-  Outcome r = prime({"view", d.path("g").string()});
+  Outcome r = primeHeadless({"view", d.path("g").string()});
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.err, HasSubstr("running headless (no DISPLAY): nothing to show"));
-  r = prime({"view", "--no-window", d.path("g").string()});
+  r = primeHeadless({"view", "--no-window", d.path("g").string()});
   EXPECT_THAT(r.err, HasSubstr("running headless (--no-window)"));
 }
 
-fs::path sphere(const prime::test::TempScene& s) {
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-  return s.path();
-}
+using prime::test::sphere;
 
 TEST(PrimeTrace, HeadlessPngTrueColourAndStalePartialRemoved) {
   prime::test::TempScene s;
   sphere(s);
   s.write("graph_scr.partial", "stale");
-  Outcome r = prime({"trace", "--model", s.path().string(), "--png", s.path("a.png").string(),
+  Outcome r =
+      primeHeadless({"trace", "--model", s.path().string(), "--png", s.path("a.png").string(),
                      "--true-color-png", s.path("t.png").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("prime: running headless (no DISPLAY)"));
@@ -290,8 +291,8 @@ TEST(PrimeTrace, HeadlessPngTrueColourAndStalePartialRemoved) {
   EXPECT_EQ(at(tc, 0, 0), (prime::Rgb8{0, 0, 0}));
   EXPECT_EQ(at(tc, 174, 384), (prime::Rgb8{102, 51, 26}));  // (0.4, 0.2, 0.1) * 255 = 102, 51, 25.5
 
-  r = prime({"trace", s.path().string(), "-q", "--no-window", "--png", s.path("f.png").string(),
-             "--png-area", "file", "--palette", "plate3"});
+  r = primeHeadless({"trace", s.path().string(), "-q", "--no-window", "--png",
+                     s.path("f.png").string(), "--png-area", "file", "--palette", "plate3"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, Not(HasSubstr("headless")));  // -q
   const prime::Image8 file = prime::readPng(s.path("f.png").string());
@@ -306,7 +307,7 @@ TEST(PrimeTrace, HeadlessPngTrueColourAndStalePartialRemoved) {
 TEST(PrimeTrace, CtrlCAbortsHeadlessKeepsThePreviousRenderAndWritesAPartialFile) {
   prime::test::TempScene s;
   sphere(s);
-  ASSERT_EQ(prime({"model", s.path().string()}).status, 0);
+  ASSERT_EQ(primeHeadless({"model", s.path().string()}).status, 0);
   s.write("graph_scr", "an older, complete-looking render");
   // Sixteen times the pixels on one thread: long enough to interrupt.
   ChildProcess p(

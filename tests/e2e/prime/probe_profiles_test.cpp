@@ -25,9 +25,7 @@ using ::testing::Not;
 namespace fs = std::filesystem;
 
 using prime::test::CommandResult;
-CommandResult prime(const std::string& args) {
-  return prime::test::runPrime(args);
-}
+using prime::test::prime;
 
 // The first hit of a probe's --json output (the primary ray's), if any.
 struct FirstHit {
@@ -66,11 +64,14 @@ TEST(PrimeProbe, ModernProfileIsProbedForReal) {
 
   // The first pixel of a coarse grid where both profiles hit something but
   // not the same surface point: the 1991 profile takes the first node of the
-  // object's list (K30), the modern one the nearest surface ahead.
+  // object's list (K30), the modern one the nearest surface ahead. Only the
+  // pixels the two renders colour differently are probed (two processes per
+  // pixel: slow under the sanitizers).
   int x = -1, y = -1;
   std::string p1991, pModern;
   for (int j = 0; j < g1991.height() && x < 0; j += 16)
     for (int i = 0; i < g1991.width() && x < 0; i += 16) {
+      if (g1991.at(i, j) == gModern.at(i, j)) continue;
       const std::string at = " --pixel " + std::to_string(i) + " " + std::to_string(j);
       const CommandResult a = prime("probe --json" + screen + at + " " + dir);
       const CommandResult b = prime("probe --json --profile modern" + screen + at + " " + dir);

@@ -16,9 +16,7 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 using prime::test::CommandResult;
 
-CommandResult prime(const std::string& args) {
-  return prime::test::runPrime(args);
-}
+using prime::test::prime;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

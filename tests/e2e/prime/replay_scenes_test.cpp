@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "legacy_io/prime/graph_file.h"
+#include "tests/support/run_prime.h"
 
 namespace {
 
@@ -63,19 +64,8 @@ std::vector<std::uint8_t> readBytes(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-struct CommandRun {
-  int status = 0;
-  std::string output;
-};
-
-CommandRun prime(const std::string& args) {
-  CommandRun r;
-  FILE* p = popen((std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) r.output.append(buf.data(), n);
-  r.status = WEXITSTATUS(pclose(p));
-  return r;
-}
+using prime::test::CommandResult;
+using prime::test::prime;
 
 // A private copy of the scene's text inputs (tests run in parallel, and the
 // scene directory may hold databases from a user's own runs).
@@ -188,7 +178,7 @@ TEST_P(ReplayScene, ModelWritesTheGoldenDatabases) {
   SceneCopy copy(scene, "db");
   if (command(scene).rfind("plate1", 0) == 0)
     GTEST_SKIP() << "plate1 has no databases: it is not ray traced";
-  const CommandRun m = prime("model " + copy.path().string());
+  const CommandResult m = prime("model " + copy.path().string());
   ASSERT_EQ(m.status, 0) << m.output;
   const fs::path golden = kGolden / scene / "db";
   const auto now = databases(copy.path());
@@ -229,7 +219,7 @@ TEST_P(ReplayScene, RenderWritesTheGoldenGraphFile) {
   const std::size_t space = cmd.find(' ');
   const std::string verb = cmd.substr(0, space),
                     flags = space == std::string::npos ? "" : cmd.substr(space);
-  CommandRun r;
+  CommandResult r;
   if (verb == "plate1") {
     r = prime(verb + " " + copy.path().string() + flags + " -q --out " + out.string());
   } else {

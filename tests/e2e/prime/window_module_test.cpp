@@ -45,11 +45,7 @@ Outcome run(const std::vector<std::string>& argv, std::map<std::string, std::str
 const std::map<std::string, std::string> kNoSuchDisplay{{"DISPLAY", ":65533"},
                                                         {"SDL_VIDEODRIVER", "x11"}};
 
-fs::path sphere(const prime::test::TempScene& s) {
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-  return s.path();
-}
+using prime::test::sphere;
 
 // Which shared objects the dynamic loader opened, as LD_DEBUG=files tells
 // it on stderr ("file=libc.so.6 [0];  needed by ...", "file=... [0];

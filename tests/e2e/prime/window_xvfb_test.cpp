@@ -286,11 +286,7 @@ TEST_F(XvfbTest, ZoomAndScreenshotKeys) {
   EXPECT_EQ(view.wait(20000).value_or(-1), 0);
 }
 
-fs::path sphere(const prime::test::TempScene& s) {
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-  return s.path();
-}
+using prime::test::sphere;
 
 TEST_F(XvfbTest, TraceDrawsEachPixelWherePutPixelPutItAndWaitsForEsc) {
   prime::test::TempScene s;

@@ -18,8 +18,6 @@
 namespace prime::cgl {
 namespace {
 
-const std::string kScenes = CGL_SCENES;
-
 // A 4 x 4 graph x = i, z = j on the plane y = height(i, j).
 std::vector<Vec3> grid(int nu, int nv, double (*height)(int, int)) {
   std::vector<Vec3> c;
@@ -406,7 +404,7 @@ TEST(CglSplineScene, TooFewVerticesForTheEndConditionAreRefusedAtTheNode) {
 }
 
 TEST(CglSplineScene, TheDocumentsTubeReadsAndRenders) {
-  const SceneFile f = readSceneFile(kScenes + "/doc-spline-tube.cgl");
+  const SceneFile f = readSceneFile(CGL_SCENES "/doc-spline-tube.cgl");
   const Scene s = buildScene(f);
   ASSERT_EQ(s.splines.size(), 1u);
   const SplineSurface& tube = s.splines[0];
@@ -457,7 +455,7 @@ TEST(CglSplineSurface, VectorEvaluationIsTheScalarSumBitForBit) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::uint64_t points = 0;
   for (const char* name : {"spline-bump-single", "spline-donut", "spline-mask", "spline-vases"}) {
-    const Scene scene = buildScene(readSceneFile(kScenes + "/" + name + ".cgl"));
+    const Scene scene = buildScene(readSceneFile(std::string(CGL_SCENES) + "/" + name + ".cgl"));
     for (const SplineSurface& s : scene.splines) {
       std::vector<std::pair<double, double>> at;
       for (int k = 0; k < 5000; ++k)
@@ -506,7 +504,7 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (const char* name : {"spline-bump-single", "spline-bump-double", "spline-bump-triple",
                            "spline-donut", "spline-mask", "spline-vases", "doc-spline-tube"}) {
-    const SceneFile f = readSceneFile(kScenes + "/" + name + ".cgl");
+    const SceneFile f = readSceneFile(std::string(CGL_SCENES) + "/" + name + ".cgl");
     const Scene scene = buildScene(f);
     ASSERT_FALSE(scene.splines.empty()) << name;
     std::vector<Ray> rays;
@@ -571,7 +569,7 @@ TEST(CglSplineIntersect, EveryPacketLayoutIsTheDocumentsWalkBitForBit) {
   std::uint64_t hits = 0;
   for (const char* name : {"spline-bump-single", "spline-bump-triple", "spline-donut",
                            "spline-mask", "spline-vases", "doc-spline-tube"}) {
-    const SceneFile f = readSceneFile(kScenes + "/" + name + ".cgl");
+    const SceneFile f = readSceneFile(std::string(CGL_SCENES) + "/" + name + ".cgl");
     const Scene scene = buildScene(f);
     ASSERT_FALSE(scene.splines.empty()) << name;
     const auto& p = f.program;

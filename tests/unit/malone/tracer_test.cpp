@@ -24,8 +24,6 @@ using test::sceneOf;
 using test::unitVec;
 using ::testing::HasSubstr;
 
-const std::string kScenes = MALONE_SCENES;
-
 void expectRgb(const Rgb& got, const Rgb& want, double tol = 1e-12) {
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], tol) << "channel " << k;
 }
@@ -56,7 +54,7 @@ Vec3 probedDirection(const std::string& probe, const std::string& what) {
 
 TEST(MaloneTracer, PrimaryRay) {
   // The document's viewer: e = (0,2,3), l = 0, x = (1,0,0), y = (0,1,0), 256 x 256.
-  const Scene s = buildScene(readSceneFile(kScenes + "/doc-scene.mal"), "doc");
+  const Scene s = buildScene(readSceneFile(MALONE_SCENES "/doc-scene.mal"), "doc");
   const Tracer tracer(s, {});
   const double r13 = std::sqrt(13.0);
   const Vec3 f{0, -2 / r13, -3 / r13};  // (l - e)/|l - e|
@@ -83,7 +81,7 @@ TEST(MaloneTracer, DocumentSceneCentrePixel) {
   // (-2,5,2): l^2 = 4 + 25 + 4 = 33, s = (-2,5,2)/sqrt 33, d.s = 5/sqrt 33;
   // k_d = 1, colour 1, k_s = 0 (no specular), no ambient. With r^-2 (101):
   // 5 / (33 sqrt 33) = 0.0263752..., byte round(6.73) = 7 (notes 4.2: 0.02638).
-  SceneFile f = readSceneFile(kScenes + "/doc-scene.mal");
+  SceneFile f = readSceneFile(MALONE_SCENES "/doc-scene.mal");
   Scene s = buildScene(f, "doc");
   TraceStats stats;
   const Rgb c = Tracer(s, {}).pixel(128, 128, stats);
@@ -378,7 +376,7 @@ TEST(MaloneTracer, EqualTKeepsTheEarlierObject) {
 // ---- The debug renders (notes 5.2): no lights, no recursion.
 
 TEST(MaloneDebug, DepthColourNormal) {
-  SceneFile f = readSceneFile(kScenes + "/doc-scene.mal");
+  SceneFile f = readSceneFile(MALONE_SCENES "/doc-scene.mal");
   f.surfaces[0].colour = {0.5, 0.25, 1};
   f.surfaces[0].kd = 0.8;
   f.surfaces[0].ks = 0.5;  // would reflect in a normal render

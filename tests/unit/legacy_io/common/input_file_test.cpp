@@ -16,37 +16,17 @@
 #include "legacy_io/common/bytes.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/text_reader.h"
+#include "tests/support/error_message.h"
+#include "tests/support/temp_dir.h"
 
 namespace fs = std::filesystem;
 
 namespace prime::io {
 namespace {
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("prime-input-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+using test::TempDir;
 
- private:
-  fs::path path_;
-};
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::messageOf;
 
 TEST(InputFile, ReadsARegularFileWhole) {
   TempDir dir;

@@ -18,31 +18,16 @@
 
 #include "legacy_io/common/bytes.h"
 #include "legacy_io/common/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace prime::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("prime-output-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
+using test::TempDir;
 
- private:
-  fs::path path_;
-};
-
-std::string read(const fs::path& p) {
+std::string contents(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
@@ -65,8 +50,8 @@ TEST(OutputFile, PlantedLinksAtTheOldTemporaryNamesAreNeverFollowed) {
     fs::create_symlink(victim, target.string() + suffix);
   const std::vector<std::uint8_t> bytes{1, 2, 3, 4};
   writeFileAtomically(target.string(), bytes);
-  EXPECT_EQ(read(victim), "precious");
-  EXPECT_EQ(read(target), std::string("\x01\x02\x03\x04"));
+  EXPECT_EQ(contents(victim), "precious");
+  EXPECT_EQ(contents(target), std::string("\x01\x02\x03\x04"));
   EXPECT_EQ(entries(dir.path()), 1 + 1 + 4);  // victim, out.bin, the four links: no temporary left
 }
 
@@ -133,7 +118,7 @@ TEST(OutputFile, AnUncommittedTemporaryIsRemovedAndTheOldFileKept) {
     out.write(std::string_view("new, but never committed"));
     EXPECT_TRUE(fs::exists(out.temporary()));
   }  // an exception or an abort would leave here the same way
-  EXPECT_EQ(read(target), "old");
+  EXPECT_EQ(contents(target), "old");
   EXPECT_EQ(entries(dir.path()), 1);
 }
 
@@ -143,9 +128,9 @@ TEST(OutputFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
   std::ofstream(victim) << "precious";
   fs::create_symlink(victim, target);
   writeFileAtomically(target.string(), std::vector<std::uint8_t>{'n', 'e', 'w'});
-  EXPECT_EQ(read(victim), "precious");
+  EXPECT_EQ(contents(victim), "precious");
   EXPECT_FALSE(fs::is_symlink(target));
-  EXPECT_EQ(read(target), "new");
+  EXPECT_EQ(contents(target), "new");
 }
 
 TEST(OutputFile, MegabytesWrittenBehindArriveWholeAndOnlyAtCommit) {
@@ -167,7 +152,7 @@ TEST(OutputFile, MegabytesWrittenBehindArriveWholeAndOnlyAtCommit) {
     EXPECT_GE(fs::file_size(out.temporary()), 3u * 1024 * 1024);  // handed over, not yet renamed
     out.commit();
   }
-  EXPECT_EQ(read(target), expected);
+  EXPECT_EQ(contents(target), expected);
   EXPECT_EQ(entries(dir.path()), 1);
 }
 

@@ -20,29 +20,15 @@
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/common/run_inputs.h"
 #include "legacy_io/common/text_reader.h"
+#include "tests/support/error_message.h"
+#include "tests/support/temp_dir.h"
 
 namespace prime::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("prime-writes-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 void put(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -56,14 +42,7 @@ int filesIn(const fs::path& dir) {
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
   return n;
 }
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::messageOf;
 
 // A pid that no process has: a child that has exited and been reaped.
 pid_t deadPid() {
@@ -95,8 +74,8 @@ TEST(OutputNamesInput, ByAnotherNameAHardLinkOrASymbolicLink) {
   fs::create_symlink(d / "in", d / "soft");
   const RunInputs run;
   readInputFile(d / "in");
-  for (const std::string& out : {d / "sub/../in", d / "hard", d / "soft"})
-    EXPECT_NE(messageOf([&] { checkOutputPath(out); }).find("is the input " + d / "in"),
+  for (const fs::path& out : {d / "sub/../in", d / "hard", d / "soft"})
+    EXPECT_NE(messageOf([&] { checkOutputPath(out); }).find("is the input " + (d / "in").string()),
               std::string::npos)
         << out;
   EXPECT_EQ(get(d / "in"), "x");

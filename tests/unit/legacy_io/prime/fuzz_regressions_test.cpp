@@ -110,7 +110,7 @@ TEST(FuzzRegressions, DumpOfDeepChain) {
 }
 
 // A valid scene to break in one place (as in bad_input_test.cpp).
-void goodScene(const test::TempScene& s) {
+void goodCopyScene(const test::TempScene& s) {
   s.write("obj/H1.txt", "0.1 0.2 0.3 0.4 0.5 0.999 2 2 1.5\n");
   s.write("obj/D1.txt", "3\n- 1 2\nB 1\nS 1\nNULL\n");
   s.write("prim/B1.txt", "B\n100 100 100\n0 0 0\n0 0 0\n0 0 0\n1 1 1 1 1 1 1 1 1 1 1 1\n0\n");
@@ -127,7 +127,7 @@ void goodScene(const test::TempScene& s) {
 TEST(FuzzRegressions, CopyObjDestinationMustNotReplaceOtherFiles) {
   for (const std::string dest : {"Copy", "List", "D1.txt", "H1.TXT"}) {
     test::TempScene s;
-    goodScene(s);
+    goodCopyScene(s);
     s.write("Model.txt", "AddObj d1.txt\nAddToObjList 1\nCopyObj O1 " + dest + " c.txt\n");
     const std::string msg =
         errorOf([&] { writeModel(SceneDir(s.path()), buildModel(SceneDir(s.path()))); });
@@ -147,7 +147,7 @@ TEST(FuzzRegressions, CopyObjDestinationMustNotReplaceOtherFiles) {
 // the limit is checked before each copy, at the O entry's line.
 TEST(FuzzRegressions, ObjectCopiesCheckTheEntryLimitBeforeCopying) {
   test::TempScene s;
-  goodScene(s);
+  goodCopyScene(s);
   std::string d1 = "20000\n";
   for (int i = 0; i < 19999; ++i)
     d1 += "+ " + std::to_string(i + 1) + " " + std::to_string(i + 1) + "\n";
@@ -170,7 +170,7 @@ TEST(FuzzRegressions, ObjectCopiesCheckTheEntryLimitBeforeCopying) {
 // bytes.
 TEST(FuzzRegressions, OverlongFileNameIsAnInputError) {
   test::TempScene s;
-  goodScene(s);
+  goodCopyScene(s);
   s.write("Model.txt", "AddMap " + std::string(300, 'a') + ".txt\n");
   EXPECT_THAT(
       errorOf([&] { buildModel(SceneDir(s.path())); }),

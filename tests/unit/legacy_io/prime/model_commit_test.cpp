@@ -14,6 +14,7 @@
 
 #include "legacy_io/common/run_inputs.h"
 #include "legacy_io/prime/model_builder.h"
+#include "tests/support/error_message.h"
 #include "tests/support/temp_scene.h"
 
 namespace prime::io {
@@ -46,14 +47,7 @@ Files databases(const test::TempScene& s, bool* temporaries = nullptr) {
   return f;
 }
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::messageOf;
 
 class ModelCommit : public ::testing::Test {
  protected:

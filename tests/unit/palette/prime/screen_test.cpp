@@ -108,7 +108,7 @@ TEST(ScreenLine, ClippedAgainstTheScreenWithoutChangingWhichPixelsAreOn) {
   EXPECT_TRUE(lit(huge).empty());
 }
 
-io::GraphFile graph(int across, int down, std::int16_t value) {
+io::GraphFile graphOf(int across, int down, std::int16_t value) {
   io::GraphFile g;
   g.numPixAcross = static_cast<std::int16_t>(across);
   g.numPixDown = static_cast<std::int16_t>(down);
@@ -121,7 +121,7 @@ TEST(GraphOnScreen, TheListingsFileLandsAtColumn675AndLosesItsLastColumnAndRow) 
   EXPECT_EQ(listingPlacement(1024, 768).top, 0);
   EXPECT_EQ(listingPlacement(640, 480).left, 422);  // (int)422.4
   Screen s;
-  const io::GraphFile g = graph(349, 768, 109);  // 350 x 769 pixels (K22)
+  const io::GraphFile g = graphOf(349, 768, 109);  // 350 x 769 pixels (K22)
   drawGraph(s, g, listingPlacement(1024, 768));
   EXPECT_EQ(graphArea(s, g, {675, 0}), (Rect{675, 0, 349, 768}));
   EXPECT_EQ(s.getPixel(674, 0), 0);
@@ -141,8 +141,8 @@ TEST(GraphOnScreen, RowsAndPartialFiles) {
   drawGraphRow(s, {0, -3}, 0, row);
   EXPECT_EQ(lit(s).size(), 2u);
   Screen t(10, 10);
-  io::GraphFile g = graph(2, 2, 7);  // 3 x 3
-  drawGraph(t, g, {0, 0}, 4);        // only the first 4 pixels: row 0 and one of row 1
+  io::GraphFile g = graphOf(2, 2, 7);  // 3 x 3
+  drawGraph(t, g, {0, 0}, 4);          // only the first 4 pixels: row 0 and one of row 1
   EXPECT_EQ(lit(t), (Pixels{{0, 0}, {1, 0}, {2, 0}, {0, 1}}));
   EXPECT_TRUE(graphArea(t, g, {20, 0}).empty());
   EXPECT_EQ(graphArea(t, g, {-1, 8}), (Rect{0, 8, 2, 2}));

@@ -24,34 +24,12 @@
 #include <vector>
 
 #include "src/prime/geom/interval_list.h"
+#include "tests/unit/prime/geom/tlist_builders.h"
 
 namespace prime {
 namespace {
 
-Vec3 nIn(int prim) {
-  return {static_cast<double>(prim), 1.0, 0.0};
-}
-Vec3 nOut(int prim) {
-  return {static_cast<double>(prim), 2.0, 0.0};
-}
-TNode en(double t, int prim) {
-  return TNode{t, prim, kSurfOut, nIn(prim)};
-}
-TNode ex(double t, int prim) {
-  return TNode{t, prim, kSurfIn, nOut(prim)};
-}
-
-struct Span {
-  double t0;
-  double t1;
-  int prim;
-};
-// A list built by hand as IntersectPrim/AddToTList and Add() would chain it.
-TList L(std::initializer_list<Span> spans) {
-  TList l;
-  for (const Span& s : spans) l.addPair(s.t0, s.t1, nIn(s.prim), nOut(s.prim), s.prim);
-  return l;
-}
+using namespace tlist_builders;
 
 using Op = void (*)(TList&, TList&);
 TList run(Op op, TList a, TList b) {

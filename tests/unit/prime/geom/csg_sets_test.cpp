@@ -20,39 +20,18 @@
 #include <vector>
 
 #include "src/prime/geom/interval_list.h"
+#include "tests/unit/prime/geom/tlist_builders.h"
 
 namespace prime {
 namespace {
 
-Vec3 nIn(int prim) {
-  return {static_cast<double>(prim), 1.0, 0.0};
-}
-Vec3 nOut(int prim) {
-  return {static_cast<double>(prim), 2.0, 0.0};
-}
-TNode en(double t, int prim) {
-  return TNode{t, prim, kSurfOut, nIn(prim)};
-}
-TNode ex(double t, int prim) {
-  return TNode{t, prim, kSurfIn, nOut(prim)};
-}
+using namespace tlist_builders;
 // A node of the subtracted list B as a difference outputs it (outward convention).
 TNode flippedEntryAsExit(double t, int prim) {
   return TNode{t, prim, kSurfIn, -nIn(prim)};
 }
 TNode flippedExitAsEntry(double t, int prim) {
   return TNode{t, prim, kSurfOut, -nOut(prim)};
-}
-
-struct Span {
-  double t0;
-  double t1;
-  int prim;
-};
-TList L(std::initializer_list<Span> spans) {
-  TList l;
-  for (const Span& s : spans) l.addPair(s.t0, s.t1, nIn(s.prim), nOut(s.prim), s.prim);
-  return l;
 }
 
 bool table31(SetOp op, bool left, bool right) {

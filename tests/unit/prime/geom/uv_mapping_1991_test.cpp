@@ -303,7 +303,7 @@ TEST(UvCone, InsideAndOutside) {
 //          u = 1.25 (z - y/2)/(z - 0.5), v = 1 - 2z for z < 0.5
 //          (kA = 0.5 + z, kB = 2z).
 const double kRho = kPyramidPlaneA / kPyramidPlaneB;
-constexpr double kPyrTol = 1e-8;
+constexpr double kUvPyrTol = 1e-8;
 
 TEST(UvPyramid, Base) {
   expectUvs(getUVPyramid1991({0.25, 0.0, 0.75}), 0.25, 0.75, 4);
@@ -314,45 +314,45 @@ TEST(UvPyramid, Base) {
 
 TEST(UvPyramid, Front) {
   // (0.5, 0.5, 0.5rho): u = (0.5-0.25)/0.5 = 0.5, v = 0.5.
-  expectUvs(getUVPyramid1991({0.5, 0.5, 0.5 * kRho}), 0.5, 0.5, 0, kPyrTol);
+  expectUvs(getUVPyramid1991({0.5, 0.5, 0.5 * kRho}), 0.5, 0.5, 0, kUvPyrTol);
   // (0.25, 0.25, 0.25rho): u = 0.125/0.75 = 1/6, v = 0.75.
-  expectUvs(getUVPyramid1991({0.25, 0.25, 0.25 * kRho}), 1.0 / 6.0, 0.75, 0, kPyrTol);
+  expectUvs(getUVPyramid1991({0.25, 0.25, 0.25 * kRho}), 1.0 / 6.0, 0.75, 0, kUvPyrTol);
 }
 
 TEST(UvPyramid, RightAsPrinted) {
   // (1-0.5rho, 0.5, 0.3): u = 1.25*0.05/(-0.2) = -0.3125; v: kA = 0.8,
   // kB = 0.6, tmp = 0.2, v = 1 - 0.6 = 0.4.
-  expectUvs(getUVPyramid1991({1.0 - 0.5 * kRho, 0.5, 0.3}), -0.3125, 0.4, 1, kPyrTol);
+  expectUvs(getUVPyramid1991({1.0 - 0.5 * kRho, 0.5, 0.3}), -0.3125, 0.4, 1, kUvPyrTol);
   // (1-0.25rho, 0.25, 0.2): u = 1.25*(0.2-0.125)/(-0.3) = -0.3125; v = 0.6.
-  expectUvs(getUVPyramid1991({1.0 - 0.25 * kRho, 0.25, 0.2}), -0.3125, 0.6, 1, kPyrTol);
+  expectUvs(getUVPyramid1991({1.0 - 0.25 * kRho, 0.25, 0.2}), -0.3125, 0.6, 1, kUvPyrTol);
 }
 
 TEST(UvPyramid, Back) {
   // (0.5, 0.5, 1-0.5rho): u = (1-0.5-0.25)/0.5 = 0.5, v = 0.5.
-  expectUvs(getUVPyramid1991({0.5, 0.5, 1.0 - 0.5 * kRho}), 0.5, 0.5, 2, kPyrTol);
+  expectUvs(getUVPyramid1991({0.5, 0.5, 1.0 - 0.5 * kRho}), 0.5, 0.5, 2, kUvPyrTol);
   // (0.75, 0.25, 1-0.25rho): u = 0.125/0.75 = 1/6, v = 0.75.
-  expectUvs(getUVPyramid1991({0.75, 0.25, 1.0 - 0.25 * kRho}), 1.0 / 6.0, 0.75, 2, kPyrTol);
+  expectUvs(getUVPyramid1991({0.75, 0.25, 1.0 - 0.25 * kRho}), 1.0 / 6.0, 0.75, 2, kUvPyrTol);
 }
 
 TEST(UvPyramid, Left) {
   // (0.5rho, 0.5, 0.5): u = (1-0.5-0.25)/0.5 = 0.5, v = 0.5.
-  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 0.5}), 0.5, 0.5, 3, kPyrTol);
+  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 0.5}), 0.5, 0.5, 3, kUvPyrTol);
   // (0.25rho, 0.25, 0.25): u = 0.625/0.75 = 5/6, v = 0.75.
-  expectUvs(getUVPyramid1991({0.25 * kRho, 0.25, 0.25}), 5.0 / 6.0, 0.75, 3, kPyrTol);
+  expectUvs(getUVPyramid1991({0.25 * kRho, 0.25, 0.25}), 5.0 / 6.0, 0.75, 3, kUvPyrTol);
 }
 
 TEST(UvPyramid, SlantEdgesTakeTheFirstFaceInListingOrder) {
   // front/right: front. u = (0.75-0.25)/0.5 = 1, v = 0.5.
-  expectUvs(getUVPyramid1991({1.0 - 0.5 * kRho, 0.5, 0.5 * kRho}), 1.0, 0.5, 0, kPyrTol);
+  expectUvs(getUVPyramid1991({1.0 - 0.5 * kRho, 0.5, 0.5 * kRho}), 1.0, 0.5, 0, kUvPyrTol);
   // right/back: right. u = 1.25*(0.75-0.25)/0.25 = 2.5 (v is ~0 there: the
   // quadratic's two candidates meet, so its sign is a rounding matter).
   const UvSurface rb = getUVPyramid1991({1.0 - 0.5 * kRho, 0.5, 1.0 - 0.5 * kRho});
   EXPECT_EQ(rb.surface, 1);
-  EXPECT_NEAR(rb.u, 2.5, kPyrTol);
+  EXPECT_NEAR(rb.u, 2.5, kUvPyrTol);
   // back/left: back. u = (1-0.25-0.25)/0.5 = 1, v = 0.5.
-  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 1.0 - 0.5 * kRho}), 1.0, 0.5, 2, kPyrTol);
+  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 1.0 - 0.5 * kRho}), 1.0, 0.5, 2, kUvPyrTol);
   // left/front: front. u = (0.25-0.25)/0.5 = 0, v = 0.5.
-  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 0.5 * kRho}), 0.0, 0.5, 0, kPyrTol);
+  expectUvs(getUVPyramid1991({0.5 * kRho, 0.5, 0.5 * kRho}), 0.0, 0.5, 0, kUvPyrTol);
   // apex: the front test (0.5a - 0.5b = -2.5e-10, inside the negative
   // Roundoff window) wins; u there is 0/0.
   EXPECT_EQ(getUVPyramid1991({0.5, 1.0, 0.5}).surface, 0);
