@@ -70,8 +70,9 @@ void printSummary(const RenderResult& r, const std::string& out) {
 }
 
 // A picture whose every pixel is one palette index although rays met objects:
-// its shading never reaches the mapping's first step (plate 2 under the
-// thesis profile, docs/prime/plates.md). Said on stderr, with what shows it.
+// its shading never crosses a step of the mapping (plate 2 under the thesis
+// profile stays below the first, docs/prime/plates.md). Said on stderr, with
+// what shows the picture.
 void noteOneIndex(const RenderResult& r) {
   const auto& px = r.graph.pixels;
   if (px.empty() || r.stats.hits == 0) return;
@@ -79,8 +80,9 @@ void noteOneIndex(const RenderResult& r) {
     if (v != px.front()) return;
   std::fprintf(stderr,
                "prime: note: every pixel has palette index %d although rays met objects: the "
-               "shading stays below the palette's first step (docs/prime/plates.md, \"Plate 2 is "
-               "dark\"); --true-color-png FILE or --quantize METHOD shows the picture\n",
+               "shading never crosses a step of the palette mapping (as plate 2 under the thesis "
+               "profile, docs/prime/plates.md); --true-color-png FILE or --quantize METHOD shows "
+               "the picture\n",
                static_cast<int>(px.front()));
 }
 
