@@ -23,10 +23,4 @@ inline CommandResult runPrime(const std::string& args) {
   return {WEXITSTATUS(status), out};
 }
 
-// prime(args): what `prime args` does, for tests that read like the command
-// lines they run.
-inline CommandResult prime(const std::string& args) {
-  return runPrime(args);
-}
-
 }  // namespace prime::test

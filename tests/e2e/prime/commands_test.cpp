@@ -16,18 +16,18 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 using prime::test::CommandResult;
-using prime::test::prime;
+using prime::test::runPrime;
 
 using prime::test::sphere;
 
 TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
   prime::test::TempScene s;
   sphere(s);
-  CommandResult r = prime("trace " + s.path().string());
+  CommandResult r = runPrime("trace " + s.path().string());
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, HasSubstr("prim/PrimFile does not exist"));
   EXPECT_THAT(r.output, HasSubstr("add --model"));
-  r = prime("trace --model " + s.path().string());
+  r = runPrime("trace --model " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("traced 350 x 769 pixels (graph file header 349 x 768)"));
   EXPECT_THAT(r.output,
@@ -45,7 +45,7 @@ TEST(PrimeCommand, ModelWarnsAboutLargeSharedSubtrees) {
   for (int i = 0; i < 20; ++i)
     d += "+ " + std::to_string(i + 1) + " " + std::to_string(i + 1) + "\n";
   s.write("obj/D1.txt", d + "S 1\nNULL\n");
-  const CommandResult r = prime("model " + s.path().string());
+  const CommandResult r = runPrime("model " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("warning: object 1 (obj/O1): its 21 CSG entries share subtrees"));
   EXPECT_THAT(r.output, HasSubstr("2097151 entry visits per ray"));
@@ -55,7 +55,7 @@ TEST(PrimeCommand, ModelErrorExitsNonZeroNamingFileLineAndField) {
   prime::test::TempScene s;
   sphere(s);
   s.write("obj/H1.txt", "0.5 0.0\n0.8 x 0.2\n0.999\n2 2\n1.5\n");
-  const CommandResult r = prime("model " + s.path().string());
+  const CommandResult r = runPrime("model " + s.path().string());
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, HasSubstr("obj/H1.txt:2: fDR[G]: expected a number, found \"x\""));
 }
@@ -65,15 +65,15 @@ TEST(PrimeCommand, ModelErrorExitsNonZeroNamingFileLineAndField) {
 TEST(PrimeCommand, ZeroWindowsAndRaysAreRefused) {
   prime::test::TempScene s;
   sphere(s);
-  ASSERT_EQ(prime("model " + s.path().string()).status, 0);
-  CommandResult r =
-      prime("trace " + s.path().string() + " --no-window --window-left 1 2 3 --window-right 1 2 3");
+  ASSERT_EQ(runPrime("model " + s.path().string()).status, 0);
+  CommandResult r = runPrime("trace " + s.path().string() +
+                             " --no-window --window-left 1 2 3 --window-right 1 2 3");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the window has zero width"));
-  r = prime("trace " + s.path().string() + " --no-window --window-left 0 0 0");
+  r = runPrime("trace " + s.path().string() + " --no-window --window-left 0 0 0");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the window has zero height"));
-  r = prime("probe " + s.path().string() + " --ray 500 500 -1500 0 0 0");
+  r = runPrime("probe " + s.path().string() + " --ray 500 500 -1500 0 0 0");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("the direction is 0 0 0"));
   EXPECT_FALSE(s.exists("graph_scr"));
@@ -82,17 +82,17 @@ TEST(PrimeCommand, ZeroWindowsAndRaysAreRefused) {
 TEST(PrimeCommand, ProbeExplainsTheCentrePixel) {
   prime::test::TempScene s;
   sphere(s);
-  ASSERT_EQ(prime("model " + s.path().string()).status, 0);
-  CommandResult r = prime("probe " + s.path().string() + " --pixel 174 384");
+  ASSERT_EQ(runPrime("model " + s.path().string()).status, 0);
+  CommandResult r = runPrime("probe " + s.path().string() + " --pixel 174 384");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("primary ray, depth 0"));
   EXPECT_THAT(r.output, HasSubstr("nearest: object 1 prim 0 (sphere)"));
   EXPECT_THAT(r.output, HasSubstr("palette index 68"));
-  r = prime("probe " + s.path().string() + " --pixel 0 0 --json");
+  r = runPrime("probe " + s.path().string() + " --pixel 0 0 --json");
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr("\"index\":1"));
   EXPECT_THAT(r.output, HasSubstr("\"event\":\"miss\""));
-  r = prime("probe " + s.path().string() + " --pixel 350 0");
+  r = runPrime("probe " + s.path().string() + " --pixel 350 0");
   EXPECT_NE(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr("outside the image (350 x 769)"));
 }
@@ -102,7 +102,7 @@ TEST(PrimeCommand, VectorOptionsMayComeBeforeTheDirectory) {
   // the positional argument, not a fifth number.
   prime::test::TempScene s;
   sphere(s);
-  const CommandResult r = prime(
+  const CommandResult r = runPrime(
       "trace --viewport 0.125 0 0.875 1 --screen 512 384 --model --no-window " + s.path().string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("traced 385 x 385 pixels"));
@@ -111,12 +111,12 @@ TEST(PrimeCommand, VectorOptionsMayComeBeforeTheDirectory) {
 TEST(PrimeCommand, DumpNamesTheKindOrAsksForIt) {
   prime::test::TempScene s;
   sphere(s);
-  ASSERT_EQ(prime("model " + s.path().string()).status, 0);
-  CommandResult r = prime("dump " + s.path("obj/O1").string());
+  ASSERT_EQ(runPrime("model " + s.path().string()).status, 0);
+  CommandResult r = runPrime("dump " + s.path("obj/O1").string());
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr("1 entry, bounding volume none"));
   EXPECT_THAT(r.output, HasSubstr("prim 0"));
-  r = prime("dump " + s.path("Model.txt").string());
+  r = runPrime("dump " + s.path("Model.txt").string());
   EXPECT_EQ(r.status, 1);
   EXPECT_THAT(r.output, HasSubstr("--as prim|obj|list|map|graph"));
 }
@@ -124,24 +124,24 @@ TEST(PrimeCommand, DumpNamesTheKindOrAsksForIt) {
 // Usage errors: one line with the prime: prefix and exit status 2 (not
 // CLI11's 105-114); a mistyped command gets a suggestion.
 TEST(PrimeCommand, UsageErrorsExitTwoWithTheirPrefix) {
-  CommandResult r = prime("tracee scenes");
+  CommandResult r = runPrime("tracee scenes");
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("prime: unknown command 'tracee' - did you mean 'trace'?"));
-  r = prime("trace --no-such-option " + std::string(PRIME_SCENES) + "/default");
+  r = runPrime("trace --no-such-option " + std::string(PRIME_SCENES) + "/default");
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("prime: "));
   EXPECT_THAT(r.output, HasSubstr("--no-such-option"));
   EXPECT_THAT(r.output, HasSubstr("(prime trace --help)"));
-  r = prime("");
+  r = runPrime("");
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.output, HasSubstr("prime: A subcommand is required"));
 }
 
 TEST(PrimeCommand, VersionAndHelpCommand) {
-  CommandResult r = prime("--version");
+  CommandResult r = runPrime("--version");
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr("prime 0."));
-  r = prime("help trace");
+  r = runPrime("help trace");
   EXPECT_EQ(r.status, 0);
   EXPECT_THAT(r.output, HasSubstr("Usage:"));
   EXPECT_THAT(r.output, HasSubstr("--profile"));

@@ -25,7 +25,7 @@ using ::testing::Not;
 namespace fs = std::filesystem;
 
 using prime::test::CommandResult;
-using prime::test::prime;
+using prime::test::runPrime;
 
 // The first hit of a probe's --json output (the primary ray's), if any.
 struct FirstHit {
@@ -50,13 +50,13 @@ TEST(PrimeProbe, ModernProfileIsProbedForReal) {
   fs::copy(fs::path(PRIME_SCENES) / "csg-operators", s.path(),
            fs::copy_options::recursive | fs::copy_options::overwrite_existing);
   const std::string dir = s.path().string(), screen = " --screen 512 384";
-  ASSERT_EQ(prime("model " + dir).status, 0);
+  ASSERT_EQ(runPrime("model " + dir).status, 0);
   ASSERT_EQ(
-      prime("trace -q --no-window" + screen + " --out " + s.path("g1991").string() + " " + dir)
+      runPrime("trace -q --no-window" + screen + " --out " + s.path("g1991").string() + " " + dir)
           .status,
       0);
-  ASSERT_EQ(prime("trace -q --no-window --profile modern" + screen + " --out " +
-                  s.path("gmodern").string() + " " + dir)
+  ASSERT_EQ(runPrime("trace -q --no-window --profile modern" + screen + " --out " +
+                     s.path("gmodern").string() + " " + dir)
                 .status,
             0);
   const auto g1991 = prime::io::readGraphFile(s.path("g1991").string());
@@ -73,8 +73,8 @@ TEST(PrimeProbe, ModernProfileIsProbedForReal) {
     for (int i = 0; i < g1991.width() && x < 0; i += 16) {
       if (g1991.at(i, j) == gModern.at(i, j)) continue;
       const std::string at = " --pixel " + std::to_string(i) + " " + std::to_string(j);
-      const CommandResult a = prime("probe --json" + screen + at + " " + dir);
-      const CommandResult b = prime("probe --json --profile modern" + screen + at + " " + dir);
+      const CommandResult a = runPrime("probe --json" + screen + at + " " + dir);
+      const CommandResult b = runPrime("probe --json --profile modern" + screen + at + " " + dir);
       ASSERT_EQ(a.status, 0) << a.output;
       ASSERT_EQ(b.status, 0) << b.output;
       const auto ha = firstHit(a.output), hb = firstHit(b.output);
@@ -97,11 +97,11 @@ TEST(PrimeProbe, ModernProfileIsProbedForReal) {
   EXPECT_THAT(pModern, HasSubstr("\"profile\":\"modern\""));
   EXPECT_THAT(p1991, Not(HasSubstr("\"profile\"")));
   const std::string at = " --pixel " + std::to_string(x) + " " + std::to_string(y);
-  const CommandResult text = prime("probe --profile modern" + screen + at + " " + dir);
+  const CommandResult text = runPrime("probe --profile modern" + screen + at + " " + dir);
   EXPECT_EQ(text.status, 0) << text.output;
   EXPECT_THAT(text.output, HasSubstr("(modern profile)\n"));
   EXPECT_THAT(text.output, HasSubstr("nearest: object " + std::to_string(hModern.object)));
-  EXPECT_THAT(prime("probe" + screen + at + " " + dir).output, Not(HasSubstr("modern")));
+  EXPECT_THAT(runPrime("probe" + screen + at + " " + dir).output, Not(HasSubstr("modern")));
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 using prime::test::CommandResult;
 
-using prime::test::prime;
+using prime::test::runPrime;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -37,60 +37,63 @@ TEST(GraphInfo, TraceWritesItAndExportUsesTheFraming) {
   Sphere sc;
   // A render for an 800 x 600 screen: the listing's viewport puts it at
   // ((int)(0.66*800), 0) = (528, 0), which export cannot guess.
-  CommandResult r = prime("trace --model --no-window -q --screen 800 600 " + sc.dir());
+  CommandResult r = runPrime("trace --model --no-window -q --screen 800 600 " + sc.dir());
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string info = slurp(sc.at("graph_scr.info"));
   EXPECT_THAT(info, HasSubstr("prime-graph-info 1\n"));
   EXPECT_THAT(info, HasSubstr("\nscreen 800 600\nat 528 0\npalette listing\n"));
   EXPECT_THAT(info, HasSubstr("\nprofile 1991\n"));
-  r = prime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
+  r = runPrime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("at (528, 0) on a 800 x 600 screen"));
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("does not fit")));
   // Without it, the 8514/A's default framing, which clips this file.
-  r = prime("export --no-info " + sc.at("graph_scr").string() + " " + sc.at("b.png").string());
+  r = runPrime("export --no-info " + sc.at("graph_scr").string() + " " + sc.at("b.png").string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("at (675, 0) on a 1024 x 768 screen"));
   // Flags still win over the companion (G10).
-  r = prime("export --at 0 0 " + sc.at("graph_scr").string() + " " + sc.at("c.png").string());
+  r = runPrime("export --at 0 0 " + sc.at("graph_scr").string() + " " + sc.at("c.png").string());
   EXPECT_THAT(r.output, HasSubstr("at (0, 0) on a 800 x 600 screen"));
 }
 
 TEST(GraphInfo, DamagedIsALocatedErrorAndNoInfoStillReads) {
   Sphere sc;
-  ASSERT_EQ(prime("trace --model --no-window -q " + sc.dir()).status, 0);
+  ASSERT_EQ(runPrime("trace --model --no-window -q " + sc.dir()).status, 0);
   std::string info = slurp(sc.at("graph_scr.info"));
   info.replace(info.find("screen 1024"), 11, "screen wide");
   std::ofstream(sc.at("graph_scr.info"), std::ios::binary) << info;
-  CommandResult r = prime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
+  CommandResult r =
+      runPrime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("graph_scr.info:5"));
   EXPECT_THAT(r.output, HasSubstr("screen width"));
   EXPECT_FALSE(fs::exists(sc.at("a.png")));
-  r = prime("export --no-info " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
+  r = runPrime("export --no-info " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
   EXPECT_EQ(r.status, 0) << r.output;
 }
 
 TEST(GraphInfo, AStaleCompanionIsIgnoredWithAWarning) {
   Sphere sc;
-  ASSERT_EQ(prime("trace --model --no-window -q " + sc.dir()).status, 0);
+  ASSERT_EQ(runPrime("trace --model --no-window -q " + sc.dir()).status, 0);
   std::string graph = slurp(sc.at("graph_scr"));
   graph[100] = static_cast<char>(graph[100] ^ 1);  // another program's graph file
   std::ofstream(sc.at("graph_scr"), std::ios::binary) << graph;
   const CommandResult r =
-      prime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
+      runPrime("export " + sc.at("graph_scr").string() + " " + sc.at("a.png").string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("describes another graph file"));
 }
 
 TEST(Quantize, TraceQuantizedExportsAsTracedAndKeepsTheListingFileWithout) {
   Sphere sc;
-  ASSERT_EQ(prime("trace --model --no-window -q --out " + sc.at("plain").string() + " " + sc.dir())
-                .status,
-            0);
-  CommandResult r = prime("trace --no-window -q --quantize octree --dither floyd-steinberg --out " +
-                          sc.at("q").string() + " --png " + sc.at("traced.png").string() +
-                          " --true-color-png " + sc.at("true.png").string() + " " + sc.dir());
+  ASSERT_EQ(
+      runPrime("trace --model --no-window -q --out " + sc.at("plain").string() + " " + sc.dir())
+          .status,
+      0);
+  CommandResult r =
+      runPrime("trace --no-window -q --quantize octree --dither floyd-steinberg --out " +
+               sc.at("q").string() + " --png " + sc.at("traced.png").string() +
+               " --true-color-png " + sc.at("true.png").string() + " " + sc.dir());
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string info = slurp(sc.at("q.info"));
   EXPECT_THAT(info, HasSubstr("palette inline octree, dither floyd-steinberg"));
@@ -101,12 +104,12 @@ TEST(Quantize, TraceQuantizedExportsAsTracedAndKeepsTheListingFileWithout) {
   EXPECT_EQ(plain.substr(0, 6), q.substr(0, 6));
   EXPECT_NE(plain, q);
   // export shows exactly what trace showed, through the inline palette.
-  r = prime("export " + sc.at("q").string() + " " + sc.at("exported.png").string());
+  r = runPrime("export " + sc.at("q").string() + " " + sc.at("exported.png").string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(slurp(sc.at("exported.png")), slurp(sc.at("traced.png")));
   // Ours against the true colours: a report line with all four numbers.
-  r = prime("quantize " + sc.at("true.png").string() + " " + sc.at("m.png").string() +
-            " --method median-cut --report");
+  r = runPrime("quantize " + sc.at("true.png").string() + " " + sc.at("m.png").string() +
+               " --method median-cut --report");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("median-cut none: mean dE00 "));
   EXPECT_THAT(r.output, HasSubstr(" dB, CPU "));
@@ -115,13 +118,14 @@ TEST(Quantize, TraceQuantizedExportsAsTracedAndKeepsTheListingFileWithout) {
 TEST(Quantize, UsageAndInputErrors) {
   Sphere sc;
   std::ofstream(sc.at("not.png")) << "hello";
-  CommandResult r = prime("quantize " + sc.at("not.png").string() + " " + sc.at("o.png").string());
+  CommandResult r =
+      runPrime("quantize " + sc.at("not.png").string() + " " + sc.at("o.png").string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("not.png"));
-  r = prime("quantize " + sc.at("not.png").string() + " " + sc.at("o.png").string() +
-            " --method listing --dither ordered");
+  r = runPrime("quantize " + sc.at("not.png").string() + " " + sc.at("o.png").string() +
+               " --method listing --dither ordered");
   EXPECT_EQ(r.status, 2) << r.output;
-  r = prime("quantize " + sc.at("not.png").string() + " o.png --method kmeans");
+  r = runPrime("quantize " + sc.at("not.png").string() + " o.png --method kmeans");
   EXPECT_EQ(r.status, 2) << r.output;
 }
 

@@ -65,7 +65,7 @@ std::vector<std::uint8_t> readBytes(const fs::path& p) {
 }
 
 using prime::test::CommandResult;
-using prime::test::prime;
+using prime::test::runPrime;
 
 // A private copy of the scene's text inputs (tests run in parallel, and the
 // scene directory may hold databases from a user's own runs).
@@ -178,7 +178,7 @@ TEST_P(ReplayScene, ModelWritesTheGoldenDatabases) {
   SceneCopy copy(scene, "db");
   if (command(scene).rfind("plate1", 0) == 0)
     GTEST_SKIP() << "plate1 has no databases: it is not ray traced";
-  const CommandResult m = prime("model " + copy.path().string());
+  const CommandResult m = runPrime("model " + copy.path().string());
   ASSERT_EQ(m.status, 0) << m.output;
   const fs::path golden = kGolden / scene / "db";
   const auto now = databases(copy.path());
@@ -221,11 +221,12 @@ TEST_P(ReplayScene, RenderWritesTheGoldenGraphFile) {
                     flags = space == std::string::npos ? "" : cmd.substr(space);
   CommandResult r;
   if (verb == "plate1") {
-    r = prime(verb + " " + copy.path().string() + flags + " -q --out " + out.string());
+    r = runPrime(verb + " " + copy.path().string() + flags + " -q --out " + out.string());
   } else {
-    r = prime("model " + copy.path().string());
+    r = runPrime("model " + copy.path().string());
     ASSERT_EQ(r.status, 0) << r.output;
-    r = prime(verb + " " + copy.path().string() + flags + " -q --threads 2 --out " + out.string());
+    r = runPrime(verb + " " + copy.path().string() + flags + " -q --threads 2 --out " +
+                 out.string());
   }
   ASSERT_EQ(r.status, 0) << r.output;
   const fs::path golden = kGolden / scene / "graph_scr";
