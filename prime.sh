@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 
 # Debian packages the build and the tests need.
 PACKAGES=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev libsdl2-dev libpng-dev libimagequant-dev libxxhash-dev libssl-dev clang libclang-rt-14-dev
+          libbenchmark-dev libsdl2-dev libpng-dev libimagequant-dev libxxhash-dev nettle-dev clang libclang-rt-14-dev
           xvfb xauth x11-apps xdotool   # window tests: an X server, xwd (x11-apps), key presses
           help2man groff-base)          # the man page (generated from the CLI) and its check
 

@@ -15,8 +15,10 @@ namespace prime::display {
 
 class LiveRgbFrame : public LiveFrame {
  public:
-  LiveRgbFrame(int width, int height)
-      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height, 0) {}
+  // The pixels are allocated when first needed (a row set, or a window
+  // taking them): a headless render never touches them, and on a small
+  // render the page faults of a frame nobody sees are a measurable share.
+  LiveRgbFrame(int width, int height) : width_(width), height_(height) {}
 
   int width() const override { return width_; }
   int height() const override { return height_; }
@@ -25,6 +27,7 @@ class LiveRgbFrame : public LiveFrame {
   void setRow(int row, std::span<const std::uint32_t> xrgb) {
     std::lock_guard lock(mutex_);
     if (row < 0 || row >= height_) return;
+    allocate();
     std::copy_n(xrgb.begin(), std::min<std::size_t>(xrgb.size(), width_),
                 pixels_.begin() + static_cast<std::ptrdiff_t>(row) * width_);
     dirty_.mark({0, row, width_, 1});
@@ -34,6 +37,7 @@ class LiveRgbFrame : public LiveFrame {
     std::lock_guard lock(mutex_);
     const Rect r = dirty_.take();
     if (r.empty()) return {};
+    allocate();
     pixels.resize(static_cast<std::size_t>(r.w) * r.h);
     for (int y = 0; y < r.h; ++y)
       std::copy_n(pixels_.begin() + static_cast<std::ptrdiff_t>(r.y + y) * width_ + r.x, r.w,
@@ -51,6 +55,11 @@ class LiveRgbFrame : public LiveFrame {
   std::string describe() const override { return "true colour"; }
 
  private:
+  // Under mutex_: black until rows are set.
+  void allocate() {
+    if (pixels_.empty()) pixels_.assign(static_cast<std::size_t>(width_) * height_, 0u);
+  }
+
   mutable std::mutex mutex_;
   int width_, height_;
   std::vector<std::uint32_t> pixels_;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -162,7 +163,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
       LiveRender window(frame, options);
 
       const prime::cgl::RenderSettings settings = renderSettings(*o, file);
-      prime::cgl::RenderResult result;
+      // Made by the render (a default RenderResult would be one more 1 MiB frame).
+      std::optional<prime::cgl::RenderResult> rendered;
       prime::cgl::RenderCallbacks cb;
       cb.abort = window.abortFlag();
       cb.progress = window.progress();
@@ -178,7 +180,8 @@ void addTraceCommand(CLI::App& app, Action& action) {
           }
           frame.setRow(imageRow, row);
         };
-      window.run([&] { result = prime::cgl::render(scene, settings, cb); });
+      window.run([&] { rendered.emplace(prime::cgl::render(scene, settings, cb)); });
+      const prime::cgl::RenderResult& result = *rendered;
       if (result.run.aborted) {
         window.closeWindow();
         std::cerr << "prime: trace aborted: no picture written\n";
