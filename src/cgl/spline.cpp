@@ -303,6 +303,8 @@ void buildPackets(SplineSurface& s) {
   s.packets.clear();
   s.leafData.clear();
   s.leafData.reserve(static_cast<std::size_t>(s.leaves));
+  // At most one packet per interior node and the root's: no reallocation.
+  s.packets.reserve(s.nodes.size() - static_cast<std::size_t>(s.leaves) + 1);
   if (s.nodes.empty()) return;
   // packets[0]: the root alone, so that the traversal starts like any node.
   s.packets.emplace_back();
@@ -414,6 +416,8 @@ void buildSpatialPackets(SplineSurface& s) {
   s.packets.clear();
   s.leafData.clear();
   s.leafData.reserve(static_cast<std::size_t>(s.leaves));
+  // A packet has at least two lanes but the root's: fewer packets than leaves.
+  s.packets.reserve(static_cast<std::size_t>(s.leaves) + 1);
   if (s.nodes.empty()) return;
   std::vector<SpatialLeaf> items;
   items.reserve(static_cast<std::size_t>(s.leaves));

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -138,6 +140,97 @@ std::string nearestCommand(const CLI::App& app, const std::string& word) {
   return best;
 }
 
+// Every command, in the order `prime --help` lists them, with the names each
+// registration adds. Building all of them (CLI11 objects for some 40
+// commands and their options) cost about 3 ms of CPU per run of `prime`
+// (docs/cgl/benchmarks.md, "What every command pays"), more than many small
+// renders' set-up: a run that names one of them registers that one alone.
+struct Command {
+  std::vector<std::string> names;
+  void (*add)(CLI::App&, prime::cli::Action&);
+};
+
+const std::vector<Command>& commands() {
+  namespace cli = prime::cli;
+  static const std::vector<Command> kCommands = {
+      {{"model"}, cli::addModelCommand},
+      {{"dump"}, cli::addDumpCommand},
+      {{"trace"}, cli::addTraceCommand},
+      {{"probe"}, cli::addProbeCommand},
+      {{"view"}, cli::addViewCommand},
+      {{"export"}, cli::addExportCommand},
+      {{"diff"}, cli::addDiffCommand},
+      {{"palette"}, cli::addPaletteCommand},
+      {{"export-pov"}, cli::addExportPovCommand},
+      {{"bench"}, cli::addBenchCommand},
+      {{"plate1"}, cli::addPlate1Command},
+      {{"stress"}, cli::addStressCommand},
+      {{"quantize"}, cli::addQuantizeCommand},
+      {{"check"}, cli::addCheckCommand},
+      {{"new"}, cli::addNewCommand},
+      {{"compare"}, cli::addCompareCommand},
+      {{"walk"}, cli::addWalkCommand},
+      {{cli::malone::kTraceCommand}, cli::malone::addTraceCommand},
+      {{cli::malone::kProbeCommand}, cli::malone::addProbeCommand},
+      {{cli::malone::kBenchCommand}, cli::malone::addBenchCommand},
+      {{cli::malone::kExportPovCommand}, cli::malone::addExportPovCommand},
+      {{cli::cgl::kTraceCommand}, cli::cgl::addTraceCommand},
+      {{cli::cgl::kProbeCommand}, cli::cgl::addProbeCommand},
+      {{cli::cgl::kBenchCommand}, cli::cgl::addBenchCommand},
+      {{cli::cgl::kExportPovCommand}, cli::cgl::addExportPovCommand},
+      {{cli::cgl::kExportCommand, cli::cgl::kViewCommand}, cli::cgl::addPictureCommands},
+      {{cli::cgl::kSplinesCommand}, cli::cgl::addSplinesCommand},
+      {{"cook"}, cli::cgl::addCookCommand},
+      {{"tovector"}, cli::cgl::addTovectorCommand},
+  };
+  return kCommands;
+}
+
+// Registers every command, checking the table: each registration must add
+// exactly the names listed (a command added without its row, or renamed,
+// fails `prime --help`, which the build runs for the man page).
+void addEveryCommand(CLI::App& app, prime::cli::Action& action) {
+  for (const Command& c : commands()) {
+    const auto all = [](CLI::App*) { return true; };
+    const std::size_t before = app.get_subcommands(all).size();
+    c.add(app, action);
+    const std::vector<CLI::App*> subs = app.get_subcommands(all);
+    std::vector<std::string> added;
+    for (std::size_t k = before; k < subs.size(); ++k) added.push_back(subs[k]->get_name());
+    if (added != c.names)
+      throw std::logic_error("src/cli/main.cpp: the command table does not list the commands " +
+                             (added.empty() ? std::string("(none)") : added.front()) +
+                             " registers");
+  }
+}
+
+// The row to register alone, or nullptr for all: when args[1] is a command's
+// name and no later argument is (so no word can be read as another command).
+const Command* onlyCommandNeeded(const std::vector<char*>& args) {
+  const Command* found = nullptr;
+  for (const Command& c : commands())
+    for (const std::string& name : c.names) {
+      for (std::size_t k = 2; k < args.size(); ++k)
+        if (name == args[k]) return nullptr;
+      if (name == args[1]) found = &c;
+    }
+  return found;
+}
+
+// The command line's parser: with `only`, that row's commands alone, else
+// every command.
+std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& action) {
+  auto app = std::make_unique<CLI::App>(
+      "PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
+  app->require_subcommand(1);
+  if (only != nullptr)
+    only->add(*app, action);
+  else
+    addEveryCommand(*app, action);
+  app->set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
+                                         " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
+  return app;
+}
 }  // namespace
 
 // The whole command line; with `parseOnly`, everything but the chosen
@@ -170,51 +263,30 @@ int primeMain(int argc, char** argv, bool parseOnly) {
       for (std::string& a : translated) args.push_back(a.data());
     }
   }
-  CLI::App app{
-      "PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)"};
-  app.require_subcommand(1);
   prime::cli::Action action;
-  prime::cli::addModelCommand(app, action);
-  prime::cli::addDumpCommand(app, action);
-  prime::cli::addTraceCommand(app, action);
-  prime::cli::addProbeCommand(app, action);
-  prime::cli::addViewCommand(app, action);
-  prime::cli::addExportCommand(app, action);
-  prime::cli::addDiffCommand(app, action);
-  prime::cli::addPaletteCommand(app, action);
-  prime::cli::addExportPovCommand(app, action);
-  prime::cli::addBenchCommand(app, action);
-  prime::cli::addPlate1Command(app, action);
-  prime::cli::addStressCommand(app, action);
-  prime::cli::addQuantizeCommand(app, action);
-  prime::cli::addCheckCommand(app, action);
-  prime::cli::addNewCommand(app, action);
-  prime::cli::addCompareCommand(app, action);
-  prime::cli::addWalkCommand(app, action);
-  prime::cli::malone::addTraceCommand(app, action);
-  prime::cli::malone::addProbeCommand(app, action);
-  prime::cli::malone::addBenchCommand(app, action);
-  prime::cli::malone::addExportPovCommand(app, action);
-  prime::cli::cgl::addTraceCommand(app, action);
-  prime::cli::cgl::addProbeCommand(app, action);
-  prime::cli::cgl::addBenchCommand(app, action);
-  prime::cli::cgl::addExportPovCommand(app, action);
-  prime::cli::cgl::addPictureCommands(app, action);
-  prime::cli::cgl::addSplinesCommand(app, action);
-  prime::cli::cgl::addCookCommand(app, action);
-  prime::cli::cgl::addTovectorCommand(app, action);
-  app.set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
-                                        " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
+  // Only the command named is registered when that is enough (commands()).
+  const Command* only = args.size() >= 2 ? onlyCommandNeeded(args) : nullptr;
+  std::unique_ptr<CLI::App> made;
   try {
-    app.parse(static_cast<int>(args.size()), args.data());
+    try {
+      made = makeApp(only, action);
+      made->parse(static_cast<int>(args.size()), args.data());
+    } catch (const CLI::Error&) {
+      if (only == nullptr) throw;
+      // Help, --version and usage errors come from the whole command line,
+      // as they always did (their messages name other commands).
+      action = nullptr;
+      made = makeApp(nullptr, action);
+      made->parse(static_cast<int>(args.size()), args.data());
+    }
   } catch (const CLI::Success& e) {  // --help, --version
-    return app.exit(e);
+    return made->exit(e);
   } catch (const CLI::ParseError& e) {
     // Usage errors: one line with the prime: prefix, exit status 2.
     // The command as the user typed it (not the system's subcommand it went to).
     const std::string first = argc > 1 ? argv[1] : "";
-    if (!first.empty() && first[0] != '-' && app.get_subcommands().empty()) {
-      const std::string near = nearestCommand(app, first);
+    if (!first.empty() && first[0] != '-' && made->get_subcommands().empty()) {
+      const std::string near = nearestCommand(*made, first);
       std::cerr << "prime: unknown command '" << first << "'"
                 << (near.empty() ? "" : " - did you mean '" + near + "'?")
                 << " (prime --help lists the commands)\n";
@@ -223,8 +295,11 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     std::cerr << "prime: " << e.what() << " (prime " << (first.empty() ? "" : first + " ")
               << "--help)\n";
     return 2;
+  } catch (const std::logic_error& e) {  // the command table (addEveryCommand)
+    std::cerr << "prime: internal error: " << e.what() << "\n";
+    return 1;
   }
-  if (const std::string bad = nonFiniteNumber(app); !bad.empty()) {
+  if (const std::string bad = nonFiniteNumber(*made); !bad.empty()) {
     const std::string first = argc > 1 ? argv[1] : "";
     std::cerr << "prime: " << bad << " (prime " << (first.empty() ? "" : first + " ")
               << "--help)\n";

@@ -147,4 +147,35 @@ TEST(PrimeCommand, VersionAndHelpCommand) {
   EXPECT_THAT(r.output, HasSubstr("--profile"));
 }
 
+// A run that names a command registers that command alone (src/cli/main.cpp,
+// commands()); `prime --help` registers every one and checks the table, so a
+// command missing from it, or renamed, fails here.
+TEST(PrimeCommand, HelpListsEveryCommandThroughTheTable) {
+  const CommandResult r = runPrime("--help");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("internal error")));
+  for (const char* c :
+       {"model",   "dump",       "trace", "probe",       "view",   "export",   "diff",
+        "palette", "export-pov", "bench", "plate1",      "stress", "quantize", "check",
+        "new",     "compare",    "walk",  "cgl-splines", "cook",   "tovector"})
+    EXPECT_THAT(r.output, HasSubstr("\n  " + std::string(c) + " ")) << c;
+}
+
+// Errors found with the command alone are reported by the whole command line,
+// so messages that name other commands are unchanged: a usage error of a
+// routed command, and a scene argument that is another command's name.
+TEST(PrimeCommand, OneCommandAloneParsesAsTheWholeCommandLine) {
+  CommandResult r = runPrime("trace --no-such-option " + std::string(PRIME_SCENES) + "/default");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("(prime trace --help)"));
+  r = runPrime("dump model");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.output, HasSubstr("File does not exist: model (prime dump --help)"));
+  r = runPrime("tovector 255 0 0");
+  EXPECT_EQ(r.status, 0) << r.output;
+  r = runPrime("tovector 255 0");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("(prime tovector --help)"));
+}
+
 }  // namespace
