@@ -27,6 +27,8 @@ int Bvh::build(int first, int count, int depth) {
   if (count <= 4 || depth >= 60) {
     nodes_[index].first = first;
     nodes_[index].count = count;
+    const Aabb& only = boxes_[order_[first]];
+    nodes_[index].oneBox = count == 1 && box.lo == only.lo && box.hi == only.hi;
     return index;
   }
   int axis = 0;

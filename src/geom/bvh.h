@@ -32,6 +32,9 @@ class Bvh {
     Aabb box;
     int left = -1, right = -1;  // children, or -1 for a leaf
     int first = 0, count = 0;   // leaf: range in order_
+    // A leaf of one box, whose own box is that box (the union of one box):
+    // the ray's entry into the node is the box's, not computed again.
+    bool oneBox = false;
   };
   int build(int first, int count, int depth);
   std::vector<Aabb> boxes_;
@@ -57,11 +60,15 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
   // met, even when limit() is +infinity (nothing found yet).
   constexpr double kMiss = std::numeric_limits<double>::infinity();
   auto within = [&](double t) { return t != kMiss && t <= limit(); };
-  if (!within(nodes_[0].box.entry(ray))) return;
+  double nodeT = nodes_[0].box.entry(ray);  // the ray's entry into the node in hand
+  if (!within(nodeT)) return;
   for (;;) {
     const Node& n = nodes_[node];
     bool descend = false;
-    if (n.left < 0) {
+    if (n.oneBox) {
+      // within(nodeT) held when the node was taken; limit() has not changed since.
+      visit(order_[n.first], nodeT);
+    } else if (n.left < 0) {
       for (int k = n.first; k < n.first + n.count; ++k) {
         const int index = order_[k];
         const double t = boxes_[index].entry(ray);
@@ -76,6 +83,7 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
       if (within(tFar)) stack[top++] = {farNode, tFar};
       if (within(tNear)) {
         node = nearNode;
+        nodeT = tNear;
         descend = true;
       }
     }
@@ -85,6 +93,7 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
       const Item it = stack[--top];
       if (it.t <= limit()) {
         node = it.node;
+        nodeT = it.t;
         break;
       }
     }
