@@ -141,7 +141,7 @@ std::string nearestCommand(const CLI::App& app, const std::string& word) {
 }
 
 // Every command, in the order `prime --help` lists them, with the names each
-// registration adds. Building all of them (CLI11 objects for some 40
+// registration adds. Building all of them (CLI11 objects for some 30
 // commands and their options) cost about 3 ms of CPU per run of `prime`
 // (docs/cgl/benchmarks.md, "What every command pays"), more than many small
 // renders' set-up: a run that names one of them registers that one alone.
