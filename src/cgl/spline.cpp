@@ -148,11 +148,28 @@ class TreeBuilder {
       : s_(s), ua_(std::move(ua)), vb_(std::move(vb)) {}
 
   void build() {
+    const int a1 = static_cast<int>(ua_.size()) - 1, b1 = static_cast<int>(vb_.size()) - 1;
+    // The tree's size first, so that its nodes are allocated once (growing
+    // the vector node by node touched twice its final size in fresh pages).
+    s_.nodes.clear();
+    s_.nodes.reserve(static_cast<std::size_t>(count(0, a1, 0, b1)));
     s_.nodes.assign(1, SplineNode{});
-    node(0, 0, static_cast<int>(ua_.size()) - 1, 0, static_cast<int>(vb_.size()) - 1);
+    node(0, 0, a1, 0, b1);
   }
 
  private:
+  // The nodes node() makes for the rectangle [a0, a1] x [b0, b1], itself included.
+  static std::int64_t count(int a0, int a1, int b0, int b1) {
+    if ((a0 == a1 && b0 == b1) || a1 < a0 || b1 < b0) return 1;
+    std::int64_t n = 1;
+    const int am = a1 > a0 ? (a0 + a1) / 2 : a1, bm = b1 > b0 ? (b0 + b1) / 2 : b1;
+    const int as[2][2] = {{a0, am}, {am + 1, a1}}, bs[2][2] = {{b0, bm}, {bm + 1, b1}};
+    for (int j = 0; j < (b1 > b0 ? 2 : 1); ++j)
+      for (int i = 0; i < (a1 > a0 ? 2 : 1); ++i)
+        n += count(as[i][0], as[i][1], bs[j][0], bs[j][1]);
+    return n;
+  }
+
   const Vec3& wAt(int r, int s) const {
     return s_.w[static_cast<std::size_t>((r + 4) + (s + 4) * s_.pu)];
   }
@@ -436,6 +453,8 @@ void buildSpatialPackets(SplineSurface& s) {
   setLane(s.packets[0], 0, s.nodes[0].box, ref);
 }
 
+}  // namespace
+
 // The expected box tests of a ray through the root's box (the surface area
 // heuristic): each packet's lanes are tested when its box, the lane above
 // it, is entered, in proportion to that box's area.
@@ -456,25 +475,50 @@ double packetCost(const SplineSurface& s) {
   return cost;
 }
 
-}  // namespace
+// packetCost(s) of the packets buildPackets(s) makes, from the tree alone,
+// the same terms summed in the same order, so the same double: buildPackets
+// makes one packet per interior node, depth first (a node's packet, then
+// each child's subtree in turn), its lanes the node's children; a lane
+// whose child is interior adds area(child's box) / root * child's count.
+double documentPacketCost(const SplineSurface& s) {
+  auto area = [](const Aabb& b) {
+    const double x = b.hi[0] - b.lo[0], y = b.hi[1] - b.lo[1], z = b.hi[2] - b.lo[2];
+    return x * y + y * z + z * x;
+  };
+  if (s.nodes.empty()) return 0.0;
+  const SplineNode& rootNode = s.nodes[0];
+  const double root = area(rootNode.box);
+  if (!(root > 0.0)) return 0.0;
+  double cost = 0.0;
+  // packets[0]: the root's lane.
+  if (rootNode.count != 0) cost += area(rootNode.box) / root * rootNode.count;
+  const auto visit = [&](const auto& self, const SplineNode& n) -> void {
+    for (int c = 0; c < n.count; ++c) {
+      const SplineNode& child = s.nodes[static_cast<std::size_t>(n.first + c)];
+      if (child.count != 0) cost += area(child.box) / root * child.count;
+    }
+    for (int c = 0; c < n.count; ++c) {
+      const SplineNode& child = s.nodes[static_cast<std::size_t>(n.first + c)];
+      if (child.count != 0) self(self, child);
+    }
+  };
+  visit(visit, rootNode);
+  return cost;
+}
 
 // CGL-D175: the document's grouping (knot rectangles) or the grouping in
 // space, whichever the surface area heuristic expects fewer box tests of.
 void buildTraversal(SplineSurface& s, PacketLayout layout) {
-  if (layout == PacketLayout::Spatial) {
-    buildSpatialPackets(s);
+  if (layout == PacketLayout::Document) {
+    buildPackets(s);
     return;
   }
-  buildPackets(s);
-  if (layout == PacketLayout::Document) return;
-  const double documentCost = packetCost(s);
-  std::vector<SplinePacket> packets = std::move(s.packets);
-  std::vector<SplineLeaf> leafData = std::move(s.leafData);
   buildSpatialPackets(s);
-  if (!(packetCost(s) < documentCost)) {
-    s.packets = std::move(packets);
-    s.leafData = std::move(leafData);
-  }
+  if (layout == PacketLayout::Spatial) return;
+  // The document's grouping is built again, into the same storage (pages
+  // already touched), only when it costs fewer box tests than the spatial
+  // one: packetCost of it is documentPacketCost, to the bit.
+  if (!(packetCost(s) < documentPacketCost(s))) buildPackets(s);
 }
 
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,

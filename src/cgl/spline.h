@@ -121,6 +121,14 @@ struct SplineSurface {
 enum class PacketLayout { Auto, Document, Spatial };
 struct SplineSurface;
 void buildTraversal(SplineSurface& s, PacketLayout layout = PacketLayout::Auto);
+// The surface area heuristic of CGL-D175: the box tests a ray through the
+// root's box is expected to make, for the surface's packets as built;
+// documentPacketCost, the same for the Document layout's packets, from the
+// tree alone (the same double as packetCost after buildTraversal(Document)).
+// Auto builds the spatial grouping, and the document's instead when its cost
+// is no higher.
+double packetCost(const SplineSurface& s);
+double documentPacketCost(const SplineSurface& s);
 
 // Builds a surface from the transformed user control vertices (nv groups of
 // nu, controls[v * nu + u], as the reader stores them). Throws nothing: the

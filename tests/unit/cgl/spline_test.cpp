@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -559,6 +560,53 @@ TEST(CglSplineIntersect, PacketWalkIsTheDocumentsWalkBitForBit) {
     EXPECT_GT(hits, 1000u) << name << " of " << tried;
     EXPECT_GT(shadowHits, 0u) << name;
   }
+}
+
+// CGL-D175: Auto keeps the grouping the surface area heuristic prefers; the
+// document grouping's cost comes from the tree without building its packets
+// (documentPacketCost), and must be the built packets' cost to the bit, so
+// that Auto chooses as it did when it built both.
+TEST(CglSplineIntersect, AutoLayoutIsTheCheaperGroupingByTheSameCosts) {
+  int spatial = 0, document = 0;
+  for (const char* name : {"spline-bump-single", "spline-bump-double", "spline-bump-triple",
+                           "spline-donut", "spline-mask", "spline-vases", "doc-spline-tube"}) {
+    const SceneFile f = readSceneFile(std::string(CGL_SCENES) + "/" + name + ".cgl");
+    const Scene scene = buildScene(f);
+    ASSERT_FALSE(scene.splines.empty()) << name;
+    for (const SplineSurface& original : scene.splines) {
+      SplineSurface d = original, sp = original, a = original;
+      buildTraversal(d, PacketLayout::Document);
+      buildTraversal(sp, PacketLayout::Spatial);
+      buildTraversal(a, PacketLayout::Auto);
+      const double fromTree = documentPacketCost(d), built = packetCost(d);
+      ASSERT_EQ(std::memcmp(&fromTree, &built, sizeof built), 0)
+          << name << ": " << fromTree << " against " << built;
+      ASSERT_GT(built, 0.0) << name;
+      const bool spatialWins = packetCost(sp) < built;
+      (spatialWins ? spatial : document)++;
+      const SplineSurface& expected = spatialWins ? sp : d;
+      ASSERT_EQ(a.packets.size(), expected.packets.size()) << name;
+      for (std::size_t k = 0; k < a.packets.size(); ++k) {
+        const SplinePacket &x = a.packets[k], &y = expected.packets[k];
+        ASSERT_EQ(x.count, y.count) << name << " packet " << k;
+        ASSERT_EQ(x.plain, y.plain) << name << " packet " << k;
+        for (int lane = 0; lane < 4; ++lane) {
+          ASSERT_EQ(x.ref[lane], y.ref[lane]) << name << " packet " << k;
+          for (int axis = 0; axis < 3; ++axis) {
+            ASSERT_EQ(x.lo[axis][lane], y.lo[axis][lane]) << name << " packet " << k;
+            ASSERT_EQ(x.hi[axis][lane], y.hi[axis][lane]) << name << " packet " << k;
+          }
+        }
+      }
+      ASSERT_EQ(a.leafData.size(), expected.leafData.size()) << name;
+      for (std::size_t k = 0; k < a.leafData.size(); ++k)
+        ASSERT_EQ(a.leafData[k].node, expected.leafData[k].node) << name << " leaf " << k;
+    }
+  }
+  // CGL-D175's measurements: space for the donut, bump-single, bump-triple
+  // and the vases; knot rectangles for bump-double and the mask.
+  EXPECT_GT(spatial, 0);
+  EXPECT_GT(document, 0);
 }
 
 // CGL-D175: whatever the grouping of the leaves into packets, the walk lists
