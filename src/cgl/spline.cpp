@@ -17,7 +17,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // The knot interval i of u (clamped to -1 .. last) and the local parameter.
-int interval(double u, int last, double& local) {
+// (Forced inline, as basisWeights() below: GCC's own choice changes with the
+// size of this file, and out of line they cost Newton's evaluation 3 % more
+// instructions, 6-9 % more time on the spline figures.)
+[[gnu::always_inline]] inline int interval(double u, int last, double& local) {
   int i = static_cast<int>(std::floor(u));
   i = std::clamp(i, -1, last);
   local = u - i;
@@ -46,7 +49,9 @@ using V4 = double __attribute__((vector_size(32)));
 #define PRIME_SPLINE_CLONES
 #endif
 
-void bsplineWeights(double u, double w[4], double dw[4]) {
+namespace {
+
+[[gnu::always_inline]] inline void basisWeights(double u, double w[4], double dw[4]) {
   const double u2 = u * u, u3 = u2 * u, t = 1.0 - u;
   w[0] = t * t * t / 6.0;                              // b_3: 1 - 3u + 3u^2 - u^3
   w[1] = (4.0 - 6.0 * u2 + 3.0 * u3) / 6.0;            // b_2
@@ -56,6 +61,12 @@ void bsplineWeights(double u, double w[4], double dw[4]) {
   dw[1] = (-12.0 * u + 9.0 * u2) / 6.0;
   dw[2] = (3.0 + 6.0 * u - 9.0 * u2) / 6.0;
   dw[3] = u2 / 2.0;
+}
+
+}  // namespace
+
+void bsplineWeights(double u, double w[4], double dw[4]) {
+  basisWeights(u, w, dw);
 }
 
 std::vector<int> extendedIndices(int count, EndCondition end) {
@@ -600,8 +611,8 @@ namespace {
   double lu = 0, lv = 0;
   const int i = interval(u, s.m, lu), j = interval(v, s.n, lv);
   double wu[4], dwu[4], wv[4], dwv[4];
-  bsplineWeights(lu, wu, dwu);
-  bsplineWeights(lv, wv, dwv);
+  basisWeights(lu, wu, dwu);
+  basisWeights(lv, wv, dwv);
   const V4 zero = {0.0, 0.0, 0.0, 0.0};
   V4 q = zero, qu = zero, qv = zero;
   for (int b = 0; b < 4; ++b) {
