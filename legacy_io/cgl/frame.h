@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "src/render/picture_buffer.h"
 #include "src/render/rgb_image.h"
 
 namespace prime::cgl {
@@ -24,7 +25,10 @@ struct Frame {
   static constexpr int kSize = 512;
   // kSize * kSize words, index (kSize - 1 - scanline) * kSize + x: the first
   // row held is scanline 511, the top of the picture.
-  std::vector<std::uint32_t> words = std::vector<std::uint32_t>(kSize * kSize, 0u);
+  // (Allocated in whole huge pages where the system grants them: see
+  // PictureAllocator.)
+  using Words = std::vector<std::uint32_t, PictureAllocator<std::uint32_t>>;
+  Words words = Words(kSize * kSize, 0u);
 
   std::uint32_t& at(int scanline, int x) {
     return words[static_cast<std::size_t>(kSize - 1 - scanline) * kSize + x];
