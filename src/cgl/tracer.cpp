@@ -251,29 +251,36 @@ int Tracer::shadowed(const Ray& ray, double tMax, TraceStats& stats) const {
 
 Spectrum Tracer::trace(const Ray& ray, int level, RayKind kind, TraceStats& stats,
                        ProbeReport* probe) const {
-  bool hitSomething = false;
-  return traceRay(ray, level, kind, stats, probe, hitSomething);
+  return traceRay(ray, level, kind, stats, probe);
+}
+
+std::size_t Tracer::startRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
+                             ProbeReport* probe) const {
+  stats.rays.countRay(kind);
+  if (!probe) return 0;
+  const std::size_t probeIndex = probe->rays.size();
+  ProbeRay pr;
+  pr.kind = kind;
+  pr.level = level;
+  pr.origin = ray.o;
+  pr.direction = ray.d;
+  probe->rays.push_back(pr);
+  return probeIndex;
 }
 
 Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
-                          ProbeReport* probe, bool& hitSomething) const {
-  stats.rays.countRay(kind);
-  std::size_t probeIndex = 0;
-  if (probe) {
-    probeIndex = probe->rays.size();
-    ProbeRay pr;
-    pr.kind = kind;
-    pr.level = level;
-    pr.origin = ray.o;
-    pr.direction = ray.d;
-    probe->rays.push_back(pr);
-  }
+                          ProbeReport* probe) const {
+  const std::size_t probeIndex = startRay(ray, level, kind, stats, probe);
   Hit hit;
-  hitSomething = intersect(ray, kTMin0, hit, stats);
-  if (!hitSomething) {
+  if (!intersect(ray, kTMin0, hit, stats)) {
     if (probe) probe->rays[probeIndex].colour = background_;
     return background_;
   }
+  return hitColour(ray, hit, level, stats, probe, probeIndex);
+}
+
+Spectrum Tracer::hitColour(const Ray& ray, const Hit& hit, int level, TraceStats& stats,
+                           ProbeReport* probe, std::size_t probeIndex) const {
   ++stats.rays.hits;
   const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
   const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
@@ -306,15 +313,12 @@ Spectrum Tracer::traceRay(const Ray& ray, int level, RayKind kind, TraceStats& s
     if (surface.kr > 0.0) {
       reflectDir = reflectDirection(ray.d, normal);
       hasReflect = true;
-      const Ray r{point, reflectDir};
-      bool h = false;
-      reflected = traceRay(r, level + 1, RayKind::Reflected, stats, probe, h);
+      reflected = traceRay({point, reflectDir}, level + 1, RayKind::Reflected, stats, probe);
     }
     if (surface.kt > 0.0) {
       if (refractDirection(ray.d, normal, surface.index, refractDir)) {
         hasRefract = true;
-        bool h = false;
-        refracted = traceRay({point, refractDir}, level + 1, RayKind::Transmitted, stats, probe, h);
+        refracted = traceRay({point, refractDir}, level + 1, RayKind::Transmitted, stats, probe);
       } else {
         ++stats.totalInternalReflections;  // CGL-Q45: the background stays
       }
@@ -493,13 +497,21 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
 
 Rgb8 Tracer::screenPoint(double x, double y, TraceStats& stats, ProbeReport* probe) const {
   const Ray ray = scene_.camera.primaryRay(x, y);
-  bool hitSomething = false;
-  const Spectrum cv = traceRay(ray, 0, RayKind::Primary, stats, probe, hitSomething);
+  // traceRay's steps, without its copy of the background spectrum for a
+  // miss: the pixel of a primary ray that misses is the background RGB.
+  const std::size_t probeIndex = startRay(ray, 0, RayKind::Primary, stats, probe);
+  Hit hit;
+  const bool hitSomething = intersect(ray, kTMin0, hit, stats);
+  if (!hitSomething && !probe)  // CGL-Q49: exactly the background RGB
+    return Rgb8{settings_.background[0], settings_.background[1], settings_.background[2]};
   Rgb8 rgb;
+  Spectrum cv;
   if (!hitSomething) {
-    // CGL-Q49: a primary ray that misses gives exactly the background RGB.
+    probe->rays[probeIndex].colour = background_;
+    cv = background_;
     rgb = Rgb8{settings_.background[0], settings_.background[1], settings_.background[2]};
   } else {
+    cv = hitColour(ray, hit, 0, stats, probe, probeIndex);
     rgb = toRgb(cv, settings_.phosphors);
   }
   if (probe) {

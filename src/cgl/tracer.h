@@ -132,8 +132,14 @@ class Tracer {
  private:
   bool intersectList(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
   bool intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
-  Spectrum traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats, ProbeReport* probe,
-                    bool& hitSomething) const;
+  // Trace: startRay (the count, the probe's record: its index), Intersect,
+  // then the background for a miss or hitColour for a hit.
+  Spectrum traceRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
+                    ProbeReport* probe) const;
+  std::size_t startRay(const Ray& ray, int level, RayKind kind, TraceStats& stats,
+                       ProbeReport* probe) const;
+  Spectrum hitColour(const Ray& ray, const Hit& hit, int level, TraceStats& stats,
+                     ProbeReport* probe, std::size_t probeIndex) const;
   // reflectDir / refractDir: the directions of the reflected and
   // transmitted rays (nullptr: none), Cook's extra lights.
   Spectrum shade(const Ray& ray, const Hit& hit, const Vec3& point, const Vec3& normal,
