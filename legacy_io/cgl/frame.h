@@ -26,8 +26,8 @@ struct Frame {
   // kSize * kSize words, index (kSize - 1 - scanline) * kSize + x: the first
   // row held is scanline 511, the top of the picture.
   // (Allocated in whole huge pages where the system grants them: see
-  // PictureAllocator.)
-  using Words = std::vector<std::uint32_t, PictureAllocator<std::uint32_t>>;
+  // LargeBufferAllocator.)
+  using Words = LargeBuffer<std::uint32_t>;
   Words words = Words(kSize * kSize, 0u);
 
   std::uint32_t& at(int scanline, int x) {

@@ -359,14 +359,14 @@ struct SpatialLeaf {
   int node;
 };
 
-int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count);
+int spatialRef(SplineSurface& s, LargeBuffer<SpatialLeaf>& items, int first, int count);
 
 // Splits items [first, first + count) along the longest extent of their
 // centres: at the middle of that extent, or, when a side would be empty,
 // into the `at` smallest by (centre on that axis, node index). Both sides
 // are sets defined by the items alone (a predicate, a strict order), so the
 // same with every library. Returns the size of the first side.
-int splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int at) {
+int splitAlongLongest(LargeBuffer<SpatialLeaf>& items, int first, int count, int at) {
   Aabb c;
   for (int k = first; k < first + count; ++k) c.add(items[static_cast<std::size_t>(k)].centre);
   int axis = 0;
@@ -387,7 +387,7 @@ int splitAlongLongest(std::vector<SpatialLeaf>& items, int first, int count, int
   return at;
 }
 
-int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+int spatialPacket(SplineSurface& s, LargeBuffer<SpatialLeaf>& items, int first, int count) {
   int groupFirst[4], groupCount[4];
   int groups = 0;
   if (count <= 4) {
@@ -425,7 +425,7 @@ int spatialPacket(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, 
   return at;
 }
 
-int spatialRef(SplineSurface& s, std::vector<SpatialLeaf>& items, int first, int count) {
+int spatialRef(SplineSurface& s, LargeBuffer<SpatialLeaf>& items, int first, int count) {
   if (count == 1) {
     const int node = items[static_cast<std::size_t>(first)].node;
     const SplineNode& n = s.nodes[static_cast<std::size_t>(node)];
@@ -447,7 +447,7 @@ void buildSpatialPackets(SplineSurface& s) {
   // A packet has at least two lanes but the root's: fewer packets than leaves.
   s.packets.reserve(static_cast<std::size_t>(s.leaves) + 1);
   if (s.nodes.empty()) return;
-  std::vector<SpatialLeaf> items;
+  LargeBuffer<SpatialLeaf> items;
   items.reserve(static_cast<std::size_t>(s.leaves));
   for (std::size_t k = 0; k < s.nodes.size(); ++k) {
     const SplineNode& n = s.nodes[k];

@@ -20,6 +20,7 @@
 #include "src/geom/aabb.h"
 #include "src/geom/ray.h"
 #include "src/math/vec.h"
+#include "src/render/picture_buffer.h"
 
 namespace prime::cgl {
 
@@ -97,12 +98,14 @@ struct SplineSurface {
   // The refined vertices W_{r,s} = w[(r + 4) + (s + 4) pu], r = -4 .. p.
   int pu = 0, pv = 0;
   std::vector<Vec3> w;
-  std::vector<SplineNode> nodes;  // nodes[0] is the root
+  // (The large arrays in whole huge pages where the system grants them:
+  // LargeBufferAllocator, src/render/picture_buffer.h.)
+  LargeBuffer<SplineNode> nodes;  // nodes[0] is the root
   int leaves = 0;
   // CGL-D170: packets[0] holds the root alone (one lane); every interior
   // node has one packet; leafData[k] is leaf k.
-  std::vector<SplinePacket> packets;
-  std::vector<SplineLeaf> leafData;
+  LargeBuffer<SplinePacket> packets;
+  LargeBuffer<SplineLeaf> leafData;
   double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
   Aabb hull;             // the control vertices' box: contains every surface point
   double refineSeconds = 0, treeSeconds = 0;

@@ -24,23 +24,23 @@ void adviseHugePages(void* data, std::size_t bytes) {
 
 namespace {
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
-constexpr std::size_t kPictureBytes = std::size_t{1} << 20;  // a megabyte or more
+constexpr std::size_t kLargeBytes = std::size_t{256} << 10;  // a quarter megabyte or more
 }  // namespace
 
-void* allocatePicture(std::size_t bytes) {
-  if (bytes < kPictureBytes) return ::operator new(bytes);
+void* allocateLargeBuffer(std::size_t bytes) {
+  if (bytes < kLargeBytes) return ::operator new(bytes);
   const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-  void* p = ::operator new(rounded, std::align_val_t{kHugePage});
+  void* p = ::operator new (rounded, std::align_val_t{kHugePage});
   adviseHugePages(p, rounded);
   return p;
 }
 
-void freePicture(void* p, std::size_t bytes) noexcept {
-  if (bytes < kPictureBytes) {
+void freeLargeBuffer(void* p, std::size_t bytes) noexcept {
+  if (bytes < kLargeBytes) {
     ::operator delete(p);
     return;
   }
-  ::operator delete(p, std::align_val_t{kHugePage});
+  ::operator delete (p, std::align_val_t{kHugePage});
 }
 
 }  // namespace prime

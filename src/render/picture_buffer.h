@@ -20,33 +20,35 @@ namespace prime {
 // has no such advice).
 void adviseHugePages(void* data, std::size_t bytes);
 
-// For a picture of a megabyte or more that is not large enough for
-// assignPicture's advice to find a whole huge page inside it (the CGL
-// package's 1 MiB frame): storage rounded up to whole, aligned 2 MiB pages,
-// advised before the first touch. One page fault then backs the frame
-// instead of 256 (about 3 ms of a small render on a virtual machine, where
-// a fault costs some 12 us); the bytes past the picture are never touched
-// unless the system backs them with the same huge page, which costs a
-// clear of memory, not a fault per page. Smaller requests are ordinary.
-void* allocatePicture(std::size_t bytes);
-void freePicture(void* p, std::size_t bytes) noexcept;
+// For the large buffers every run builds and touches at once (the CGL
+// package's 1 MiB frame, too small for assignPicture's advice to find a
+// whole huge page inside it; a spline surface's tree and packets): storage
+// of a quarter megabyte or more rounded up to whole, aligned 2 MiB pages and
+// advised before the first touch. One page fault then backs 2 MiB instead
+// of 512 faults of 4 KiB (about 12 us each on a virtual machine: 3 ms for
+// the CGL frame alone); the rest of the last page is zeroed by the system,
+// not faulted. Smaller requests are ordinary.
+void* allocateLargeBuffer(std::size_t bytes);
+void freeLargeBuffer(void* p, std::size_t bytes) noexcept;
 
 template <class T>
-struct PictureAllocator {
+struct LargeBufferAllocator {
   using value_type = T;
-  PictureAllocator() = default;
+  LargeBufferAllocator() = default;
   template <class U>
-  PictureAllocator(const PictureAllocator<U>&) noexcept {}
+  LargeBufferAllocator(const LargeBufferAllocator<U>&) noexcept {}
   T* allocate(std::size_t n) {
     if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
-    return static_cast<T*>(allocatePicture(n * sizeof(T)));
+    return static_cast<T*>(allocateLargeBuffer(n * sizeof(T)));
   }
-  void deallocate(T* p, std::size_t n) noexcept { freePicture(p, n * sizeof(T)); }
+  void deallocate(T* p, std::size_t n) noexcept { freeLargeBuffer(p, n * sizeof(T)); }
   template <class U>
-  bool operator==(const PictureAllocator<U>&) const noexcept {
+  bool operator==(const LargeBufferAllocator<U>&) const noexcept {
     return true;
   }
 };
+template <class T>
+using LargeBuffer = std::vector<T, LargeBufferAllocator<T>>;
 
 // v.assign(n, value), with the storage advised (adviseHugePages) between
 // its allocation and its first touch when it is large.
