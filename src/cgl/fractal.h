@@ -26,6 +26,7 @@
 #include "src/geom/ray.h"
 #include "src/math/matrix.h"
 #include "src/math/vec.h"
+#include "src/render/picture_buffer.h"
 
 namespace prime::cgl {
 
@@ -84,8 +85,10 @@ struct FractalFacet {
 // leaves are the last 4^divisions nodes, leaf k holding facets[k].
 struct FractalSurface {
   int divisions = 0;
-  std::vector<Aabb> boxes;           // every node's box, padded (see fractal.cpp)
-  std::vector<FractalFacet> facets;  // in leaf order
+  // (In whole huge pages where the system grants them: LargeBufferAllocator,
+  // src/render/picture_buffer.h; 142 MB at 10 divisions.)
+  LargeBuffer<Aabb> boxes;           // every node's box, padded (see fractal.cpp)
+  LargeBuffer<FractalFacet> facets;  // in leaf order
   std::size_t firstLeaf = 0;         // boxes index of leaf 0
   // The texture frame of section 5.3 (the transformed standard triangle's
   // V0, E1 = V1 - V0, N_E1 = E2 - alpha E1) and the (u, v) extents over every
