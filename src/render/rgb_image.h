@@ -12,12 +12,14 @@ namespace prime {
 
 struct RgbImage {
   int width = 0, height = 0;
-  std::vector<Rgb> pixels;  // width * height, or empty when not kept
+  // width * height, or empty when not kept (in whole huge pages where the
+  // system grants them: LargeBufferAllocator)
+  LargeBuffer<Rgb> pixels;
 
   void assign(int w, int h) {
     width = w;
     height = h;
-    assignPicture(pixels, static_cast<std::size_t>(w) * h, Rgb{});
+    pixels.assign(static_cast<std::size_t>(w) * h, Rgb{});
   }
   bool empty() const { return pixels.empty(); }
   Rgb& at(int row, int column) { return pixels[static_cast<std::size_t>(row) * width + column]; }

@@ -60,7 +60,7 @@ TEST(WalkRenderer, AnAbandonedPassStopsAtOnce) {
 RenderResult tiny(std::vector<Rgb> colours, std::vector<std::int16_t> indices) {
   RenderResult r;
   r.rgb.assign(2, 2);
-  r.rgb.pixels = std::move(colours);
+  r.rgb.pixels.assign(colours.begin(), colours.end());
   r.graph.pixels = std::move(indices);
   return r;
 }
