@@ -432,9 +432,14 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     tex.texels.resize(frame.words.size());
     // A texel's spectrum depends on its colour only: each colour is converted
     // once (a map holds few colours; the same numbers as converting every texel).
+    // A texel the colour of the one before it (a run: most of a map) copies it.
     std::unordered_map<std::uint32_t, std::array<double, 3>> converted;
     for (std::size_t i = 0; i < frame.words.size(); ++i) {
       const std::uint32_t w = frame.words[i] & 0xffffffu;
+      if (i > 0 && w == (frame.words[i - 1] & 0xffffffu)) {
+        tex.texels[i] = tex.texels[i - 1];
+        continue;
+      }
       auto it = converted.find(w);
       if (it == converted.end()) {
         const Spectrum s = rgbToSpectrum(Rgb8{redOf(w), greenOf(w), blueOf(w)}, options.phosphors);

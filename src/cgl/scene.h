@@ -22,6 +22,7 @@
 #include "src/cgl/primitives.h"
 #include "src/cgl/spline.h"
 #include "src/geom/ray.h"
+#include "src/render/picture_buffer.h"
 
 namespace prime::cgl {
 
@@ -44,8 +45,9 @@ struct Camera {
 struct Texture {
   static constexpr std::array<int, 3> kSamples{7, 17, 22};
   std::string path;  // where it was found
-  // 512 * 512 texels, index row * 512 + column, row 0 the top of the image.
-  std::vector<std::array<double, 3>> texels;
+  // 512 * 512 texels, index row * 512 + column, row 0 the top of the image
+  // (6 MB: in whole huge pages where the system grants them, LargeBuffer).
+  LargeBuffer<std::array<double, 3>> texels;
 };
 
 struct Surface {
