@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "legacy_io/prime/turbo_c.h"
+#include "src/render/picture_buffer.h"
 
 namespace prime::io {
 
@@ -19,7 +20,7 @@ struct GraphFile {
   std::int16_t graphType = 1;                     // 0 = VGA (DETECT), 1 = IBM8514HI
   std::int16_t numPixAcross = 0, numPixDown = 0;  // header values, as written
   bool inclusive = true;                          // pixel grid is (across+1) x (down+1)
-  std::vector<std::int16_t> pixels;               // raw 16-bit values (Q12: not masked)
+  LargeBuffer<std::int16_t> pixels;               // raw 16-bit values (Q12: not masked)
 
   int width() const { return numPixAcross + (inclusive ? 1 : 0); }
   int height() const { return numPixDown + (inclusive ? 1 : 0); }

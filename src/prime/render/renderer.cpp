@@ -215,7 +215,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   result.graph.numPixAcross = static_cast<std::int16_t>(camera.numPixAcross());
   result.graph.numPixDown = static_cast<std::int16_t>(camera.numPixDown());
   result.graph.inclusive = true;
-  assignPicture(result.graph.pixels, static_cast<std::size_t>(rows) * columns, std::int16_t{0});
+  result.graph.pixels.assign(static_cast<std::size_t>(rows) * columns, std::int16_t{0});
   if (settings.keepColours) result.rgb.assign(columns, rows);
 
   // Only the chosen profile's tracer is built. The 1991 profile tests boxes

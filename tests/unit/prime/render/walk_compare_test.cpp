@@ -61,7 +61,7 @@ RenderResult tiny(std::vector<Rgb> colours, std::vector<std::int16_t> indices) {
   RenderResult r;
   r.rgb.assign(2, 2);
   r.rgb.pixels.assign(colours.begin(), colours.end());
-  r.graph.pixels = std::move(indices);
+  r.graph.pixels.assign(indices.begin(), indices.end());
   return r;
 }
 
