@@ -159,28 +159,17 @@ class TreeBuilder {
       : s_(s), ua_(std::move(ua)), vb_(std::move(vb)) {}
 
   void build() {
-    const int a1 = static_cast<int>(ua_.size()) - 1, b1 = static_cast<int>(vb_.size()) - 1;
-    // The tree's size first, so that its nodes are allocated once (growing
-    // the vector node by node touched twice its final size in fresh pages).
+    // Every interior node has at least two children, so a tree of L leaves
+    // has at most 2L - 1 nodes: reserved at once (growing the vector node by
+    // node touched twice its final size in fresh pages).
+    const std::size_t leaves = ua_.size() * vb_.size();
     s_.nodes.clear();
-    s_.nodes.reserve(static_cast<std::size_t>(count(0, a1, 0, b1)));
+    s_.nodes.reserve(2 * leaves);
     s_.nodes.assign(1, SplineNode{});
-    node(0, 0, a1, 0, b1);
+    node(0, 0, static_cast<int>(ua_.size()) - 1, 0, static_cast<int>(vb_.size()) - 1);
   }
 
  private:
-  // The nodes node() makes for the rectangle [a0, a1] x [b0, b1], itself included.
-  static std::int64_t count(int a0, int a1, int b0, int b1) {
-    if ((a0 == a1 && b0 == b1) || a1 < a0 || b1 < b0) return 1;
-    std::int64_t n = 1;
-    const int am = a1 > a0 ? (a0 + a1) / 2 : a1, bm = b1 > b0 ? (b0 + b1) / 2 : b1;
-    const int as[2][2] = {{a0, am}, {am + 1, a1}}, bs[2][2] = {{b0, bm}, {bm + 1, b1}};
-    for (int j = 0; j < (b1 > b0 ? 2 : 1); ++j)
-      for (int i = 0; i < (a1 > a0 ? 2 : 1); ++i)
-        n += count(as[i][0], as[i][1], bs[j][0], bs[j][1]);
-    return n;
-  }
-
   const Vec3& wAt(int r, int s) const {
     return s_.w[static_cast<std::size_t>((r + 4) + (s + 4) * s_.pu)];
   }
@@ -469,11 +458,17 @@ void buildSpatialPackets(SplineSurface& s) {
 // The expected box tests of a ray through the root's box (the surface area
 // heuristic): each packet's lanes are tested when its box, the lane above
 // it, is entered, in proportion to that box's area.
+namespace {
+// Half a box's surface area from its extents (the heuristic's measure).
+double halfArea(double x, double y, double z) {
+  return x * y + y * z + z * x;
+}
+}  // namespace
+
 double packetCost(const SplineSurface& s) {
   auto area = [](const SplinePacket& p, int lane) {
-    const double x = p.hi[0][lane] - p.lo[0][lane], y = p.hi[1][lane] - p.lo[1][lane],
-                 z = p.hi[2][lane] - p.lo[2][lane];
-    return x * y + y * z + z * x;
+    return halfArea(p.hi[0][lane] - p.lo[0][lane], p.hi[1][lane] - p.lo[1][lane],
+                    p.hi[2][lane] - p.lo[2][lane]);
   };
   if (s.packets.empty()) return 0.0;
   const double root = area(s.packets[0], 0);
@@ -493,8 +488,7 @@ double packetCost(const SplineSurface& s) {
 // whose child is interior adds area(child's box) / root * child's count.
 double documentPacketCost(const SplineSurface& s) {
   auto area = [](const Aabb& b) {
-    const double x = b.hi[0] - b.lo[0], y = b.hi[1] - b.lo[1], z = b.hi[2] - b.lo[2];
-    return x * y + y * z + z * x;
+    return halfArea(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]);
   };
   if (s.nodes.empty()) return 0.0;
   const SplineNode& rootNode = s.nodes[0];
@@ -527,8 +521,8 @@ void buildTraversal(SplineSurface& s, PacketLayout layout) {
   buildSpatialPackets(s);
   if (layout == PacketLayout::Spatial) return;
   // The document's grouping is built again, into the same storage (pages
-  // already touched), only when it costs fewer box tests than the spatial
-  // one: packetCost of it is documentPacketCost, to the bit.
+  // already touched), when it costs no more box tests than the spatial one:
+  // packetCost of it is documentPacketCost, to the bit.
   if (!(packetCost(s) < documentPacketCost(s))) buildPackets(s);
 }
 
