@@ -32,7 +32,8 @@ void addModelCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--verify", *verify,
                 "Build nothing: finish an interrupted run and check the databases against "
                 "DIR/prime-model.stamp (M19)");
-  cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
+  cmd->add_flag("-q,--quiet", *quiet,
+                "No summary (warnings about the scene still go to standard error)");
   cmd->callback([=, &action] {
     action = [=] {
       const io::SceneDir scene(*dir);

@@ -11,13 +11,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "palette/png_image.h"
 #include "tests/support/compare_pictures.h"
 #include "tests/support/run_prime.h"
+#include "tests/support/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -30,23 +30,7 @@ const fs::path kScenes = CGL_SCENES;
 const fs::path kGolden = CGL_GOLDEN;
 const std::string kTextures = " --textures " + (kScenes / "textures").string();
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("prime-cgl-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 std::vector<std::uint8_t> bytesOf(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -77,19 +61,20 @@ TEST_P(CglReplay, RendersTheGoldenPicture) {
                                   << ".cgl: add it (tests/golden/cgl/README.md)";
   TempDir dir;
   const auto r = runPrime("trace " + scenePath(scene) + " --no-window -q --threads 2 --png " +
-                          (dir / "out.png") + " --rle " + (dir / "out.rle"));
+                          (dir / "out.png").string() + " --rle " + (dir / "out.rle").string());
   ASSERT_EQ(r.status, 0) << r.output;
   const Image8 got = readPng(dir / "out.png"), want = readPng(golden.string());
   EXPECT_EQ(test::comparePictures(got, want), "") << scene;
   // The RLE file holds the same pixels: `prime export` turns it into the same PNG.
-  const auto e = runPrime("export " + (dir / "out.rle") + " " + (dir / "back.png") + " -q");
+  const auto e =
+      runPrime("export " + (dir / "out.rle").string() + " " + (dir / "back.png").string() + " -q");
   ASSERT_EQ(e.status, 0) << e.output;
   EXPECT_EQ(test::comparePictures(readPng(dir / "back.png"), got), "") << scene;
   // The document's object list for every ray (--linear-search) and the BVH
   // find the same hits: the same bytes (CGL-D43).
   const auto l =
       runPrime("trace " + scenePath(scene) + " --no-window -q --threads 2 --linear-search --rle " +
-               (dir / "list.rle"));
+               (dir / "list.rle").string());
   ASSERT_EQ(l.status, 0) << l.output;
   EXPECT_EQ(bytesOf(dir / "out.rle"), bytesOf(dir / "list.rle")) << scene;
 }
@@ -123,10 +108,10 @@ TEST(CglReplay, TheSameBytesForAnyThreadCount) {
 // the work (9 box tests per ray instead of 54 polygon tests).
 TEST(CglReplay, SuperBoxesChangeNoPixel) {
   TempDir dir;
-  const auto a =
-      runPrime("trace " + scenePath("nine-cubes") + " --no-window --rle " + (dir / "a.rle"));
-  const auto b =
-      runPrime("trace " + scenePath("nine-cubes-boxed") + " --no-window --rle " + (dir / "b.rle"));
+  const auto a = runPrime("trace " + scenePath("nine-cubes") + " --no-window --rle " +
+                          (dir / "a.rle").string());
+  const auto b = runPrime("trace " + scenePath("nine-cubes-boxed") + " --no-window --rle " +
+                          (dir / "b.rle").string());
   ASSERT_EQ(a.status, 0) << a.output;
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_EQ(bytesOf(dir / "a.rle"), bytesOf(dir / "b.rle"));
@@ -144,12 +129,12 @@ TEST(CglReplay, TheDocumentsCopiesReadLenientlyAsTheRepairedScene) {
   EXPECT_EQ(strict.status, 1) << strict.output;
   EXPECT_NE(strict.output.find("doc-figure59.cgl:"), std::string::npos) << strict.output;
   EXPECT_NE(strict.output.find("--lenient"), std::string::npos) << strict.output;
-  const auto repaired =
-      runPrime("trace " + scenePath("checkerboard") + " --no-window -q --rle " + (dir / "a.rle"));
+  const auto repaired = runPrime("trace " + scenePath("checkerboard") + " --no-window -q --rle " +
+                                 (dir / "a.rle").string());
   ASSERT_EQ(repaired.status, 0) << repaired.output;
   for (const std::string copy : {"doc-figure59", "doc-figure2"}) {
     const auto r = runPrime("trace " + scenePath(copy) + " --lenient" + kTextures +
-                            " --no-window --rle " + (dir / "b.rle"));
+                            " --no-window --rle " + (dir / "b.rle").string());
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("repaired:"), std::string::npos) << r.output;
     EXPECT_EQ(bytesOf(dir / "a.rle"), bytesOf(dir / "b.rle")) << copy;
@@ -161,14 +146,15 @@ TEST(CglReplay, TheDocumentsCopiesReadLenientlyAsTheRepairedScene) {
 TEST(CglReplay, TheCallStatementOfAppendix2) {
   TempDir dir;
   const auto a = runPrime("trace -yh 300 -xl 100 -d 0 -a 0 -s -q " + scenePath("glass") +
-                          " --no-window -o " + (dir / "a.rle"));
+                          " --no-window -o " + (dir / "a.rle").string());
   ASSERT_EQ(a.status, 0) << a.output;
-  const auto b = runPrime("trace " + scenePath("glass") + " --yhigh 300 --xleft 100 --depth 0 " +
-                          "--aalevel 0 --shadows --quiet --no-window --rle " + (dir / "b.rle"));
+  const auto b =
+      runPrime("trace " + scenePath("glass") + " --yhigh 300 --xleft 100 --depth 0 " +
+               "--aalevel 0 --shadows --quiet --no-window --rle " + (dir / "b.rle").string());
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_EQ(bytesOf(dir / "a.rle"), bytesOf(dir / "b.rle"));
   const auto c =
-      runPrime("trace " + scenePath("glass") + " -q --no-window --rle " + (dir / "c.rle"));
+      runPrime("trace " + scenePath("glass") + " -q --no-window --rle " + (dir / "c.rle").string());
   ASSERT_EQ(c.status, 0) << c.output;
   EXPECT_NE(bytesOf(dir / "a.rle"), bytesOf(dir / "c.rle")) << "the overrides changed nothing";
 }
@@ -193,7 +179,7 @@ TEST(CglReplay, ABadSceneExitsOneAndWritesNothing) {
 TEST(CglReplay, AFifoOrADeviceIsRefusedAtOnce) {
   TempDir dir;
   ASSERT_EQ(::mkfifo((dir / "scene.cgl").c_str(), 0600), 0);
-  const auto r = runPrime("trace --format cgl " + (dir / "scene.cgl") + " --no-window -q");
+  const auto r = runPrime("trace --format cgl " + (dir / "scene.cgl").string() + " --no-window -q");
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("is a FIFO (named pipe), not a CGL scene file"), std::string::npos)
       << r.output;
@@ -227,7 +213,7 @@ TEST(CglReplay, AFractalNodeIsTraced) {
 TEST(CglProbe, ThePixelsColourAndItsRays) {
   TempDir dir;
   const auto t = runPrime("trace " + scenePath("checkerboard") +
-                          " --aalevel 0 --no-window -q --png " + (dir / "a.png"));
+                          " --aalevel 0 --no-window -q --png " + (dir / "a.png").string());
   ASSERT_EQ(t.status, 0) << t.output;
   const Image8 img = readPng(dir / "a.png");
   // The mirror ball: pixel (200, 240) (y from the bottom), image row 511 - 240.

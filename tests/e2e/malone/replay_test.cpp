@@ -4,20 +4,18 @@
 // it was committed: tests/golden/malone/README.md), the same for any thread
 // count, and a bad scene must exit 1 and leave no picture behind.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "palette/png_image.h"
 #include "tests/support/compare_pictures.h"
+#include "tests/support/run_prime.h"
+#include "tests/support/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -27,40 +25,9 @@ namespace {
 const fs::path kScenes = MALONE_SCENES;
 const fs::path kGolden = MALONE_GOLDEN;
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("prime-malone-" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-struct PrimeRun {
-  int status = 0;
-  std::string output;
-};
-
-PrimeRun prime(const std::string& args, const fs::path& dir) {
-  const fs::path log = dir / "log.txt";
-  const std::string command = std::string(PRIME_EXE) + " " + args + " > " + log.string() + " 2>&1";
-  const int raw = std::system(command.c_str());
-  PrimeRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(log);
-  std::ostringstream text;
-  text << in.rdbuf();
-  r.output = text.str();
-  return r;
-}
+using test::CommandResult;
+using test::runPrime;
+using test::TempDir;
 
 std::vector<std::string> scenes() {
   std::vector<std::string> names;
@@ -79,10 +46,9 @@ TEST_P(MaloneReplay, RendersTheGoldenPicture) {
                                   << ".mal: add it (tests/golden/malone/README.md)";
   TempDir dir;
   const fs::path png = dir.path() / "out.png", ppm = dir.path() / "out.ppm";
-  const PrimeRun r =
-      prime("trace " + (kScenes / (scene + ".mal")).string() + " --no-window -q --png " +
-                png.string() + " --ppm " + ppm.string() + " --threads 2",
-            dir.path());
+  const CommandResult r =
+      runPrime("trace " + (kScenes / (scene + ".mal")).string() + " --no-window -q --png " +
+               png.string() + " --ppm " + ppm.string() + " --threads 2");
   ASSERT_EQ(r.status, 0) << r.output;
   const Image8 got = readPng(png.string()), want = readPng(golden.string());
   EXPECT_EQ(test::comparePictures(got, want), "") << scene;
@@ -110,10 +76,9 @@ TEST(MaloneReplay, TheSameBytesForAnyThreadCount) {
   std::vector<std::vector<std::uint8_t>> pictures;
   for (int threads : {1, 2, 3}) {
     const fs::path out = dir.path() / ("t" + std::to_string(threads) + ".ppm");
-    const PrimeRun r =
-        prime("trace " + (kScenes / "glass.mal").string() + " --no-window -q --ppm " +
-                  out.string() + " --threads " + std::to_string(threads),
-              dir.path());
+    const CommandResult r =
+        runPrime("trace " + (kScenes / "glass.mal").string() + " --no-window -q --ppm " +
+                 out.string() + " --threads " + std::to_string(threads));
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream in(out, std::ios::binary);
     pictures.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -139,8 +104,8 @@ TEST(MaloneReplay, ABadSceneExitsOneAndWritesNothing) {
   TempDir dir;
   const fs::path scene = dir.path() / "bad.mal", out = dir.path() / "out.ppm";
   std::ofstream(scene) << "102 0 2 3 0 0 0 1 0 0 0 1 0 64 64\n1 0.5 0 0\n";  // ends inside a sphere
-  const PrimeRun r =
-      prime("trace " + scene.string() + " --no-window --ppm " + out.string(), dir.path());
+  const CommandResult r =
+      runPrime("trace " + scene.string() + " --no-window --ppm " + out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("bad.mal:2:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("sphere, field centre z"), std::string::npos) << r.output;
@@ -153,12 +118,11 @@ TEST(MaloneReplay, TheFormatIsDetectedOrNamed) {
   // A Malone scene under a name that says nothing, and --format malone.
   const fs::path scene = dir.path() / "scene.txt";
   fs::copy_file(kScenes / "doc-scene.mal", scene);
-  const PrimeRun a = prime("trace " + scene.string() + " --no-window -q", dir.path());
+  const CommandResult a = runPrime("trace " + scene.string() + " --no-window -q");
   EXPECT_EQ(a.status, 0) << a.output;
-  const PrimeRun b =
-      prime("trace --format malone " + scene.string() + " --no-window -q", dir.path());
+  const CommandResult b = runPrime("trace --format malone " + scene.string() + " --no-window -q");
   EXPECT_EQ(b.status, 0) << b.output;
-  const PrimeRun probe = prime("probe " + scene.string() + " --pixel 128 128", dir.path());
+  const CommandResult probe = runPrime("probe " + scene.string() + " --pixel 128 128");
   EXPECT_EQ(probe.status, 0) << probe.output;
   EXPECT_NE(probe.output.find("bytes 7 7 7"), std::string::npos) << probe.output;
 }
@@ -172,9 +136,8 @@ namespace {
 TEST(MaloneBench, TimesAMaloneScene) {
   TempDir dir;
   const fs::path csv = dir.path() / "bench.csv";
-  const PrimeRun r = prime("bench " + (kScenes / "doc-sphere.mal").string() +
-                               " --runs 1 --threads 1 --csv " + csv.string(),
-                           dir.path());
+  const CommandResult r = runPrime("bench " + (kScenes / "doc-sphere.mal").string() +
+                                   " --runs 1 --threads 1 --csv " + csv.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("doc-sphere.mal"), std::string::npos) << r.output;
   std::ifstream in(csv);
@@ -194,10 +157,9 @@ namespace {
 TEST(MaloneView8514, ThePictureThroughPrimesPalette) {
   TempDir dir;
   const fs::path png = dir.path() / "p.png", view = dir.path() / "v.png";
-  const PrimeRun r =
-      prime("trace " + (kScenes / "doc-sphere.mal").string() + " --no-window -q --png " +
-                png.string() + " --png-8514 " + view.string(),
-            dir.path());
+  const CommandResult r =
+      runPrime("trace " + (kScenes / "doc-sphere.mal").string() + " --no-window -q --png " +
+               png.string() + " --png-8514 " + view.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const Image8 truecolour = readPng(png.string()), shown = readPng(view.string());
   EXPECT_EQ(shown.width, truecolour.width);
@@ -220,9 +182,8 @@ namespace {
 TEST(MaloneReplay, AMissingOutputDirectoryIsFoundBeforeRendering) {
   TempDir dir;
   const fs::path out = dir.path() / "no-such-dir" / "x.ppm";
-  const PrimeRun r =
-      prime("trace " + (kScenes / "doc-sphere.mal").string() + " --no-window --ppm " + out.string(),
-            dir.path());
+  const CommandResult r = runPrime("trace " + (kScenes / "doc-sphere.mal").string() +
+                                   " --no-window --ppm " + out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("no-such-dir does not exist"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("traced"), std::string::npos) << r.output;  // nothing rendered

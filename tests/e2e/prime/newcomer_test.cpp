@@ -135,16 +135,23 @@ TEST(Check, IndxOneIsHarmlessWithoutTransmission) {
   EXPECT_EQ(r.status, 0) << r.output;
 }
 
+// Warnings reach the user with or without -q: -q drops the summary only, as
+// its help says.
 TEST(Check, ModelWarnsButBuilds) {
-  TempScene s;
-  fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
-           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-  s.write("obj/H1.txt", kBadHue);
-  const auto r = runPrime("model " + q(s.path()));
-  EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_THAT(r.output,
-              HasSubstr("prime: warning: " + (s.path() / "obj/H1.txt").string() + ":4: kRH"));
-  EXPECT_TRUE(s.exists("obj/O1"));
+  for (const std::string quiet : {"", "-q "}) {
+    TempScene s;
+    fs::copy(fs::path(PRIME_TEST_DATA) / "sphere", s.path(),
+             fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    s.write("obj/H1.txt", kBadHue);
+    const auto r = runPrime("model " + quiet + q(s.path()));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_THAT(r.output,
+                HasSubstr("prime: warning: " + (s.path() / "obj/H1.txt").string() + ":4: kRH"));
+    EXPECT_EQ(r.output.find("modelled ") != std::string::npos, quiet.empty()) << r.output;
+    EXPECT_TRUE(s.exists("obj/O1"));
+  }
+  EXPECT_THAT(runPrime("model --help").output,
+              HasSubstr("warnings about the scene still go to standard error"));
 }
 
 TEST(New, WritesASceneThatModelsChecksCleanAndRenders) {
