@@ -5,7 +5,6 @@
 #include "src/malone/pov_export.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +14,7 @@
 #include <sstream>
 
 #include "legacy_io/malone/input.h"
+#include "tests/support/temp_dir.h"
 
 namespace prime::malone {
 namespace {
@@ -180,9 +180,8 @@ TEST(PovExport, PovRayParsesEveryShippedScene) {
   if (std::system("command -v povray >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "povray is not installed (apt-get install povray)";
   const std::filesystem::path scenes = std::filesystem::path(PRIME_SCENES) / ".." / "malone";
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("malone_pov_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir temp("malone_pov_test_");
+  const std::filesystem::path& dir = temp.path();
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
     if (entry.path().extension() != ".mal") continue;
@@ -201,7 +200,6 @@ TEST(PovExport, PovRayParsesEveryShippedScene) {
     ++count;
   }
   EXPECT_GE(count, 10);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

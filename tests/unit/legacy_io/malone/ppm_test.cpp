@@ -5,13 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <random>
 #include <string>
 
 #include "legacy_io/common/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace prime::malone {
 namespace {
@@ -56,10 +56,7 @@ TEST(MalonePpm, RowsFromTheTop) {
 }
 
 TEST(MalonePpm, WriteReadRoundTrip) {
-  std::random_device rd;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("malone-ppm-" + std::to_string(rd()) + "-" + std::to_string(rd()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("malone-ppm-");
   const std::string path = (dir / "out.ppm").string();
   RgbImage image;
   image.assign(5, 3);
@@ -79,14 +76,10 @@ TEST(MalonePpm, WriteReadRoundTrip) {
     }
   // A second write of what was read gives the same bytes.
   EXPECT_EQ(ppmBytes(back), ppmBytes(image));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(MalonePpm, ReadRefusesOtherFormats) {
-  std::random_device rd;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("malone-ppm-" + std::to_string(rd()) + "-" + std::to_string(rd()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("malone-ppm-");
   const std::string path = (dir / "p3.ppm").string();
   { std::ofstream(path, std::ios::binary) << "P3\n1 1\n255\n0 0 0\n"; }
   EXPECT_THROW(readPpm(path), io::InputError);
@@ -100,7 +93,6 @@ TEST(MalonePpm, ReadRefusesOtherFormats) {
     EXPECT_EQ(e.field(), "pixels");
     EXPECT_EQ(e.found(), "3 bytes");
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
