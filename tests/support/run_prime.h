@@ -20,7 +20,10 @@ inline CommandResult runPrime(const std::string& args) {
   std::array<char, 4096> buf;
   while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
   const int status = pclose(p);
-  return {WEXITSTATUS(status), out};
+  // A run that did not exit (killed by a signal, should the shell hand it the
+  // process) is never status 0: the shell's 128 + signal, or -1.
+  if (WIFEXITED(status)) return {WEXITSTATUS(status), out};
+  return {WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1, out};
 }
 
 }  // namespace prime::test
