@@ -8,10 +8,14 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 # Debian packages the build and the tests need.
-PACKAGES=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev
+PACKAGES=(cmake ninja-build g++ binutils pkg-config libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libsdl2-dev libpng-dev libimagequant-dev libxxhash-dev nettle-dev clang libclang-rt-14-dev
-          xvfb xauth x11-apps xdotool   # window tests: an X server, xwd (x11-apps), key presses
+          xvfb xauth x11-apps x11-utils xdotool   # window tests: an X server, xwd (x11-apps),
+                                                  # xwininfo (x11-utils), key presses
+          python3                       # the docs, tools and hand-check tests
           help2man groff-base)          # the man page (generated from the CLI) and its check
+# tests/install/check_test_programs.py fails when a program the tests run is
+# not provided by a package above.
 
 setup() {
   local missing=()
@@ -25,6 +29,15 @@ setup() {
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   fi
+}
+
+# stage NAME COMMAND...: runs a stage of the test command and prints its time.
+stage() {
+  local name=$1 start=$SECONDS
+  shift
+  echo "prime.sh: stage $name"
+  "$@"
+  echo "prime.sh: stage $name took $((SECONDS - start)) s"
 }
 
 build() {  # build PRESET [TARGET...]
@@ -51,13 +64,15 @@ case "${1:-}" in
     echo "  those 256 colours. Next: README.md, docs/user-guide.md."
     ;;
   test)
-    setup
-    build release
-    ctest --preset release -j "$(nproc)"
-    build asan
-    ctest --preset asan -j "$(nproc)"
-    build fuzz   # only the fuzz targets; each fuzz.<name> test fuzzes for 20 s
-    ctest --preset fuzz -j "$(nproc)"
+    total=$SECONDS
+    stage setup setup
+    stage "build release" build release
+    stage "test release" ctest --preset release -j "$(nproc)"
+    stage "build asan" build asan
+    stage "test asan" ctest --preset asan -j "$(nproc)"
+    stage "build fuzz" build fuzz   # only the fuzz targets; each fuzz.<name> test fuzzes for 20 s
+    stage "test fuzz" ctest --preset fuzz -j "$(nproc)"
+    echo "prime.sh: test took $((SECONDS - total)) s in all"
     ;;
   build)
     setup
