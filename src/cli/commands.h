@@ -9,23 +9,18 @@ namespace prime::cli {
 using Action = std::function<int()>;
 
 // Registration functions; each adds one subcommand and sets `action` when it
-// is the one chosen.
+// is the one chosen. The verbs every system shares (trace, probe, bench,
+// export-pov, export, view) are in src/cli/system.h.
 void addModelCommand(CLI::App& app, Action& action);
 void addDumpCommand(CLI::App& app, Action& action);
-void addTraceCommand(CLI::App& app, Action& action);
-void addProbeCommand(CLI::App& app, Action& action);
-void addViewCommand(CLI::App& app, Action& action);       // cmd_view.cpp
-void addExportCommand(CLI::App& app, Action& action);     // cmd_export.cpp
-void addDiffCommand(CLI::App& app, Action& action);       // cmd_diff.cpp
-void addPaletteCommand(CLI::App& app, Action& action);    // cmd_palette.cpp
-void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
-void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
-void addPlate1Command(CLI::App& app, Action& action);     // cmd_plate1.cpp
-void addStressCommand(CLI::App& app, Action& action);     // cmd_stress.cpp
-void addQuantizeCommand(CLI::App& app, Action& action);   // cmd_quantize.cpp (every system's PNG)
-void addCheckCommand(CLI::App& app, Action& action);      // cmd_check.cpp
-void addNewCommand(CLI::App& app, Action& action);        // cmd_new.cpp
-void addCompareCommand(CLI::App& app, Action& action);    // cmd_compare.cpp
-void addWalkCommand(CLI::App& app, Action& action);       // cmd_walk.cpp
+void addDiffCommand(CLI::App& app, Action& action);      // cmd_diff.cpp
+void addPaletteCommand(CLI::App& app, Action& action);   // cmd_palette.cpp
+void addPlate1Command(CLI::App& app, Action& action);    // cmd_plate1.cpp
+void addStressCommand(CLI::App& app, Action& action);    // cmd_stress.cpp
+void addQuantizeCommand(CLI::App& app, Action& action);  // cmd_quantize.cpp (every system's PNG)
+void addCheckCommand(CLI::App& app, Action& action);     // cmd_check.cpp
+void addNewCommand(CLI::App& app, Action& action);       // cmd_new.cpp
+void addCompareCommand(CLI::App& app, Action& action);   // cmd_compare.cpp
+void addWalkCommand(CLI::App& app, Action& action);      // cmd_walk.cpp
 
 }  // namespace prime::cli

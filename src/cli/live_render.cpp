@@ -89,6 +89,18 @@ void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, b
         "PRIME's 1991 speed (the render may finish first; the window catches up, Esc stops it)");
 }
 
+void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace) {
+  cmd->add_flag("--no-window", o->noWindow,
+                "Do not open a window (also the case when there is no DISPLAY)");
+  cmd->add_option("--zoom", o->zoom,
+                  "Window zoom, an integer 1..8, reduced to fit the display (keys + and - change "
+                  "it)")
+      ->check(CLI::Range(1, 8));
+  addWindowFitOptions(cmd, o, pace);
+  cmd->add_flag("--no-wait", o->noWait,
+                "Close the window when the render is done instead of waiting for Esc");
+}
+
 int interruptingSignal() {
   return gSignal;
 }

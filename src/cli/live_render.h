@@ -45,6 +45,11 @@ struct LiveOptions {
 // PRIME's trace and view have, for Malone's and CGL's windows.
 void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace);
 
+// The window flags of a command that renders live, for every system:
+// --no-window, --zoom, --fullscreen, --scale, --no-wait, and --pace when
+// `pace` (a render to watch).
+void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace);
+
 // The value of --pace: a number of rows a second (> 0), or "1991" (G24).
 // Sets o.pace or o.pace1991; a CLI::ValidationError for anything else.
 void parsePace(const std::string& text, LiveOptions& o);

@@ -13,77 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "legacy_io/cgl/scene_file.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/run_inputs.h"
-#include "legacy_io/malone/input.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
-#include "src/cli/malone/commands.h"
+#include "src/cli/system.h"
 
 namespace {
-
-std::string fileHead(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  return head;
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
-// `prime trace`, `probe`, `bench` and `export-pov` serve every system: the
-// scene says which. --format names it; otherwise a directory is a PRIME
-// scene and a file is read for what it is: a CGL scene-description file
-// (keywords, `*` comments) or a stream of numbers (Malone's). `prime export`
-// and `prime view` take a CGL picture when the file ends in .rle or .raw (or
-// --format rle|raw), else a PRIME graph file. Returns the subcommand that
-// handles it.
-std::string commandFor(const std::string& command, int argc, char** argv) {
-  std::string format, scene;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--format" && i + 1 < argc) {
-      format = argv[++i];
-    } else if (a.rfind("--format=", 0) == 0) {
-      format = a.substr(9);
-    } else if (!a.empty() && a[0] != '-') {
-      // The first word that names a file or directory (a 1985 call statement
-      // puts numbers before it: `trace -yh 511 scene`), else the first word.
-      if (scene.empty() || (!std::filesystem::exists(scene) && std::filesystem::exists(a)))
-        scene = a;
-    }
-  }
-  namespace cgl = prime::cli::cgl;
-  if (command == "export" || command == "view") {
-    const std::string ext = lowerExtension(scene);
-    const bool picture =
-        format == "rle" || format == "raw" || (format.empty() && (ext == ".rle" || ext == ".raw"));
-    if (!picture) return command;
-    return command == "export" ? cgl::kExportCommand : cgl::kViewCommand;
-  }
-  const bool file = format.empty() && !scene.empty() && std::filesystem::is_regular_file(scene);
-  const std::string head = file ? fileHead(scene) : std::string();
-  if (format == "cgl" || (file && prime::cgl::looksLikeCgl(head))) {
-    if (command == "trace") return cgl::kTraceCommand;
-    if (command == "probe") return cgl::kProbeCommand;
-    if (command == "export-pov") return cgl::kExportPovCommand;
-    return cgl::kBenchCommand;
-  }
-  if (format == "malone" || (file && prime::malone::looksLikeMalone(head))) {
-    if (command == "trace") return prime::cli::malone::kTraceCommand;
-    if (command == "probe") return prime::cli::malone::kProbeCommand;
-    if (command == "export-pov") return prime::cli::malone::kExportPovCommand;
-    return prime::cli::malone::kBenchCommand;
-  }
-  return command;
-}
 
 // CLI11's range checks let NaN through (every comparison with NaN is false)
 // and accept "inf": no command of prime takes a number that is not finite.
@@ -148,6 +85,9 @@ std::string nearestCommand(const CLI::App& app, const std::string& word) {
 struct Command {
   std::vector<std::string> names;
   void (*add)(CLI::App&, prime::cli::Action&);
+  // A verb every system shares: registered with the system the command line
+  // names (prime::cli::systemFor), instead of `add`.
+  void (*verb)(CLI::App&, prime::cli::Action&, const prime::cli::System&) = nullptr;
 };
 
 const std::vector<Command>& commands() {
@@ -155,14 +95,14 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> kCommands = {
       {{"model"}, cli::addModelCommand},
       {{"dump"}, cli::addDumpCommand},
-      {{"trace"}, cli::addTraceCommand},
-      {{"probe"}, cli::addProbeCommand},
-      {{"view"}, cli::addViewCommand},
-      {{"export"}, cli::addExportCommand},
+      {{"trace"}, nullptr, cli::addTraceVerb},
+      {{"probe"}, nullptr, cli::addProbeVerb},
+      {{"view"}, nullptr, cli::addViewVerb},
+      {{"export"}, nullptr, cli::addExportVerb},
       {{"diff"}, cli::addDiffCommand},
       {{"palette"}, cli::addPaletteCommand},
-      {{"export-pov"}, cli::addExportPovCommand},
-      {{"bench"}, cli::addBenchCommand},
+      {{"export-pov"}, nullptr, cli::addExportPovVerb},
+      {{"bench"}, nullptr, cli::addBenchVerb},
       {{"plate1"}, cli::addPlate1Command},
       {{"stress"}, cli::addStressCommand},
       {{"quantize"}, cli::addQuantizeCommand},
@@ -170,16 +110,7 @@ const std::vector<Command>& commands() {
       {{"new"}, cli::addNewCommand},
       {{"compare"}, cli::addCompareCommand},
       {{"walk"}, cli::addWalkCommand},
-      {{cli::malone::kTraceCommand}, cli::malone::addTraceCommand},
-      {{cli::malone::kProbeCommand}, cli::malone::addProbeCommand},
-      {{cli::malone::kBenchCommand}, cli::malone::addBenchCommand},
-      {{cli::malone::kExportPovCommand}, cli::malone::addExportPovCommand},
-      {{cli::cgl::kTraceCommand}, cli::cgl::addTraceCommand},
-      {{cli::cgl::kProbeCommand}, cli::cgl::addProbeCommand},
-      {{cli::cgl::kBenchCommand}, cli::cgl::addBenchCommand},
-      {{cli::cgl::kExportPovCommand}, cli::cgl::addExportPovCommand},
-      {{cli::cgl::kExportCommand, cli::cgl::kViewCommand}, cli::cgl::addPictureCommands},
-      {{cli::cgl::kSplinesCommand}, cli::cgl::addSplinesCommand},
+      {{"cgl-splines"}, cli::cgl::addSplinesCommand},
       {{"cook"}, cli::cgl::addCookCommand},
       {{"tovector"}, cli::cgl::addTovectorCommand},
   };
@@ -189,11 +120,24 @@ const std::vector<Command>& commands() {
 // Registers every command, checking the table: each registration must add
 // exactly the names listed (a command added without its row, or renamed,
 // fails `prime --help`, which the build runs for the man page).
-void addEveryCommand(CLI::App& app, prime::cli::Action& action) {
+void addCommand(CLI::App& app, prime::cli::Action& action, const Command& c,
+                const std::vector<std::string>& args) {
+  if (c.verb == nullptr) {
+    c.add(app, action);
+    return;
+  }
+  // The words after the verb, when the command line names it.
+  std::vector<std::string> rest;
+  if (args.size() >= 2 && args[1] == c.names.front()) rest.assign(args.begin() + 2, args.end());
+  c.verb(app, action, prime::cli::systemFor(c.names.front(), rest));
+}
+
+void addEveryCommand(CLI::App& app, prime::cli::Action& action,
+                     const std::vector<std::string>& args) {
   for (const Command& c : commands()) {
     const auto all = [](CLI::App*) { return true; };
     const std::size_t before = app.get_subcommands(all).size();
-    c.add(app, action);
+    addCommand(app, action, c, args);
     const std::vector<CLI::App*> subs = app.get_subcommands(all);
     std::vector<std::string> added;
     for (std::size_t k = before; k < subs.size(); ++k) added.push_back(subs[k]->get_name());
@@ -219,14 +163,15 @@ const Command* onlyCommandNeeded(const std::vector<char*>& args) {
 
 // The command line's parser: with `only`, that row's commands alone, else
 // every command.
-std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& action) {
+std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& action,
+                                  const std::vector<std::string>& args) {
   auto app = std::make_unique<CLI::App>(
       "PRIME, revived: historical ray tracers (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   app->require_subcommand(1);
   if (only != nullptr)
-    only->add(*app, action);
+    addCommand(*app, action, *only, args);
   else
-    addEveryCommand(*app, action);
+    addEveryCommand(*app, action, args);
   app->set_version_flag("--version", std::string("prime ") + PRIME_VERSION +
                                          " (PRIME 1991, Malone 1995, Waterloo CGL 1985)");
   return app;
@@ -248,19 +193,16 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   } else if (argc == 2 && std::string(argv[1]) == "help") {
     args[1] = helpFlag.data();
   }
-  std::string routed;
-  std::vector<std::string> translated;  // a CGL call statement's flags, rewritten
-  if (argc >= 2 && (std::string(argv[1]) == "trace" || std::string(argv[1]) == "probe" ||
-                    std::string(argv[1]) == "bench" || std::string(argv[1]) == "export-pov" ||
-                    std::string(argv[1]) == "export" || std::string(argv[1]) == "view")) {
-    routed = commandFor(argv[1], argc, argv);
-    args[1] = routed.data();
-    if (routed == prime::cli::cgl::kTraceCommand || routed == prime::cli::cgl::kProbeCommand ||
-        routed == prime::cli::cgl::kBenchCommand) {
-      translated.assign(args.begin(), args.end());
-      prime::cli::cgl::translateCallStatement(translated, 2);
+  // A system's own way of writing a command line (CGL's 1985 call
+  // statement after `prime trace`): its flags rewritten to the port's.
+  std::vector<std::string> words(args.begin(), args.end());
+  if (words.size() >= 2 && (words[1] == "trace" || words[1] == "probe" || words[1] == "bench")) {
+    const prime::cli::System& system =
+        prime::cli::systemFor(words[1], std::vector<std::string>(words.begin() + 2, words.end()));
+    if (system.callStatement != nullptr) {
+      system.callStatement(words, 2);
       args.clear();
-      for (std::string& a : translated) args.push_back(a.data());
+      for (std::string& a : words) args.push_back(a.data());
     }
   }
   prime::cli::Action action;
@@ -269,14 +211,14 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   std::unique_ptr<CLI::App> made;
   try {
     try {
-      made = makeApp(only, action);
+      made = makeApp(only, action, words);
       made->parse(static_cast<int>(args.size()), args.data());
     } catch (const CLI::Error&) {
       if (only == nullptr) throw;
       // Help, --version and usage errors come from the whole command line,
       // as they always did (their messages name other commands).
       action = nullptr;
-      made = makeApp(nullptr, action);
+      made = makeApp(nullptr, action, words);
       made->parse(static_cast<int>(args.size()), args.data());
     }
   } catch (const CLI::Success& e) {  // --help, --version

@@ -99,12 +99,14 @@ bool Tracer::blocked(const MRay& ray, TraceStats& stats) const {
   return found;
 }
 
-Rgb Tracer::pixel(int X, int Y, TraceStats& stats, std::string* probe) const {
+Rgb Tracer::pixel(int X, int Y, TraceStats& stats, ProbeLog* probe) const {
   const MRay ray = primaryRay(X, Y);
   ++stats.primaryRays;
   if (probe)
-    *probe += "pixel (" + std::to_string(X) + ", " + std::to_string(Y) + "): primary ray from " +
-              vec(ray.o) + " along " + vec(ray.d) + "\n";
+    probe->add(0, "pixel",
+               "pixel (" + std::to_string(X) + ", " + std::to_string(Y) + "): primary ray from " +
+                   vec(ray.o) + " along " + vec(ray.d),
+               JsonObject().add("x", X).add("y", Y).add("origin", ray.o).add("direction", ray.d));
   if (settings_.debug != TraceSettings::Debug::None) return debugValue(ray, stats);
   return trace(ray, 1, 1.0, 1.0, stats, probe);
 }
@@ -137,7 +139,7 @@ Rgb Tracer::debugValue(const MRay& ray, TraceStats& stats) const {
 // I (k_d c (d.s) + k_s' (r.s)^k_e) / l^2 (without / l^2 for 104); the
 // specular term only where r.s > 0 (MAL-E9).
 Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
-                         TraceStats& stats, std::string* probe, const std::string& indent) const {
+                         TraceStats& stats, ProbeLog* probe, int depth) const {
   Rgb colour{0, 0, 0};
   if (settings_.ambient && scene_.hasAmbient)
     for (int k = 0; k < 3; ++k) colour[k] += scene_.ambient[k] * s.kd[k];
@@ -157,8 +159,13 @@ Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const 
       shadow.length = l;
       if (blocked(shadow, stats)) {
         if (probe)
-          *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
-                    vec(light.position) + ": shadowed\n";
+          probe->add(depth, "light",
+                     "light " + std::to_string(light.light + 1) + " at " + vec(light.position) +
+                         ": shadowed",
+                     JsonObject()
+                         .add("light", light.light + 1)
+                         .add("position", light.position)
+                         .add("shadowed", true));
         continue;
       }
     }
@@ -172,21 +179,30 @@ Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const 
       colour[k] += add[k];
     }
     if (probe)
-      *probe += indent + "  light " + std::to_string(light.light + 1) + " at " +
-                vec(light.position) + ": d.s = " + fmt("%.6g", ds) + ", r.s = " + fmt("%.6g", rs) +
-                ", l = " + fmt("%.6g", l) + ", adds " + vec(add) + "\n";
+      probe->add(depth, "light",
+                 "light " + std::to_string(light.light + 1) + " at " + vec(light.position) +
+                     ": d.s = " + fmt("%.6g", ds) + ", r.s = " + fmt("%.6g", rs) +
+                     ", l = " + fmt("%.6g", l) + ", adds " + vec(add),
+                 JsonObject()
+                     .add("light", light.light + 1)
+                     .add("position", light.position)
+                     .add("shadowed", false)
+                     .add("ds", ds)
+                     .add("rs", rs)
+                     .add("distance", l)
+                     .add("adds", add));
   }
 
   return colour;
 }
 
 Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
-                  std::string* probe) const {
-  std::string indent;  // the probe's only: no allocation on a plain render
-  if (probe) indent.assign(static_cast<std::size_t>(2 * depth), ' ');
+                  ProbeLog* probe) const {
   const Hit hit = nearest(ray, stats);
   if (hit.primitive < 0) {
-    if (probe) *probe += indent + "depth " + std::to_string(depth) + ": no hit (black)\n";
+    if (probe)
+      probe->add(depth, "miss", "depth " + std::to_string(depth) + ": no hit (black)",
+                 JsonObject().add("colour", Vec3{0, 0, 0}));
     return {0, 0, 0};  // an escaped ray contributes nothing (MAL-Q6)
   }
   ++stats.hits;
@@ -197,10 +213,18 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
   const Vec3 n = normal(scene_, p, x);
   const Vec3 df = dot(i, n) <= 0 ? n : -n;  // the normal facing the ray (section 1.7)
   if (probe)
-    *probe += indent + "depth " + std::to_string(depth) + ": hit object " +
-              std::to_string(p.objectNumber) + " (" + objectName(static_cast<int>(p.id)) + ", " +
-              io::describe(scene_.where(p)) + ") at t = " + fmt("%.9g", hit.t) + ", point " +
-              vec(x) + ", normal " + vec(n) + "\n";
+    probe->add(depth, "hit",
+               "depth " + std::to_string(depth) + ": hit object " + std::to_string(p.objectNumber) +
+                   " (" + objectName(static_cast<int>(p.id)) + ", " +
+                   io::describe(scene_.where(p)) + ") at t = " + fmt("%.9g", hit.t) + ", point " +
+                   vec(x) + ", normal " + vec(n),
+               JsonObject()
+                   .add("object", p.objectNumber)
+                   .add("primitive", objectName(static_cast<int>(p.id)))
+                   .add("where", io::describe(scene_.where(p)))
+                   .add("t", hit.t)
+                   .add("point", x)
+                   .add("normal", n));
 
   double ks = s.ks;  // k_s', augmented by k_t on total internal reflection
   Rgb colour{0, 0, 0};
@@ -215,7 +239,9 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
     if (D < 0) {
       ks += s.kt;
       ++stats.totalInternalReflections;
-      if (probe) *probe += indent + "  total internal reflection: k_s' = " + fmt("%.6g", ks) + "\n";
+      if (probe)
+        probe->add(depth, "tir", "total internal reflection: k_s' = " + fmt("%.6g", ks),
+                   JsonObject().add("ks", ks));
     } else if (depth + 1 > settings_.maxDepth) {
       ++stats.cutByDepth;
     } else if (weight * s.kt < settings_.minWeight) {
@@ -227,8 +253,11 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
       refracted.d = normalized(i * eta - df * (eta * c + std::sqrt(D)));
       ++stats.transmittedRays;
       if (probe)
-        *probe += indent + "  transmitted (" + (leaving ? "leaving" : "entering") +
-                  ", eta = " + fmt("%.6g", eta) + ") along " + vec(refracted.d) + "\n";
+        probe->add(
+            depth, "transmitted",
+            std::string("transmitted (") + (leaving ? "leaving" : "entering") +
+                ", eta = " + fmt("%.6g", eta) + ") along " + vec(refracted.d),
+            JsonObject().add("leaving", leaving).add("eta", eta).add("direction", refracted.d));
       const Rgb t = trace(refracted, depth + 1, weight * s.kt, n2, stats, probe);
       for (int k = 0; k < 3; ++k) colour[k] += s.kt * t[k];
     }
@@ -237,7 +266,7 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
   // r = i - 2 (i.d) d (the printed sign corrected, MAL-E1).
   const Vec3 r = i - df * (2 * dot(i, df));
 
-  const Rgb local = illumination(s, x, df, r, ks, stats, probe, indent);
+  const Rgb local = illumination(s, x, df, r, ks, stats, probe, depth);
   for (int k = 0; k < 3; ++k) colour[k] += local[k];
 
   if (ks > 0 && settings_.reflection) {
@@ -251,12 +280,15 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
       reflected.d = r;
       ++stats.reflectedRays;
       if (probe)
-        *probe += indent + "  reflected (k_s' = " + fmt("%.6g", ks) + ") along " + vec(r) + "\n";
+        probe->add(depth, "reflected", "reflected (k_s' = " + fmt("%.6g", ks) + ") along " + vec(r),
+                   JsonObject().add("ks", ks).add("direction", r));
       const Rgb refl = trace(reflected, depth + 1, weight * ks, index, stats, probe);
       for (int k = 0; k < 3; ++k) colour[k] += ks * refl[k];
     }
   }
-  if (probe) *probe += indent + "depth " + std::to_string(depth) + " returns " + vec(colour) + "\n";
+  if (probe)
+    probe->add(depth, "returns", "depth " + std::to_string(depth) + " returns " + vec(colour),
+               JsonObject().add("colour", colour));
   return colour;
 }
 

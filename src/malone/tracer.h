@@ -12,6 +12,7 @@
 #include "src/geom/bvh.h"
 #include "src/malone/primitives.h"
 #include "src/malone/scene.h"
+#include "src/render/probe_log.h"
 
 namespace prime::malone {
 
@@ -46,11 +47,13 @@ class Tracer {
   // through v((2X - X_RES)/X_RES, -(2Y - Y_RES)/Y_RES), no half-pixel offset.
   MRay primaryRay(int X, int Y) const;
   // The colour of pixel (X, Y) (or its debug value).
-  Rgb pixel(int X, int Y, TraceStats& stats, std::string* probe = nullptr) const;
+  // With `probe`, every ray, hit, light and returned colour is recorded
+  // (src/cli/malone/cmd_probe.cpp prints them).
+  Rgb pixel(int X, int Y, TraceStats& stats, ProbeLog* probe = nullptr) const;
   // trace(ray, depth, weight, index): the primary ray has depth 1, weight 1
   // and index 1.
   Rgb trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
-            std::string* probe = nullptr) const;
+            ProbeLog* probe = nullptr) const;
 
   const Scene& scene() const { return scene_; }
   const TraceSettings& settings() const { return settings_; }
@@ -64,7 +67,7 @@ class Tracer {
   bool blocked(const MRay& ray, TraceStats& stats) const;
   Rgb debugValue(const MRay& ray, TraceStats& stats) const;
   Rgb illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
-                   TraceStats& stats, std::string* probe, const std::string& indent) const;
+                   TraceStats& stats, ProbeLog* probe, int depth) const;
 
   const Scene& scene_;
   TraceSettings settings_;

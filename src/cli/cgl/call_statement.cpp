@@ -27,9 +27,9 @@ bool isInteger(const std::string& s) {
 
 void translateCallStatement(std::vector<std::string>& args, std::size_t first) {
   static const std::map<std::string, std::string> kFlags = {
-      {"-o", "--rle"},     {"-yh", "--yhigh"}, {"-yl", "--ylow"},       {"-xl", "--xleft"},
-      {"-xr", "--xright"}, {"-d", "--depth"},  {"-s", "--shadows"},     {"-S", "--shadows"},
-      {"-m", "--memory"},  {"-q", "--quiet"},  {"-t", "--aathreshold"}, {"-a", "--aalevel"}};
+      {"-o", "--rle"},     {"-yh", "--yhigh"},    {"-yl", "--ylow"},       {"-xl", "--xleft"},
+      {"-xr", "--xright"}, {"-d", "--max-depth"}, {"-s", "--shadows"},     {"-S", "--shadows"},
+      {"-m", "--memory"},  {"-q", "--quiet"},     {"-t", "--aathreshold"}, {"-a", "--aalevel"}};
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string a = args[i];
     if (a == "--") break;

@@ -1,7 +1,7 @@
 // prime export-pov SCENE.cgl OUT.pov: a Waterloo CGL scene as POV-Ray 3.7
 // scene language (src/cgl/pov_export.h), its texture maps as PNG files beside
-// OUT.pov. `prime export-pov` sends a scene file here when it reads as a CGL
-// scene-description file (or with --format cgl).
+// OUT.pov. The shared verb (src/cli/verbs.cpp) runs it when the scene reads as a
+// CGL scene-description file (or with --format cgl).
 #include <filesystem>
 #include <iostream>
 
@@ -12,10 +12,7 @@
 
 namespace prime::cli::cgl {
 
-void addExportPovCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(kExportPovCommand,
-                                 "Write a Waterloo CGL (1985) scene file as a POV-Ray 3.7 scene");
-  cmd->group("");  // reached through `prime export-pov FILE OUT.pov` (src/cli/main.cpp)
+void addExportPovOptions(CLI::App* cmd, Action& action) {
   auto o = std::make_shared<CglOptions>();
   auto out = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);

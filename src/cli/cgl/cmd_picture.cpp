@@ -34,10 +34,14 @@ Frame readPicture(const std::string& path, const std::string& format) {
 
 }  // namespace
 
-void addPictureCommands(CLI::App& app, Action& action) {
+bool isPicture(const std::string& path, const std::string& format) {
+  if (format == "rle" || format == "raw") return true;
+  const std::string ext = lowerExtension(path);
+  return format.empty() && (ext == ".rle" || ext == ".raw");
+}
+
+void addExportOptions(CLI::App* cmd, Action& action) {
   {
-    auto* cmd = app.add_subcommand(kExportCommand, "Convert a CGL picture (RLE or raw)");
-    cmd->group("");  // reached through `prime export FILE.rle OUT` (src/cli/main.cpp)
     auto file = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     auto format = std::make_shared<std::string>();
@@ -77,9 +81,10 @@ void addPictureCommands(CLI::App& app, Action& action) {
       };
     });
   }
+}
+
+void addViewOptions(CLI::App* cmd, Action& action) {
   {
-    auto* cmd = app.add_subcommand(kViewCommand, "Show a CGL picture (RLE or raw) in a window");
-    cmd->group("");  // reached through `prime view FILE.rle` (src/cli/main.cpp)
     auto file = std::make_shared<std::string>();
     auto format = std::make_shared<std::string>();
     auto live = std::make_shared<LiveOptions>();
@@ -88,9 +93,7 @@ void addPictureCommands(CLI::App& app, Action& action) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--format", *format, "The picture's format (default: from its extension)")
         ->check(CLI::IsMember({"rle", "raw"}));
-    cmd->add_flag("--no-window", live->noWindow, "Do not open a window");
-    cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
-    addWindowFitOptions(cmd, live, false);
+    addLiveWindowOptions(cmd, live, false);
     cmd->callback([=, &action] {
       action = [=] {
         const Frame picture = readPicture(*file, *format);

@@ -47,8 +47,8 @@ double now() {
 }  // namespace
 
 void addSplinesCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(kSplinesCommand,
-                                 "Tables 3 and 6 for the B-spline surfaces of a CGL scene");
+  auto* cmd =
+      app.add_subcommand("cgl-splines", "Tables 3 and 6 for the B-spline surfaces of a CGL scene");
   auto o = std::make_shared<CglOptions>();
   auto holes = std::make_shared<int>(0);
   addCglOptions(cmd, *o);

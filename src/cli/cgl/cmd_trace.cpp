@@ -22,6 +22,7 @@
 #include "src/cli/cgl/picture.h"
 #include "src/cli/live_render.h"
 #include "src/cli/quantize_options.h"
+#include "src/cli/system.h"
 #include "src/cli/view_8514.h"
 
 namespace prime::cli::cgl {
@@ -96,136 +97,124 @@ void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
         static_cast<unsigned long long>(s.spline.hits));
 }
 
+class CglTrace : public TraceJob {
+ public:
+  CglTrace(std::shared_ptr<CglOptions> o, std::shared_ptr<TraceFlags> flags,
+           std::shared_ptr<std::string> rle, std::shared_ptr<std::string> raw)
+      : o_(std::move(o)), flags_(std::move(flags)), rle_(std::move(rle)), raw_(std::move(raw)) {}
+
+  std::vector<std::string> outputs() const override {
+    return {*rle_, *raw_, flags_->png, flags_->trueColourPng, flags_->png8514};
+  }
+  void load() override {
+    o_->threads = flags_->threads;
+    o_->quiet = flags_->quiet;
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    file_.emplace(readCgl(*o_, o_->quiet));
+    const auto t1 = Clock::now();
+    scene_.emplace(buildCgl(*o_, *file_));
+    const auto t2 = Clock::now();
+    readSeconds_ = std::chrono::duration<double>(t1 - t0).count();
+    buildSeconds_ = std::chrono::duration<double>(t2 - t1).count();
+    if (!quiet()) {
+      printReport(*file_, *scene_);
+      if (file_->program.given.output && rle_->empty())
+        std::printf(
+            "the scene names the output file %s; the port writes only what the command line "
+            "names: add --rle %s (CGL-D80)\n",
+            file_->program.output.c_str(), file_->program.output.c_str());
+      std::fflush(stdout);
+    }
+  }
+  // The quiet parameter: the command line's -q, or the scene file's own.
+  bool quiet() const override { return file_->program.quiet; }
+  display::LiveFrame& frame() override { return frame_; }
+  void configure(LiveOptions& options) const override { options.caption = o_->file; }
+  void render(LiveRender& live) override {
+    const prime::cgl::RenderSettings settings = renderSettings(*o_, *file_);
+    prime::cgl::RenderCallbacks cb;
+    cb.abort = live.abortFlag();
+    cb.progress = live.progress();
+    std::vector<std::uint32_t> row(Frame::kSize);
+    if (live.windowed())
+      cb.rowDone = [&](int imageRow, std::span<const Rgb> colours) {
+        for (int x = 0; x < Frame::kSize; ++x) {
+          const Rgb& c = colours[static_cast<std::size_t>(x)];
+          auto byte = [](double v) {
+            return static_cast<std::uint32_t>(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5);
+          };
+          row[static_cast<std::size_t>(x)] = byte(c[0]) << 16 | byte(c[1]) << 8 | byte(c[2]);
+        }
+        frame_.setRow(imageRow, row);
+      };
+    // Made by the render (a default RenderResult would be one more 1 MiB frame).
+    live.run([&] { result_.emplace(prime::cgl::render(*scene_, settings, cb)); });
+  }
+  bool aborted() const override { return result_->run.aborted; }
+  void abort() override {
+    std::cerr << "prime: trace aborted: no picture written\n";
+    if (!quiet()) printSummary(*result_, "");
+  }
+  std::vector<std::string> write() override {
+    std::vector<std::string> written;
+    if (!rle_->empty()) {
+      prime::cgl::writeRleFile(*rle_, result_->frame);
+      written.push_back(*rle_);
+    }
+    if (!raw_->empty()) {
+      prime::cgl::writeRawFile(*raw_, result_->frame);
+      written.push_back(*raw_);
+    }
+    if (!flags_->png.empty()) {
+      writePng(flags_->png, quantizedImage(frameImage(result_->frame), flags_->quantize));
+      written.push_back(flags_->png);
+    }
+    if (!flags_->trueColourPng.empty()) {
+      writePng(flags_->trueColourPng, frameImage(result_->frame));
+      written.push_back(flags_->trueColourPng);
+    }
+    if (!flags_->png8514.empty()) {
+      write8514Png(flags_->png8514, prime::cgl::toRgbImage(result_->frame));
+      written.push_back(flags_->png8514);
+    }
+    return written;
+  }
+  void summary(const std::vector<std::string>& written) const override {
+    std::string list;
+    for (const std::string& f : written) list += (list.empty() ? ": " : ", ") + f;
+    printSummary(*result_, list);
+  }
+  void timings() const override {
+    std::printf("timings: read %.3f s, preprocess %.3f s, render %.3f s\n", readSeconds_,
+                buildSeconds_, result_->run.seconds);
+  }
+  double seconds() const override { return result_->run.seconds; }
+
+ private:
+  std::shared_ptr<CglOptions> o_;
+  std::shared_ptr<TraceFlags> flags_;
+  std::shared_ptr<std::string> rle_, raw_;
+  std::optional<prime::cgl::SceneFile> file_;
+  std::optional<prime::cgl::Scene> scene_;
+  display::LiveRgbFrame frame_{Frame::kSize, Frame::kSize};
+  std::optional<prime::cgl::RenderResult> result_;
+  double readSeconds_ = 0, buildSeconds_ = 0;
+};
+
 }  // namespace
 
-void addTraceCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(
-      kTraceCommand,
-      "Render a Waterloo CGL (1985) scene file: prime trace SCENE.cgl --png OUT.png");
-  cmd->group("");  // reached through `prime trace FILE` (src/cli/main.cpp)
+TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags) {
   auto o = std::make_shared<CglOptions>();
   auto rle = std::make_shared<std::string>();
   auto raw = std::make_shared<std::string>();
-  auto png = std::make_shared<std::string>();
-  auto png8514 = std::make_shared<std::string>();
-  auto quant = std::make_shared<QuantizeOptions>();
-  auto timings = std::make_shared<bool>(false);
-  auto live = std::make_shared<LiveOptions>();
   addCglOptions(cmd, *o);
   cmd->add_option("--rle", *rle,
                   "Write the picture run-length encoded, as the package did (-Dencode); "
                   "Appendix 2's -o");
   cmd->add_option("--raw", *raw,
                   "Write the raw 512 x 512 x 32-bit frame (the build without encode)");
-  cmd->add_option("--png", *png, "Write the picture as PNG (the same pixels as the RLE)");
-  cmd->add_option("--png-8514", *png8514,
-                  "Write the picture as PRIME's IBM 8514/A (1991) would have shown it: ColorNum's "
-                  "fixed 256-colour palette");
-  addQuantizeOptions(cmd, *quant, "the --png picture");
-  cmd->add_flag("--no-window", live->noWindow, "Do not open a window (also without a DISPLAY)");
-  cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
-  addWindowFitOptions(cmd, live, true);
-  cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
-  cmd->add_flag("-q,--quiet", o->quiet,
-                "The quiet parameter: no report, no progress and no summary (Appendix 2's -q)");
-  cmd->add_flag("--timings", *timings,
-                "Print the seconds spent reading, preprocessing and rendering")
-      ->group("");  // for bench/cgl_pov_compare.sh
-  cmd->callback([=, &action] {
-    action = [=] {
-      // Outputs whose directory is missing are found before the render, not after it.
-      for (const std::string* out : {rle.get(), raw.get(), png.get(), png8514.get()})
-        if (!out->empty()) io::checkOutputPath(*out);
-      using Clock = std::chrono::steady_clock;
-      const auto t0 = Clock::now();
-      const prime::cgl::SceneFile file = readCgl(*o, o->quiet);
-      const auto t1 = Clock::now();
-      const prime::cgl::Scene scene = buildCgl(*o, file);
-      // Again now that the inputs (scene, texture maps) are known: none may be an output.
-      for (const std::string* out : {rle.get(), raw.get(), png.get(), png8514.get()})
-        if (!out->empty()) io::checkOutputPath(*out);
-      const auto t2 = Clock::now();
-      const bool quiet = file.program.quiet;
-      if (!quiet) {
-        printReport(file, scene);
-        if (file.program.given.output && rle->empty())
-          std::printf(
-              "the scene names the output file %s; the port writes only what the command line "
-              "names: add --rle %s (CGL-D80)\n",
-              file.program.output.c_str(), file.program.output.c_str());
-        std::fflush(stdout);
-      }
-      display::LiveRgbFrame frame(Frame::kSize, Frame::kSize);
-      LiveOptions options = *live;
-      options.quiet = quiet;
-      options.caption = o->file;
-      options.commandName = "trace";
-      LiveRender window(frame, options);
-
-      const prime::cgl::RenderSettings settings = renderSettings(*o, file);
-      // Made by the render (a default RenderResult would be one more 1 MiB frame).
-      std::optional<prime::cgl::RenderResult> rendered;
-      prime::cgl::RenderCallbacks cb;
-      cb.abort = window.abortFlag();
-      cb.progress = window.progress();
-      std::vector<std::uint32_t> row(Frame::kSize);
-      if (window.windowed())
-        cb.rowDone = [&](int imageRow, std::span<const Rgb> colours) {
-          for (int x = 0; x < Frame::kSize; ++x) {
-            const Rgb& c = colours[static_cast<std::size_t>(x)];
-            auto byte = [](double v) {
-              return static_cast<std::uint32_t>(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5);
-            };
-            row[static_cast<std::size_t>(x)] = byte(c[0]) << 16 | byte(c[1]) << 8 | byte(c[2]);
-          }
-          frame.setRow(imageRow, row);
-        };
-      window.run([&] { rendered.emplace(prime::cgl::render(scene, settings, cb)); });
-      const prime::cgl::RenderResult& result = *rendered;
-      if (result.run.aborted) {
-        window.closeWindow();
-        std::cerr << "prime: trace aborted: no picture written\n";
-        if (!quiet) printSummary(result, "");
-        return 1;
-      }
-      std::string written;
-      std::vector<std::string> files;
-      auto wrote = [&](const std::string& path) {
-        written += (written.empty() ? ": " : ", ") + path;
-        files.push_back(path);
-      };
-      if (!rle->empty()) {
-        prime::cgl::writeRleFile(*rle, result.frame);
-        wrote(*rle);
-      }
-      if (!raw->empty()) {
-        prime::cgl::writeRawFile(*raw, result.frame);
-        wrote(*raw);
-      }
-      if (!png->empty()) {
-        writePng(*png, quantizedImage(frameImage(result.frame), *quant));
-        wrote(*png);
-      }
-      if (!png8514->empty()) {
-        write8514Png(*png8514, prime::cgl::toRgbImage(result.frame));
-        wrote(*png8514);
-      }
-      if (!quiet) {
-        printSummary(result, written);
-        // One "wrote PATH" line per file written, as every command (issue 16).
-        for (const std::string& f : files) std::printf("wrote %s\n", f.c_str());
-      }
-      if (*timings)
-        std::printf("timings: read %.3f s, preprocess %.3f s, render %.3f s\n",
-                    std::chrono::duration<double>(t1 - t0).count(),
-                    std::chrono::duration<double>(t2 - t1).count(), result.run.seconds);
-      std::fflush(stdout);
-      char status[64];
-      std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.run.seconds);
-      window.waitForEsc(status);
-      return 0;
-    };
-  });
+  return [o, flags, rle, raw] { return std::make_unique<CglTrace>(o, flags, rle, raw); };
 }
 
 }  // namespace prime::cli::cgl

@@ -1,31 +1,28 @@
-// The Waterloo CGL package's commands. `prime trace FILE.cgl`, `prime probe
-// FILE.cgl`, `prime bench FILE.cgl ...` and `prime export-pov FILE.cgl OUT`
-// reach them when FILE reads as a CGL scene-description file (or with
-// --format cgl); `prime export` and `prime view` reach the picture commands
-// when the file is a CGL picture (.rle, .raw, or --format rle|raw).
-// src/cli/main.cpp picks the system.
+// The Waterloo CGL package's commands. The shared verbs `prime trace`,
+// `probe`, `bench` and `export-pov` run its parts when the scene reads as a
+// CGL scene-description file (or with --format cgl); `prime export` and
+// `prime view` when the file is a CGL picture (.rle, .raw, or --format
+// rle|raw). src/cli/cgl/adapter.cpp is the system's row.
 #pragma once
 #include <string>
 #include <vector>
 
-#include "src/cli/commands.h"
+#include "src/cli/system.h"
 
 namespace prime::cli::cgl {
 
-inline constexpr const char* kTraceCommand = "cgl-trace";
-inline constexpr const char* kProbeCommand = "cgl-probe";
-inline constexpr const char* kBenchCommand = "cgl-bench";
-inline constexpr const char* kExportPovCommand = "cgl-export-pov";
-inline constexpr const char* kExportCommand = "cgl-export";
-inline constexpr const char* kViewCommand = "cgl-view";
-inline constexpr const char* kSplinesCommand = "cgl-splines";
+// Its parts of the shared verbs (src/cli/system.h).
+TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags);
+ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags);
+void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp
+void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
+// export and view of its pictures (cmd_picture.cpp): RLE or raw frames.
+void addExportOptions(CLI::App* cmd, Action& action);
+void addViewOptions(CLI::App* cmd, Action& action);
+bool isPicture(const std::string& path, const std::string& format);
 
-void addTraceCommand(CLI::App& app, Action& action);      // cmd_trace.cpp
-void addProbeCommand(CLI::App& app, Action& action);      // cmd_probe.cpp
-void addBenchCommand(CLI::App& app, Action& action);      // cmd_bench.cpp
-void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
-void addPictureCommands(CLI::App& app, Action& action);   // cmd_picture.cpp: export, view
-void addSplinesCommand(CLI::App& app, Action& action);    // cmd_splines.cpp: Tables 3 and 6
+// `prime cgl-splines`: Tables 3 and 6 (cmd_splines.cpp).
+void addSplinesCommand(CLI::App& app, Action& action);
 // The package's utilities (Appendix 1 section 9): `prime cook OUT` and
 // `prime tovector R G B`.
 void addCookCommand(CLI::App& app, Action& action);      // cmd_cook.cpp

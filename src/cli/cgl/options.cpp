@@ -9,8 +9,6 @@ namespace prime::cli::cgl {
 
 void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
   cmd->add_option("SCENE", o.file, "CGL scene-description file (Appendix 1)")->required();
-  cmd->add_option("--format", o.format, "Scene format (detected from the file): cgl")
-      ->check(CLI::IsMember({"cgl"}));
   cmd->add_flag("--lenient", o.lenient,
                 "Also read the document's OCR-damaged examples, saying what was repaired");
   cmd->add_option("--textures", o.textureDirs,
@@ -21,8 +19,6 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
                   "XYZ to RGB: the Electrohome ECM 1301 monitor (default) or NTSC (the ntsc "
                   "compile option)")
       ->check(CLI::IsMember({"electrohome", "ntsc"}));
-  cmd->add_option("--threads", o.threads, "Render threads (default: all cores)")
-      ->check(CLI::Range(0, 1024));
   cmd->add_flag("--linear-search", o.linearSearch,
                 "Test the object list in order for every ray, as the package did (the same "
                 "pixels, slower; operation counts as the document's program made them)");
@@ -42,7 +38,8 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
   cmd->add_option("--xright", o.xright, "Rightmost pixel rendered, 0..511 (511)")
       ->check(CLI::Range(0, 511))
       ->group(g);
-  cmd->add_option("--depth", o.depth, "Ray-tracing depth, 0..10 (0: primary rays only)")
+  cmd->add_option("--max-depth", o.depth,
+                  "Ray-tracing depth, 0..10 (0: primary rays only; Appendix 2's -d)")
       ->check(CLI::Range(0, 10))
       ->group(g);
   cmd->add_flag("--shadows", o.shadows, "Shadows on")->group(g);

@@ -15,11 +15,10 @@ namespace prime::cli::cgl {
 
 struct CglOptions {
   std::string file;
-  std::string format = "cgl";
   bool lenient = false;
   std::vector<std::string> textureDirs;
   std::string phosphors = "electrohome";
-  int threads = 0;
+  int threads = 0;            // trace's shared --threads
   bool linearSearch = false;  // the document's object list for every ray (CGL-D43)
   // Overrides of the program parameters (unset: the file's, else the default).
   std::optional<int> yhigh, ylow, xleft, xright, depth, memory, aalevel;

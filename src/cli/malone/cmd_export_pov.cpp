@@ -1,6 +1,6 @@
 // prime export-pov SCENE.mal OUT.pov: a Malone scene as POV-Ray 3.7 scene
-// language (src/malone/pov_export.h). `prime export-pov` sends a scene file
-// here when it reads as Malone's numbers (or with --format malone).
+// language (src/malone/pov_export.h). The shared verb (src/cli/verbs.cpp)
+// runs it when the scene reads as Malone's numbers (or with --format malone).
 #include <filesystem>
 #include <iostream>
 
@@ -10,20 +10,14 @@
 
 namespace prime::cli::malone {
 
-void addExportPovCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(kExportPovCommand,
-                                 "Write a Malone (1995) scene file as a POV-Ray 3.7 scene");
-  cmd->group("");  // reached through `prime export-pov FILE OUT.pov` (src/cli/main.cpp)
+void addExportPovOptions(CLI::App* cmd, Action& action) {
   auto file = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
-  auto format = std::make_shared<std::string>("malone");
   auto comments = std::make_shared<bool>(false);
   auto quiet = std::make_shared<bool>(false);
   auto options = std::make_shared<prime::malone::PovExportOptions>();
   cmd->add_option("SCENE", *file, "Malone scene file (a stream of numbers)")->required();
   cmd->add_option("OUT", *out, "POV-Ray scene file to write (e.g. scene.pov)")->required();
-  cmd->add_option("--format", *format, "Scene format (detected from the file): malone")
-      ->check(CLI::IsMember({"malone"}));
   cmd->add_flag("--comments", *comments,
                 "Extension, not the original: '#' starts a comment to the end of the line");
   cmd->add_option("--max-depth", options->maxDepth,
@@ -34,9 +28,6 @@ void addExportPovCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
-    // --format is bound to *format: the callback keeps it alive as long as
-    // the command (an unused capture would be dropped, leaving it dangling).
-    static_cast<void>(format);
     action = [=] {
       prime::malone::ReadOptions read;
       read.comments = *comments;

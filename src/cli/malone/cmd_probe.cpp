@@ -1,45 +1,70 @@
 // prime probe SCENE.mal --pixel X Y: why is this pixel that colour? The ray
 // tree of one pixel of a Malone scene: every hit, light, shadow ray,
-// reflected and transmitted ray, with the colour each returns.
+// reflected and transmitted ray, with the colour each returns; as text or
+// as JSON (the schema every system's probe shares, docs/user-guide.md).
 #include <cstdio>
-#include <iostream>
 
 #include "legacy_io/malone/ppm.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
+#include "src/cli/system.h"
 
 namespace prime::cli::malone {
 
-void addProbeCommand(CLI::App& app, Action& action) {
-  auto* cmd =
-      app.add_subcommand(kProbeCommand, "The ray tree of one pixel of a Malone (1995) scene file");
-  cmd->group("");  // reached through `prime probe FILE` (src/cli/main.cpp)
+namespace {
+
+// The text's indent: a ray's own lines (hit, miss, returns) two spaces a
+// level; what happens at its hit (lights, spawned rays) two more.
+std::size_t indentOf(const ProbeEvent& e) {
+  if (e.kind == "pixel") return 0;
+  const bool own = e.kind == "hit" || e.kind == "miss" || e.kind == "returns";
+  return static_cast<std::size_t>(2 * e.depth + (own ? 0 : 2));
+}
+
+}  // namespace
+
+ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto o = std::make_shared<MaloneOptions>();
-  auto pixel = std::make_shared<std::vector<int>>();
   addMaloneOptions(cmd, *o);
-  cmd->add_option("--pixel", *pixel, "The pixel X Y (X from the left, Y from the top)")
-      ->expected(2)
-      ->required();
-  cmd->callback([=, &action] {
-    action = [=] {
-      const prime::malone::Scene scene = loadMalone(*o);
-      const int x = (*pixel)[0], y = (*pixel)[1];
-      if (x < 0 || y < 0 || x >= scene.viewer.xRes || y >= scene.viewer.yRes) {
-        std::cerr << "prime: probe: --pixel " << x << " " << y << " is outside the "
-                  << scene.viewer.xRes << " x " << scene.viewer.yRes << " picture\n";
-        return 2;
-      }
-      const prime::malone::Tracer tracer(scene, o->trace);
-      prime::malone::TraceStats stats;
-      std::string log;
-      const Rgb c = tracer.pixel(x, y, stats, &log);
-      std::cout << o->file << ": Malone (1995)\n" << log;
-      std::printf("pixel (%d, %d) = (%.6g, %.6g, %.6g) -> bytes %d %d %d; %llu rays\n", x, y, c[0],
-                  c[1], c[2], prime::malone::toByte(c[0]), prime::malone::toByte(c[1]),
-                  prime::malone::toByte(c[2]), static_cast<unsigned long long>(stats.rays()));
-      return 0;
-    };
-  });
+  return [o, flags]() -> ProbeReport {
+    if (flags->pixel.size() != 2) throw CLI::ValidationError("probe", "give --pixel X Y");
+    const prime::malone::Scene scene = loadMalone(*o);
+    const int x = flags->pixel[0], y = flags->pixel[1];
+    if (x < 0 || y < 0 || x >= scene.viewer.xRes || y >= scene.viewer.yRes)
+      throw CLI::ValidationError("--pixel", "--pixel " + std::to_string(x) + " " +
+                                                std::to_string(y) + " is outside the " +
+                                                std::to_string(scene.viewer.xRes) + " x " +
+                                                std::to_string(scene.viewer.yRes) + " picture");
+    const prime::malone::Tracer tracer(scene, o->trace);
+    prime::malone::TraceStats stats;
+    ProbeLog log;
+    const Rgb c = tracer.pixel(x, y, stats, &log);
+    const int r = prime::malone::toByte(c[0]), g = prime::malone::toByte(c[1]),
+              b = prime::malone::toByte(c[2]);
+    ProbeReport report;
+    report.text = o->file + ": Malone (1995)\n";
+    for (const ProbeEvent& e : log.events)
+      report.text += std::string(indentOf(e), ' ') + e.text + "\n";
+    char last[200];
+    std::snprintf(last, sizeof last,
+                  "pixel (%d, %d) = (%.6g, %.6g, %.6g) -> bytes %d %d %d; %llu rays\n", x, y, c[0],
+                  c[1], c[2], r, g, b, static_cast<unsigned long long>(stats.rays()));
+    report.text += last;
+    report.json = JsonObject()
+                      .add("scene", o->file)
+                      .add("where", "pixel " + std::to_string(x) + " " + std::to_string(y))
+                      .addJson("events", log.jsonEvents())
+                      .add("color", c)
+                      .add("rays", stats.rays())
+                      .addJson("malone", JsonObject()
+                                             .add("system", "Malone (1995)")
+                                             .addJson("bytes", "[" + std::to_string(r) + "," +
+                                                                   std::to_string(g) + "," +
+                                                                   std::to_string(b) + "]")
+                                             .str())
+                      .str();
+    return report;
+  };
 }
 
 }  // namespace prime::cli::malone

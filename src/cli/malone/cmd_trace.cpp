@@ -1,11 +1,11 @@
 // prime trace SCENE.mal: Malone's ray_trace and raster2ppm (section 1.10.3):
 // the scene rendered one ray per pixel, written as a binary PPM, with what
 // the port adds: a window that shows the rows as they finish, PNG, threads.
-// `prime trace` sends a scene file here when it reads as Malone's numbers
-// (or with --format malone).
+// The shared verb (src/cli/verbs.cpp) runs it when the scene reads as
+// Malone's numbers (or with --format malone).
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/malone/ppm.h"
@@ -15,6 +15,7 @@
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
 #include "src/cli/quantize_options.h"
+#include "src/cli/system.h"
 #include "src/cli/view_8514.h"
 
 namespace prime::cli::malone {
@@ -51,121 +52,100 @@ void printSummary(const prime::malone::RenderResult& r, const std::string& what)
       static_cast<unsigned long long>(s.cutByWeight));
 }
 
+class MaloneTrace : public TraceJob {
+ public:
+  MaloneTrace(std::shared_ptr<MaloneOptions> o, std::shared_ptr<TraceFlags> flags,
+              std::shared_ptr<std::string> ppm)
+      : o_(std::move(o)), flags_(std::move(flags)), ppm_(std::move(ppm)) {}
+
+  std::vector<std::string> outputs() const override {
+    return {*ppm_, flags_->png, flags_->trueColourPng, flags_->png8514};
+  }
+  void load() override {
+    o_->threads = flags_->threads;
+    scene_.emplace(loadMalone(*o_, &load_));
+    frame_.emplace(scene_->viewer.xRes, scene_->viewer.yRes);
+  }
+  bool quiet() const override { return flags_->quiet; }
+  display::LiveFrame& frame() override { return *frame_; }
+  void configure(LiveOptions& options) const override { options.caption = o_->file; }
+  void render(LiveRender& live) override {
+    prime::malone::RenderSettings settings;
+    settings.trace = o_->trace;
+    settings.threads = o_->threads;
+    prime::malone::RenderCallbacks cb;
+    cb.abort = live.abortFlag();
+    cb.progress = live.progress();
+    const int width = scene_->viewer.xRes;
+    std::vector<std::uint32_t> row(static_cast<std::size_t>(width));
+    if (live.windowed())
+      cb.rowDone = [&](int y, std::span<const Rgb> colours) {
+        for (int x = 0; x < width; ++x) {
+          const Rgb& c = colours[static_cast<std::size_t>(x)];
+          row[static_cast<std::size_t>(x)] =
+              static_cast<std::uint32_t>(prime::malone::toByte(c[0])) << 16 |
+              static_cast<std::uint32_t>(prime::malone::toByte(c[1])) << 8 |
+              prime::malone::toByte(c[2]);
+        }
+        frame_->setRow(y, row);
+      };
+    live.run([&] { result_ = prime::malone::render(*scene_, settings, cb); });
+  }
+  bool aborted() const override { return result_.run.aborted; }
+  void abort() override {
+    std::cerr << "prime: trace aborted: no picture written\n";
+    if (!flags_->quiet) printSummary(result_, "");
+  }
+  std::vector<std::string> write() override {
+    std::vector<std::string> written;
+    if (!ppm_->empty()) {
+      prime::malone::writePpm(*ppm_, result_.raster);
+      written.push_back(*ppm_);
+    }
+    if (!flags_->png.empty()) {
+      writePng(flags_->png, quantizedImage(toImage8(result_.raster), flags_->quantize));
+      written.push_back(flags_->png);
+    }
+    if (!flags_->trueColourPng.empty()) {
+      writePng(flags_->trueColourPng, toImage8(result_.raster));
+      written.push_back(flags_->trueColourPng);
+    }
+    if (!flags_->png8514.empty()) {
+      write8514Png(flags_->png8514, result_.raster);
+      written.push_back(flags_->png8514);
+    }
+    return written;
+  }
+  void summary(const std::vector<std::string>& written) const override {
+    std::string list;
+    for (const std::string& f : written) list += (list.empty() ? ": " : ", ") + f;
+    printSummary(result_, list);
+  }
+  void timings() const override {
+    std::printf("timings: read %.3f s, build %.3f s (scene %.3f s, BVH %.3f s), render %.3f s\n",
+                load_.read, load_.build + result_.setupSeconds, load_.build, result_.setupSeconds,
+                result_.run.seconds);
+  }
+  double seconds() const override { return result_.run.seconds; }
+
+ private:
+  std::shared_ptr<MaloneOptions> o_;
+  std::shared_ptr<TraceFlags> flags_;
+  std::shared_ptr<std::string> ppm_;
+  LoadTimings load_;
+  std::optional<prime::malone::Scene> scene_;
+  std::optional<display::LiveRgbFrame> frame_;
+  prime::malone::RenderResult result_;
+};
+
 }  // namespace
 
-void addTraceCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(
-      kTraceCommand, "Render a Malone (1995) scene file: prime trace SCENE.mal --ppm OUT.ppm");
-  cmd->group("");  // reached through `prime trace FILE` (src/cli/main.cpp)
+TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags) {
   auto o = std::make_shared<MaloneOptions>();
   auto ppm = std::make_shared<std::string>();
-  auto png = std::make_shared<std::string>();
-  auto png8514 = std::make_shared<std::string>();
-  auto quant = std::make_shared<QuantizeOptions>();
-  auto quiet = std::make_shared<bool>(false);
-  auto timings = std::make_shared<bool>(false);
-  auto live = std::make_shared<LiveOptions>();
   addMaloneOptions(cmd, *o);
   cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did");
-  cmd->add_option("--png", *png, "Write the picture as PNG (the same bytes as the PPM)");
-  cmd->add_option("--png-8514", *png8514,
-                  "Write the picture as PRIME's IBM 8514/A (1991) would have shown it: ColorNum's "
-                  "fixed 256-colour palette");
-  addQuantizeOptions(cmd, *quant, "the --png picture");
-  cmd->add_flag("--no-window", live->noWindow, "Do not open a window (also without a DISPLAY)");
-  cmd->add_option("--zoom", live->zoom, "Window zoom, 1..8")->check(CLI::Range(1, 8));
-  addWindowFitOptions(cmd, live, true);
-  cmd->add_flag("--no-wait", live->noWait, "Close the window when the render is done");
-  cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
-  cmd->add_flag("--timings", *timings,
-                "Print the seconds spent reading, building (scene and BVH) and rendering")
-      ->group("");  // for bench/malone_pov_compare.sh
-  cmd->callback([=, &action] {
-    action = [=] {
-      // Outputs whose directory is missing are found before the render, not after it.
-      for (const std::string* out : {ppm.get(), png.get(), png8514.get()}) {
-        if (out->empty()) continue;
-        const std::filesystem::path dir = std::filesystem::path(*out).parent_path();
-        if (!dir.empty() && !std::filesystem::is_directory(dir)) {
-          std::cerr << "prime: trace: cannot write " << *out << ": the directory " << dir.string()
-                    << " does not exist\n";
-          return 1;
-        }
-        if (std::filesystem::is_directory(*out)) {
-          std::cerr << "prime: trace: cannot write " << *out << ": it is a directory\n";
-          return 1;
-        }
-      }
-      LoadTimings load;
-      const prime::malone::Scene scene = loadMalone(*o, &load);
-      // Found before the render: a missing directory, a directory, an input.
-      for (const std::string* out : {ppm.get(), png.get(), png8514.get()})
-        if (!out->empty()) io::checkOutputPath(*out);
-      const int width = scene.viewer.xRes, height = scene.viewer.yRes;
-      display::LiveRgbFrame frame(width, height);
-      LiveOptions options = *live;
-      options.quiet = *quiet;
-      options.caption = o->file;
-      options.commandName = "trace";
-      LiveRender window(frame, options);
-
-      prime::malone::RenderSettings settings;
-      settings.trace = o->trace;
-      settings.threads = o->threads;
-      prime::malone::RenderResult result;
-      prime::malone::RenderCallbacks cb;
-      cb.abort = window.abortFlag();
-      cb.progress = window.progress();
-      std::vector<std::uint32_t> row(static_cast<std::size_t>(width));
-      if (window.windowed())
-        cb.rowDone = [&](int y, std::span<const Rgb> colours) {
-          for (int x = 0; x < width; ++x) {
-            const Rgb& c = colours[static_cast<std::size_t>(x)];
-            row[static_cast<std::size_t>(x)] =
-                static_cast<std::uint32_t>(prime::malone::toByte(c[0])) << 16 |
-                static_cast<std::uint32_t>(prime::malone::toByte(c[1])) << 8 |
-                prime::malone::toByte(c[2]);
-          }
-          frame.setRow(y, row);
-        };
-      window.run([&] { result = prime::malone::render(scene, settings, cb); });
-      if (result.run.aborted) {
-        window.closeWindow();
-        std::cerr << "prime: trace aborted: no picture written\n";
-        if (!*quiet) printSummary(result, "");
-        return 1;
-      }
-      std::string written;
-      if (!ppm->empty()) {
-        prime::malone::writePpm(*ppm, result.raster);
-        written += ": " + *ppm;
-      }
-      if (!png->empty()) {
-        writePng(*png, quantizedImage(toImage8(result.raster), *quant));
-        written += (written.empty() ? ": " : ", ") + *png;
-      }
-      if (!png8514->empty()) {
-        write8514Png(*png8514, result.raster);
-        written += (written.empty() ? ": " : ", ") + *png8514;
-      }
-      if (!*quiet) {
-        printSummary(result, written);
-        // One "wrote PATH" line per file written, as every command (issue 16).
-        for (const std::string& f : {*ppm, *png, *png8514})
-          if (!f.empty()) std::printf("wrote %s\n", f.c_str());
-      }
-      if (*timings)
-        std::printf(
-            "timings: read %.3f s, build %.3f s (scene %.3f s, BVH %.3f s), render %.3f s\n",
-            load.read, load.build + result.setupSeconds, load.build, result.setupSeconds,
-            result.run.seconds);
-      std::fflush(stdout);
-      char status[64];
-      std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.run.seconds);
-      window.waitForEsc(status);
-      return 0;
-    };
-  });
+  return [o, flags, ppm] { return std::make_unique<MaloneTrace>(o, flags, ppm); };
 }
 
 }  // namespace prime::cli::malone

@@ -1,19 +1,14 @@
-// Malone's commands. `prime trace FILE`, `prime probe FILE`, `prime bench
-// FILE ...` and `prime export-pov FILE OUT` reach them when
-// FILE reads as a Malone scene (src/cli/main.cpp picks the system).
+// Malone's parts of the shared verbs (src/cli/system.h): `prime trace`,
+// `probe`, `bench` and `export-pov` run them when the scene reads as Malone's
+// numbers (or with --format malone); src/cli/malone/adapter.cpp is the row.
 #pragma once
-#include "src/cli/commands.h"
+#include "src/cli/system.h"
 
 namespace prime::cli::malone {
 
-inline constexpr const char* kTraceCommand = "malone-trace";
-inline constexpr const char* kProbeCommand = "malone-probe";
-inline constexpr const char* kBenchCommand = "malone-bench";
-inline constexpr const char* kExportPovCommand = "malone-export-pov";
-
-void addTraceCommand(CLI::App& app, Action& action);
-void addProbeCommand(CLI::App& app, Action& action);
-void addBenchCommand(CLI::App& app, Action& action);
-void addExportPovCommand(CLI::App& app, Action& action);  // cmd_export_pov.cpp
+TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags);
+ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags);
+void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp
+void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
 
 }  // namespace prime::cli::malone

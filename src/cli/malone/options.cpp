@@ -9,8 +9,6 @@ namespace prime::cli::malone {
 
 void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
   cmd->add_option("SCENE", o.file, "Malone scene file (a stream of numbers)")->required();
-  cmd->add_option("--format", o.format, "Scene format (detected from the file): malone")
-      ->check(CLI::IsMember({"malone"}));
   cmd->add_flag("--comments", o.comments,
                 "Extension, not the original: '#' starts a comment to the end of the line");
   cmd->add_option("--max-depth", o.trace.maxDepth,
@@ -31,8 +29,6 @@ void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
       ->delimiter(',')
       ->check(
           CLI::IsMember({"ambient", "diffuse", "specular", "shadows", "reflection", "refraction"}));
-  cmd->add_option("--threads", o.threads, "Render threads (default: all cores)")
-      ->check(CLI::Range(0, 1024));
   cmd->add_flag("--linear-search", o.trace.linearSearch,
                 "Test every primitive for every ray, as the original did (same pixels, slower)");
 }

@@ -10,12 +10,11 @@ namespace prime::cli::malone {
 
 struct MaloneOptions {
   std::string file;
-  std::string format = "malone";
   bool comments = false;
   std::string debug;             // depth | colour | normal
   std::vector<std::string> off;  // --no ambient,diffuse,...
   prime::malone::TraceSettings trace;
-  int threads = 0;
+  int threads = 0;  // trace's shared --threads
 };
 
 void addMaloneOptions(CLI::App* cmd, MaloneOptions& o);

@@ -134,10 +134,7 @@ int runBench(const BenchCliOptions& o) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(
-      "bench",
-      "Run time against error: a reference and a grid of settings per scene; CSV, Markdown, plot");
+void addBenchOptions(CLI::App* cmd, Action& action) {
   auto o = std::make_shared<BenchCliOptions>();
   cmd->add_option("SCENE_DIR", o->scenes,
                   "Scene directories (default: every scenes/prime/*/ with a Model.txt)")

@@ -7,9 +7,7 @@
 
 namespace prime::cli {
 
-void addExportCommand(CLI::App& app, Action& action) {
-  auto* cmd =
-      app.add_subcommand("export", "Write the picture of a graph file as PNG, through a palette");
+void addExportOptions(CLI::App* cmd, Action& action) {
   auto file = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);

@@ -22,10 +22,7 @@ struct ExportPovOptions {
 
 }  // namespace
 
-void addExportPovCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(
-      "export-pov",
-      "Write a modelled scene as a POV-Ray 3.7 scene (OUT.pov, texture maps as PNG beside it)");
+void addExportPovOptions(CLI::App* cmd, Action& action) {
   auto dir = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);

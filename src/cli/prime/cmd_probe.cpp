@@ -1,36 +1,28 @@
-// prime probe DIR --pixel X Y | --ray ox oy oz dx dy dz: explain one pixel.
-#include <iostream>
+// prime probe DIR --pixel X Y | --ray ox oy oz dx dy dz: explain one pixel
+// (PRIME's part of the shared verb, src/cli/verbs.cpp).
+#include <sstream>
 
 #include "palette/prime/color_num.h"
-#include "src/cli/commands.h"
 #include "src/cli/prime/render_options.h"
+#include "src/cli/system.h"
 #include "src/prime/render/tracer_modern.h"
 
 namespace prime::cli {
 
-void addProbeCommand(CLI::App& app, Action& action) {
-  auto* cmd = app.add_subcommand(
-      "probe", "Explain one pixel: its whole ray tree, tests, hit, texture and shading");
+ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto dir = std::make_shared<std::string>();
-  auto pixel = std::make_shared<std::vector<int>>();
   auto ray = std::make_shared<std::vector<double>>();
-  auto asJson = std::make_shared<bool>(false);
   auto options = std::make_shared<RenderOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
-  auto* px =
-      cmd->add_option(
-             "--pixel", *pixel,
-             "Column and row of the rendered image, 0-based from its top-left (graph-file order)")
-          ->expected(2)
-          ->allow_extra_args(false);
-  auto* rx = cmd->add_option("--ray", *ray, "A world-space ray: origin x y z, direction x y z")
+  auto* rx = cmd->add_option("--ray", *ray,
+                             "Instead of --pixel, a world-space ray: origin x y z, direction x y z")
                  ->expected(6)
                  ->allow_extra_args(false);
-  px->excludes(rx);
-  cmd->add_flag("--json", *asJson, "Print JSON (one object with an events array)");
+  rx->excludes(cmd->get_option("--pixel"));
   addRenderOptions(cmd, *options);
-  cmd->callback([=, &action] {
-    action = [=] {
+  return [dir, ray, options, flags]() -> ProbeReport {
+    const std::vector<int>* pixel = &flags->pixel;
+    {
       if (pixel->empty() && ray->empty())
         throw CLI::ValidationError("probe", "give --pixel X Y or --ray ox oy oz dx dy dz");
       finishRenderOptions(*options);
@@ -81,36 +73,28 @@ void addProbeCommand(CLI::App& app, Action& action) {
       const PaletteTable table =
           options->settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
       const PaletteRgb shown = table[static_cast<std::size_t>(index & 0xFF)];
-      if (*asJson) {
-        std::string events = "[";
-        for (std::size_t i = 0; i < probe.events.size(); ++i)
-          events += (i ? "," : "") + JsonObject()
-                                         .add("depth", probe.events[i].depth)
-                                         .add("event", probe.events[i].kind)
-                                         .addJson("data", probe.events[i].json)
-                                         .str();
-        JsonObject doc;
-        doc.add("scene", scene.name).add("where", where);
-        if (profileName) doc.add("profile", profileName);
-        doc.addJson("events", events + "]")
-            .add("color", color)
-            .add("index", index)
-            .addJson("paletteRgb", "[" + std::to_string(shown.r) + "," + std::to_string(shown.g) +
-                                       "," + std::to_string(shown.b) + "]")
-            .add("rays", stats.rays());
-        std::cout << doc.str() << "\n";
-      } else {
-        std::cout << scene.name << ": " << where
-                  << (profileName ? std::string(" (") + profileName + " profile)" : "") << "\n";
-        for (const auto& e : probe.events)
-          std::cout << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
-        std::cout << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r
-                  << ", " << shown.g << ", " << shown.b << ") of 255; " << stats.rays()
-                  << " ray(s) in the tree\n";
-      }
-      return 0;
-    };
-  });
+      ProbeReport report;
+      JsonObject doc;
+      doc.add("scene", scene.name).add("where", where);
+      if (profileName) doc.add("profile", profileName);
+      doc.addJson("events", probe.jsonEvents())
+          .add("color", color)
+          .add("index", index)
+          .addJson("paletteRgb", "[" + std::to_string(shown.r) + "," + std::to_string(shown.g) +
+                                     "," + std::to_string(shown.b) + "]")
+          .add("rays", stats.rays());
+      report.json = doc.str();
+      std::ostringstream text;
+      text << scene.name << ": " << where
+           << (profileName ? std::string(" (") + profileName + " profile)" : "") << "\n";
+      for (const auto& e : probe.events)
+        text << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
+      text << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r << ", "
+           << shown.g << ", " << shown.b << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
+      report.text = text.str();
+      return report;
+    }
+  };
 }
 
 }  // namespace prime::cli

@@ -28,6 +28,7 @@
 #include "src/cli/prime/display_options.h"
 #include "src/cli/prime/render_options.h"
 #include "src/cli/quantize_options.h"
+#include "src/cli/system.h"
 
 namespace prime::cli {
 
@@ -236,150 +237,155 @@ void writePngs(const RenderResult& result, const PrimeCamera& camera, Placement 
              exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area));
 }
 
+class PrimeTrace : public TraceJob {
+ public:
+  PrimeTrace(std::shared_ptr<std::string> dir, std::shared_ptr<std::string> out,
+             std::shared_ptr<RenderOptions> options, std::shared_ptr<DisplayOptions> display,
+             std::shared_ptr<TraceFlags> flags)
+      : dir_(std::move(dir)),
+        options_(std::move(options)),
+        display_(std::move(display)),
+        flags_(std::move(flags)),
+        target_(out->empty() ? *dir_ + "/graph_scr" : *out),
+        partial_(target_ + ".partial") {}
+
+  // Found before the render: a missing directory, a directory, an input (M23).
+  std::vector<std::string> outputs() const override {
+    return {target_,
+            partial_,
+            graphInfoPath(target_),
+            graphInfoPath(partial_),
+            flags_->png,
+            flags_->trueColourPng,
+            flags_->png8514};
+  }
+  void load() override {
+    finishRenderOptions(*options_);
+    options_->settings.threads = flags_->threads;
+    scene_.emplace(prepareScene(*dir_, options_->model));
+    quantizing_ = !flags_->quantize.method.empty();
+    options_->settings.keepColours =
+        !flags_->trueColourPng.empty() || quantizing_;  // only these read them
+    const RenderSettings& settings = options_->settings;
+    camera_.emplace(settings.camera);
+    at_ = {camera_->screenX(0), camera_->screenY(0)};
+    mappingPalette_ = settings.mapping == ColorMapping::Plate3
+                          ? "plate3"
+                          : paletteNameForGraphType(settings.graphType);
+    palette_ = paletteOf(*display_, mappingPalette_);
+    // The emulated screen, in a window if there can be one. Without one
+    // nothing draws on it: a one-pixel stand-in, not megabytes to clear
+    // before the render can start (4096 x 3072 at --screen 4096 3072).
+    display_->noWindow = flags_->live.noWindow;
+    const bool headless = display::headlessReason(display_->noWindow).has_value();
+    screen_.emplace(headless ? 1 : camera_->screenWidth(), headless ? 1 : camera_->screenHeight(),
+                    windowPalettes(palette_), dacOf(*display_));
+  }
+  bool quiet() const override { return flags_->quiet; }
+  display::LiveFrame& frame() override { return *screen_; }
+  void configure(LiveOptions& options) const override {
+    options.caption = *dir_;
+    options.keys = "P palette, D DAC";
+    options.firstRow = at_.top;  // the image's row 0 on the screen
+  }
+  void render(LiveRender& live) override {
+    const RenderSettings& settings = options_->settings;
+    // Which rows are done (rowDone runs on one thread, the render's caller).
+    finished_.assign(static_cast<std::size_t>(camera_->rows()), 0);
+    RenderCallbacks cb;
+    cb.abort = live.abortFlag();
+    cb.progress = live.progress();
+    // Quantizing replaces the indices after the render: written then.
+    if (!quantizing_) {
+      io::GraphFile header;
+      header.graphType = static_cast<std::int16_t>(settings.graphType);
+      header.numPixAcross = static_cast<std::int16_t>(camera_->numPixAcross());
+      header.numPixDown = static_cast<std::int16_t>(camera_->numPixDown());
+      stream_.emplace(target_, header, camera_->rows());
+    }
+    cb.rowDone = [&](int row, std::span<const std::int16_t> indices) {
+      finished_[static_cast<std::size_t>(row)] = 1;
+      if (stream_) stream_->row(row, indices);
+      if (live.windowed()) screen_->drawRow(at_, row, indices);  // PutPixel(j, i, color)
+    };
+    live.run([&] { result_ = prime::render(*scene_, settings, cb); });
+  }
+  bool aborted() const override { return result_.aborted; }
+  void abort() override {
+    const int screenW = camera_->screenWidth(), screenH = camera_->screenHeight();
+    writeAborted(result_, finished_, target_, partial_, [&](const io::GraphFile& head) {
+      writeCompanion(partial_, head, screenW, screenH, options_->profile, at_,
+                     *findBuiltinPalette(mappingPalette_), false);
+    });
+    if (!flags_->quiet) printSummary(result_, partial_);
+  }
+  std::vector<std::string> write() override {
+    const int screenW = camera_->screenWidth(), screenH = camera_->screenHeight();
+    if (quantizing_) {
+      const Palette quantized = quantizeGraph(result_, flags_->quantize);
+      if (display_->palette.empty()) palette_ = quantized;
+      writeGraphAndCompanion(target_, result_.graph, screenW, screenH, options_->profile, at_,
+                             quantized, true);
+    } else {
+      writeGraphAndCompanion(target_, result_.graph, screenW, screenH, options_->profile, at_,
+                             *findBuiltinPalette(mappingPalette_), false,
+                             stream_ ? &*stream_ : nullptr);
+    }
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);  // an older aborted run's
+    std::filesystem::remove(graphInfoPath(partial_), ec);
+    // --png and --png-8514 are the same picture here: PRIME's own screen.
+    writePngs(result_, *camera_, at_, palette_, *display_, flags_->png, flags_->trueColourPng);
+    if (!flags_->png8514.empty())
+      writePngs(result_, *camera_, at_, palette_, *display_, flags_->png8514, "");
+    std::vector<std::string> written;
+    for (const std::string& f : {target_, flags_->png, flags_->trueColourPng, flags_->png8514})
+      if (!f.empty()) written.push_back(f);
+    return written;
+  }
+  void summary(const std::vector<std::string>&) const override {
+    printSummary(result_, target_);
+    if (!quantizing_) noteOneIndex(result_);
+  }
+  double seconds() const override { return result_.seconds; }
+
+ private:
+  std::shared_ptr<std::string> dir_;
+  std::shared_ptr<RenderOptions> options_;
+  std::shared_ptr<DisplayOptions> display_;
+  std::shared_ptr<TraceFlags> flags_;
+  std::string target_, partial_;
+  std::optional<Scene> scene_;
+  std::optional<PrimeCamera> camera_;
+  Placement at_;
+  std::string mappingPalette_;
+  Palette palette_;
+  bool quantizing_ = false;
+  std::optional<display::LiveScreen> screen_;
+  std::vector<char> finished_;
+  std::optional<GraphStream> stream_;
+  RenderResult result_;
+};
+
 }  // namespace
 
-void addTraceCommand(CLI::App& app, Action& action) {
-  auto* cmd =
-      app.add_subcommand("trace", "Render a modelled scene as RayTrace.c did (1991 profile)");
+TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags) {
   auto dir = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
-  auto png = std::make_shared<std::string>();
-  auto trueColourPng = std::make_shared<std::string>();
-  auto quiet = std::make_shared<bool>(false);
-  auto noWait = std::make_shared<bool>(false);
   auto options = std::make_shared<RenderOptions>();
   auto display = std::make_shared<DisplayOptions>();
-  auto quant = std::make_shared<QuantizeOptions>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
-  auto format = std::make_shared<std::string>("prime");
-  cmd->add_option("--format", *format,
-                  "Scene format (detected: a directory is PRIME's, a file of numbers "
-                  "Malone's, which takes its own options: prime trace FILE --help)")
-      ->check(CLI::IsMember({"prime"}));
   cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)");
-  cmd->add_option("--png", *png,
-                  "Also write the picture as PNG, through the display palette (see --png-area)");
-  cmd->add_option(
-      "--true-color-png", *trueColourPng,
-      "Also write the unquantised colours as PNG (same area as --png): what the 256 colours cost");
   addAreaOption(cmd, *display, "--png-area");
   cmd->add_option(
       "--display-palette", display->palette,
       "Palette for the window and PNG: listing, plate3, vga or a palette file (default: the one "
       "--palette implies)");
   addDacOption(cmd, *display);
-  addWindowOptions(cmd, *display);
-  auto pace = std::make_shared<std::string>();
-  cmd->add_option("--pace", *pace,
-                  "Show the finished rows no faster than this many a second, or 1991 for an "
-                  "estimate of the original's speed (the render may finish first; the window "
-                  "catches up, Esc stops it)");
-  cmd->add_flag("--no-wait", *noWait,
-                "Close the window when the render is done instead of waiting for Esc");
-  cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("-q,--quiet", *quiet, "No progress and no summary");
   addRenderOptions(cmd, *options);
-  addQuantizeOptions(cmd, *quant, "the graph file (its companion file carries the palette)");
-  cmd->callback([=, &action] {
-    // --format is bound to *format: the callback keeps it alive as long as
-    // the command (an unused capture would be dropped, leaving it dangling).
-    static_cast<void>(format);
-    action = [=] {
-      finishRenderOptions(*options);
-      const Scene scene = prepareScene(*dir, options->model);
-      const std::string target = out->empty() ? *dir + "/graph_scr" : *out;
-      const std::string partial = target + ".partial";
-      const bool quantizing = !quant->method.empty();
-      // Found before the render: a missing directory, a directory, an input (M23).
-      for (const std::string& path :
-           {target, partial, graphInfoPath(target), graphInfoPath(partial), *png, *trueColourPng})
-        if (!path.empty()) io::checkOutputPath(path);
-      options->settings.keepColours =
-          !trueColourPng->empty() || quantizing;  // only these read them
-      const RenderSettings& settings = options->settings;
-      const PrimeCamera camera(settings.camera);
-      const Placement at{camera.screenX(0), camera.screenY(0)};
-      const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
-      const std::string mappingPalette = settings.mapping == ColorMapping::Plate3
-                                             ? "plate3"
-                                             : paletteNameForGraphType(settings.graphType);
-      Palette palette = paletteOf(*display, mappingPalette);
-
-      // The emulated screen, in a window if there can be one. Without one
-      // nothing draws on it: a one-pixel stand-in, not megabytes to clear
-      // before the render can start (4096 x 3072 at --screen 4096 3072).
-      const bool headless = display::headlessReason(display->noWindow).has_value();
-      display::LiveScreen screen(headless ? 1 : screenW, headless ? 1 : screenH,
-                                 windowPalettes(palette), dacOf(*display));
-      LiveOptions liveOptions{display->noWindow, *quiet, *noWait, display->zoom, *dir, "trace",
-                              "P palette, D DAC"};
-      liveOptions.fullscreen = display->fullscreen;
-      liveOptions.scale = scaleOf(*display);
-      if (!pace->empty()) parsePace(*pace, liveOptions);
-      liveOptions.firstRow = at.top;  // the image's row 0 on the screen
-      LiveRender live(screen, liveOptions);
-
-      // Which rows are done (rowDone runs on one thread, the render's caller).
-      std::vector<char> finished(static_cast<std::size_t>(camera.rows()), 0);
-      RenderCallbacks cb;
-      cb.abort = live.abortFlag();
-      cb.progress = live.progress();
-      // Quantizing replaces the indices after the render: written then.
-      std::optional<GraphStream> stream;
-      if (!quantizing) {
-        io::GraphFile header;
-        header.graphType = static_cast<std::int16_t>(settings.graphType);
-        header.numPixAcross = static_cast<std::int16_t>(camera.numPixAcross());
-        header.numPixDown = static_cast<std::int16_t>(camera.numPixDown());
-        stream.emplace(target, header, camera.rows());
-      }
-      cb.rowDone = [&](int row, std::span<const std::int16_t> indices) {
-        finished[static_cast<std::size_t>(row)] = 1;
-        if (stream) stream->row(row, indices);
-        if (live.windowed()) screen.drawRow(at, row, indices);  // PutPixel(j, i, color)
-      };
-      RenderResult result;
-      live.run([&] { result = render(scene, settings, cb); });
-
-      if (result.aborted) {
-        live.closeWindow();  // ExitOnEsc: the screen goes at once
-        writeAborted(result, finished, target, partial, [&](const io::GraphFile& head) {
-          writeCompanion(partial, head, screenW, screenH, options->profile, at,
-                         *findBuiltinPalette(mappingPalette), false);
-        });
-        if (!*quiet) printSummary(result, partial);
-        return 1;  // as ExitOnEsc's exit(1)
-      }
-
-      if (quantizing) {
-        const Palette quantized = quantizeGraph(result, *quant);
-        if (display->palette.empty()) palette = quantized;
-        writeGraphAndCompanion(target, result.graph, screenW, screenH, options->profile, at,
-                               quantized, true);
-      } else {
-        writeGraphAndCompanion(target, result.graph, screenW, screenH, options->profile, at,
-                               *findBuiltinPalette(mappingPalette), false,
-                               stream ? &*stream : nullptr);
-      }
-      std::error_code ec;
-      std::filesystem::remove(partial, ec);  // an older aborted run's
-      std::filesystem::remove(graphInfoPath(partial), ec);
-      writePngs(result, camera, at, palette, *display, *png, *trueColourPng);
-      if (!*quiet) {
-        printSummary(result, target);
-        if (!quantizing) noteOneIndex(result);
-        // One "wrote PATH" line per file written, as every command (issue 16).
-        for (const std::string& f : {target, *png, *trueColourPng})
-          if (!f.empty()) std::printf("wrote %s\n", f.c_str());
-      }
-      std::fflush(stdout);
-      char status[64];
-      std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", result.seconds);
-      live.waitForEsc(status);
-      return 0;
-    };
-  });
+  return [dir, out, options, display, flags] {
+    return std::make_unique<PrimeTrace>(dir, out, options, display, flags);
+  };
 }
 
 }  // namespace prime::cli

@@ -12,9 +12,7 @@
 
 namespace prime::cli {
 
-void addViewCommand(CLI::App& app, Action& action) {
-  auto* cmd =
-      app.add_subcommand("view", "Show a graph file on the emulated 8514/A screen in a window");
+void addViewOptions(CLI::App* cmd, Action& action) {
   auto file = std::make_shared<std::string>();
   auto rate = std::make_shared<double>(0.0);
   auto o = std::make_shared<DisplayOptions>();

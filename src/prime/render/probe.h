@@ -16,44 +16,13 @@
 #include "src/prime/geom/interval_list.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/trace_stats.h"
+#include "src/render/probe_log.h"
 
 namespace prime {
 
 const char* rayKindName(RayKind k);
 
-// A JSON object built field by field: keys and strings quoted and escaped,
-// numbers as json(double) prints them (17 digits; NaN and Inf as strings).
-class JsonObject {
- public:
-  JsonObject& add(std::string_view key, int v);
-  JsonObject& add(std::string_view key, std::uint64_t v);
-  JsonObject& add(std::string_view key, double v);
-  JsonObject& add(std::string_view key, bool v);
-  JsonObject& add(std::string_view key, const Vec3& v);
-  JsonObject& add(std::string_view key, std::string_view v);
-  JsonObject& add(std::string_view key, const char* v) { return add(key, std::string_view(v)); }
-  JsonObject& add(std::string_view key, char v) { return add(key, std::string_view(&v, 1)); }
-  // A value that is JSON already (an array or object built elsewhere).
-  JsonObject& addJson(std::string_view key, std::string_view json);
-  std::string str() const { return text_ + "}"; }
-
- private:
-  JsonObject& key(std::string_view k);
-  std::string text_ = "{";
-};
-
-std::string jsonString(std::string_view s);  // "s", escaped
-
-struct ProbeEvent {
-  int depth = 0;
-  std::string kind;  // "ray", "bound", "primitive", "csg", "object", "hit", "texture", "transmit",
-                     // "hall", "shade", "miss",
-                     // "shadow"
-  std::string text;  // human-readable one-liner
-  std::string json;  // the same as a JSON object
-};
-
-class Probe {
+class Probe : public ProbeLog {
  public:
   // CastRay: a ray of the tree (its direction unit).
   void ray(int depth, RayKind kind, const Ray& ray);
@@ -86,20 +55,10 @@ class Probe {
   void hallTerms(int depth, const std::array<HallTerms, 3>& terms);
   // The hit's colour from the returned reflected and transmitted colours.
   void shade(int depth, const Rgb& reflected, const Rgb& transmitted, double sT, const Rgb& colour);
-
-  std::vector<ProbeEvent> events;
-
- private:
-  void add(int depth, std::string kind, std::string text, const JsonObject& json) {
-    events.push_back({depth, std::move(kind), std::move(text), json.str()});
-  }
 };
 
-// Formatting helpers for the probe's lines (an Rgb is a Vec3).
-std::string fmt(double v);
-std::string fmt(const Vec3& v);
-std::string json(const Vec3& v);
-std::string json(double v);
+// Formatting helpers for the probe's lines (an Rgb is a Vec3; fmt and json
+// are the shared ones of src/render/probe_log.h).
 std::string describe(const TList& list);
 std::string jsonList(const TList& list);
 

@@ -149,7 +149,7 @@ TEST(CglReplay, TheCallStatementOfAppendix2) {
                           " --no-window -o " + (dir / "a.rle").string());
   ASSERT_EQ(a.status, 0) << a.output;
   const auto b =
-      runPrime("trace " + scenePath("glass") + " --yhigh 300 --xleft 100 --depth 0 " +
+      runPrime("trace " + scenePath("glass") + " --yhigh 300 --xleft 100 --max-depth 0 " +
                "--aalevel 0 --shadows --quiet --no-window --rle " + (dir / "b.rle").string());
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_EQ(bytesOf(dir / "a.rle"), bytesOf(dir / "b.rle"));
@@ -217,7 +217,7 @@ TEST(CglProbe, ThePixelsColourAndItsRays) {
   ASSERT_EQ(t.status, 0) << t.output;
   const Image8 img = readPng(dir / "a.png");
   // The mirror ball: pixel (200, 240) (y from the bottom), image row 511 - 240.
-  const auto p = runPrime("probe " + scenePath("checkerboard") + " 200 240");
+  const auto p = runPrime("probe " + scenePath("checkerboard") + " --point 200 240");
   ASSERT_EQ(p.status, 0) << p.output;
   const std::size_t at = (static_cast<std::size_t>(511 - 240) * 512 + 200) * 3;
   const std::string rgb =

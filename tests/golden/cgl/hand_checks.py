@@ -306,7 +306,7 @@ def main(argv):
     for name, x, y in CHECKS:
         path = os.path.join(root, "scenes", "cgl", name + ".cgl")
         want = pixel(read_scene(path), x, y)
-        out = subprocess.run([prime, "probe", path, str(x), str(y)], capture_output=True,
+        out = subprocess.run([prime, "probe", path, "--point", str(x), str(y)], capture_output=True,
                              text=True).stdout
         m = re.search(r"^RGB \(ToRGB.*\): (\d+) (\d+) (\d+)", out, re.M)
         got = tuple(int(g) for g in m.groups()) if m else None
@@ -317,7 +317,7 @@ def main(argv):
     for name, x, y in FRACTAL_CHECKS:
         path = os.path.join(root, "scenes", "cgl", name + ".cgl")
         want = fractal_hit(path, x, y)
-        out = subprocess.run([prime, "probe", path, str(x), str(y)], capture_output=True,
+        out = subprocess.run([prime, "probe", path, "--point", str(x), str(y)], capture_output=True,
                              text=True).stdout
         m = re.search(r"at t = ([-\d.e+]+), point \([^)]*\), normal facing the viewer "
                       r"\(([-\d.e+]+), ([-\d.e+]+), ([-\d.e+]+)\)", out)

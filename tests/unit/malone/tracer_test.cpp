@@ -31,10 +31,17 @@ void expectVec(const Vec3& got, const Vec3& want, double tol = 1e-12) {
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], tol) << "component " << k;
 }
 
+// With `probe`: the probe's events, one text line each; `json` their data.
 Rgb traceOnce(const Scene& s, const MRay& ray, TraceStats& stats, TraceSettings settings = {},
-              double index = 1.0, std::string* probe = nullptr) {
+              double index = 1.0, std::string* probe = nullptr, std::string* json = nullptr) {
   const Tracer tracer(s, settings);
-  return tracer.trace(ray, 1, 1.0, index, stats, probe);
+  ProbeLog log;
+  const Rgb c = tracer.trace(ray, 1, 1.0, index, stats, probe ? &log : nullptr);
+  for (const ProbeEvent& e : log.events) {
+    if (probe) *probe += e.kind + " " + e.text + "\n";
+    if (json) *json += e.json + "\n";
+  }
+  return c;
 }
 
 // The direction printed after `what ... along (` in a probe.
@@ -227,8 +234,10 @@ TEST(MaloneRefraction, EnteringSnell) {
   // sin(theta_t) = sin 45 / 1.5 = 0.471405, cos = sqrt(1 - 2/9) = 0.881917.
   const Scene s = sceneOf(kGlassPlane);
   TraceStats stats;
-  std::string probe;
-  traceOnce(s, rayOf({-1, 1, 0}, {1, -1, 0}), stats, {}, 1.0, &probe);
+  std::string probe, json;
+  traceOnce(s, rayOf({-1, 1, 0}, {1, -1, 0}), stats, {}, 1.0, &probe, &json);
+  // The same event as data: the probe's JSON (one schema for every system).
+  EXPECT_THAT(json, HasSubstr("{\"leaving\":false,\"eta\":0.66666666666666663,"));
   EXPECT_EQ(stats.transmittedRays, 1u);
   EXPECT_EQ(stats.totalInternalReflections, 0u);
   EXPECT_THAT(probe, HasSubstr("transmitted (entering, eta = 0.666667)"));

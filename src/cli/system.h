@@ -1,0 +1,148 @@
+// What a system gives the shared verbs of `prime` (src/cli/verbs.cpp): a
+// command-level contract, not a renderer base class. Each verb (`trace`,
+// `probe`, `bench`, `export-pov`, `export`, `view`) is written once: it
+// registers the flags every system shares, with one meaning, then asks the
+// chosen system's adapter for its own flags and for the work to do. Shapes,
+// shading, tracers and cameras stay each system's own.
+//
+// A fourth system is one more adapter (src/cli/<system>/adapter.cpp) and one
+// row in systems() (src/cli/systems.cpp).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "src/cli/commands.h"
+#include "src/cli/live_render.h"
+#include "src/cli/quantize_options.h"
+
+namespace prime::display {
+class LiveFrame;
+}
+
+namespace prime::cli {
+
+// ---- trace -----------------------------------------------------------------
+
+// The flags `prime trace` has for every system, with one meaning.
+struct TraceFlags {
+  std::string format;         // --format (empty: detected)
+  std::string png;            // --png: the picture as the system itself showed or wrote it
+  std::string trueColourPng;  // --true-color-png: the render before any palette
+  std::string png8514;        // --png-8514: as PRIME's IBM 8514/A would show it
+  QuantizeOptions quantize;   // --quantize, --dither, --colours: the --png picture
+  int threads = 0;            // --threads (0: every core)
+  bool quiet = false;         // -q
+  bool timings = false;       // --timings (hidden: the benchmark scripts')
+  LiveOptions live;           // --no-window --zoom --fullscreen --scale --pace --no-wait
+};
+
+// One render of one system, driven by the shared skeleton (runTrace): check
+// the outputs, load, open the live window, render, then either the abort
+// path or the outputs and the summary.
+class TraceJob {
+ public:
+  virtual ~TraceJob() = default;
+  // Every file the job may write (checked before the scene is read and again
+  // after, when its inputs are known: no output may replace an input).
+  virtual std::vector<std::string> outputs() const = 0;
+  // Reads and builds the scene; prints the system's own report unless quiet.
+  virtual void load() = 0;
+  // False when the scene itself asks for quiet (CGL's quiet parameter).
+  virtual bool quiet() const = 0;
+  // What the window shows, and the system's own window settings (caption,
+  // keys, the frame row of the render's row 0). After load().
+  virtual display::LiveFrame& frame() = 0;
+  virtual void configure(LiveOptions& options) const = 0;
+  // The render, through live.run() with live's abort flag and progress.
+  virtual void render(LiveRender& live) = 0;
+  virtual bool aborted() const = 0;
+  // An aborted render: what it leaves behind, and its messages.
+  virtual void abort() = 0;
+  // A finished render: writes the outputs; returns the files written, in order.
+  virtual std::vector<std::string> write() = 0;
+  // The system's counters; `written` as write() returned it.
+  virtual void summary(const std::vector<std::string>& written) const = 0;
+  virtual void timings() const {}  // --timings
+  virtual double seconds() const = 0;
+};
+
+using TraceFactory = std::function<std::unique_ptr<TraceJob>()>;
+
+// ---- probe -----------------------------------------------------------------
+
+// The flags `prime probe` has for every system.
+struct ProbeFlags {
+  std::string format;
+  std::vector<int> pixel;  // --pixel X Y: column X, row Y from the top of what `trace` writes
+  bool json = false;       // --json
+};
+
+// One pixel explained: the human-readable text and the same as one JSON
+// object (schema in docs/user-guide.md, "probe"): "scene", "where",
+// "events" [{"depth", "event", "data"}], "color", "rays", and the system's
+// own fields (PRIME's "profile", "index", "paletteRgb" at the top level, as
+// they always were; "malone" and "cgl" objects for the others).
+struct ProbeReport {
+  std::string text;
+  std::string json;
+};
+
+using ProbeFactory = std::function<ProbeReport()>;
+
+// ---- the systems -------------------------------------------------------------
+
+struct System {
+  const char* name;   // as --format takes it: prime, malone, cgl
+  const char* title;  // for help and messages: "PRIME (1991)"
+  // Whether `scene` is this system's (`head`: the first 4 KiB of a file; empty
+  // for a directory).
+  bool (*recognises)(const std::string& scene, bool isFile, std::string_view head);
+  // Each verb's system part: adds the system's own flags and arguments to the
+  // verb's command (the shared flags are on it) and returns what the verb
+  // runs once the command line is parsed. Null: the system has no such verb.
+  TraceFactory (*trace)(CLI::App* cmd, const std::shared_ptr<TraceFlags>& flags);
+  ProbeFactory (*probe)(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags);
+  // The whole of bench (Malone's and CGL's through the shared table of
+  // src/cli/bench_table.h; PRIME's is its run time against error study) and of
+  // export-pov SCENE OUT (each system's exporter is its own).
+  void (*bench)(CLI::App* cmd, Action& action);
+  void (*exportPov)(CLI::App* cmd, Action& action);
+  // export PICTURE OUT and view PICTURE, for the system's own picture files.
+  void (*exportPicture)(CLI::App* cmd, Action& action);
+  void (*viewPicture)(CLI::App* cmd, Action& action);
+  // Whether `path` is one of the system's picture files (export, view); null
+  // for PRIME, whose graph files are what any other file is taken for.
+  bool (*picture)(const std::string& path, const std::string& format);
+  // The system's own way of writing a command line, rewritten to its flags
+  // before parsing (CGL's 1985 call statement: `trace -yh 511 -d 3 scene`);
+  // arguments from `first` on. Null: none.
+  void (*callStatement)(std::vector<std::string>& args, std::size_t first);
+};
+
+// Every system, PRIME first (the default for a directory or nothing).
+std::span<const System> systems();
+const System* findSystem(std::string_view name);
+
+// The system a verb's command line names: --format, else the first system
+// that recognises the scene (the first word after the verb that names an
+// existing file or directory), else PRIME. For export and view, the system
+// whose picture the file is.
+const System& systemFor(std::string_view verb, const std::vector<std::string>& args);
+
+// The verbs every system plugs into, as the command table registers them.
+void addTraceVerb(CLI::App& app, Action& action, const System& system);
+void addProbeVerb(CLI::App& app, Action& action, const System& system);
+void addBenchVerb(CLI::App& app, Action& action, const System& system);
+void addExportPovVerb(CLI::App& app, Action& action, const System& system);
+void addExportVerb(CLI::App& app, Action& action, const System& system);
+void addViewVerb(CLI::App& app, Action& action, const System& system);
+
+// The shared skeleton of `prime trace`.
+int runTrace(TraceJob& job, const TraceFlags& flags);
+
+}  // namespace prime::cli

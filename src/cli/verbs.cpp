@@ -1,0 +1,257 @@
+// The verbs every system plugs into, each written once: `trace`, `probe`,
+// `bench`, `export-pov`, `export` and `view`. A verb registers itself under
+// its own name with the flags every system shares, then the chosen system's
+// part (src/cli/system.h). Which system: systemFor(), from --format or the
+// scene the command line names.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "legacy_io/common/output_file.h"
+#include "palette/window/live_frame.h"
+#include "src/cli/system.h"
+
+namespace prime::cli {
+
+namespace {
+
+std::string fileHead(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+std::string systemNames() {
+  std::string s;
+  for (const System& sys : systems()) s += (s.empty() ? "" : ", ") + std::string(sys.name);
+  return s;
+}
+
+// --format, on every verb: one of the systems (the one chosen, whose flags
+// follow; systemFor() read it before the command line was parsed).
+// `format`: where the value goes (null: nowhere, only checked).
+void addFormatOption(CLI::App* cmd, std::string* format, const std::string& what) {
+  std::vector<std::string> names;
+  for (const System& sys : systems()) names.push_back(sys.name);
+  cmd->add_option_function<std::string>(
+         "--format",
+         [format](const std::string& v) {
+           if (format != nullptr) *format = v;
+         },
+         "The " + what + "'s system: " + systemNames() +
+             " (default: detected; a directory is "
+             "PRIME's)")
+      ->check(CLI::IsMember(names));
+}
+
+// The help's last lines: which system's flags these are, and how to see the others'.
+std::string systemFooter(const System& system, const std::string& verb) {
+  std::string others;
+  for (const System& sys : systems())
+    if (&sys != &system) others += std::string(others.empty() ? "" : "; ") + sys.title;
+  const bool picture = verb == "export" || verb == "view";
+  return std::string("These are the options for ") + system.title +
+         (picture ? " pictures" : " scenes") + ". The other systems' " +
+         (picture ? "pictures" : "scenes") + " take their own: prime " + verb + " " +
+         (picture ? "PICTURE" : "SCENE") + " --help names one (" + others + ").";
+}
+
+CLI::App* addVerb(CLI::App& app, const std::string& verb, const std::string& what,
+                  const System& system) {
+  auto* cmd = app.add_subcommand(verb, what);
+  cmd->footer(systemFooter(system, verb));
+  return cmd;
+}
+
+}  // namespace
+
+std::span<const System> systems();  // src/cli/systems.cpp
+
+const System* findSystem(std::string_view name) {
+  for (const System& sys : systems())
+    if (name == sys.name) return &sys;
+  return nullptr;
+}
+
+const System& systemFor(std::string_view verb, const std::vector<std::string>& args) {
+  std::string format, scene;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--format" && i + 1 < args.size()) {
+      format = args[++i];
+    } else if (a.rfind("--format=", 0) == 0) {
+      format = a.substr(9);
+    } else if (!a.empty() && a[0] != '-') {
+      // The first word that names a file or directory (a 1985 call statement
+      // puts numbers before it: `trace -yh 511 scene`), else the first word.
+      if (scene.empty() || (!std::filesystem::exists(scene) && std::filesystem::exists(a)))
+        scene = a;
+    }
+  }
+  const std::span<const System> all = systems();
+  if (verb == "export" || verb == "view") {  // PRIME's graph files are the default
+    for (const System& sys : all)
+      if (sys.picture != nullptr && sys.picture(scene, format)) return sys;
+    return all.front();
+  }
+  if (const System* named = findSystem(format)) return *named;
+  std::error_code ec;
+  const bool isFile = !scene.empty() && std::filesystem::is_regular_file(scene, ec);
+  const std::string head = isFile ? fileHead(scene) : std::string();
+  for (const System& sys : all)
+    if (sys.recognises(scene, isFile, head)) return sys;
+  return all.front();
+}
+
+// ---- trace -------------------------------------------------------------------
+
+int runTrace(TraceJob& job, const TraceFlags& flags) {
+  // Outputs whose directory is missing are found before the render, not after it.
+  for (const std::string& out : job.outputs())
+    if (!out.empty()) io::checkOutputPath(out);
+  job.load();
+  // Again now that the inputs are known: none may be an output.
+  for (const std::string& out : job.outputs())
+    if (!out.empty()) io::checkOutputPath(out);
+  const bool quiet = job.quiet();
+  LiveOptions options = flags.live;
+  options.quiet = quiet;
+  options.commandName = "trace";
+  job.configure(options);
+  LiveRender live(job.frame(), options);
+  job.render(live);
+  if (job.aborted()) {
+    live.closeWindow();  // ExitOnEsc: the screen goes at once
+    job.abort();
+    return 1;  // as the 1991 ExitOnEsc's exit(1)
+  }
+  const std::vector<std::string> written = job.write();
+  if (!quiet) {
+    job.summary(written);
+    // One "wrote PATH" line per file written, as every command.
+    for (const std::string& f : written) std::printf("wrote %s\n", f.c_str());
+  }
+  if (flags.timings) job.timings();
+  std::fflush(stdout);
+  char status[64];
+  std::snprintf(status, sizeof status, "done in %.2f s - Esc to close", job.seconds());
+  live.waitForEsc(status);
+  return 0;
+}
+
+void addTraceVerb(CLI::App& app, Action& action, const System& system) {
+  auto* cmd = addVerb(app, "trace",
+                      "Render a scene of any system (a PRIME scene directory, a Malone or a CGL "
+                      "scene file); --png OUT.png writes the picture as the system showed it",
+                      system);
+  auto flags = std::make_shared<TraceFlags>();
+  addFormatOption(cmd, &flags->format, "scene");
+  cmd->add_option("--png", flags->png,
+                  "Write the picture as the system itself showed or wrote it, as PNG (PRIME: the "
+                  "8514/A screen; Malone: its PPM; CGL: its frame buffer)");
+  cmd->add_option("--true-color-png", flags->trueColourPng,
+                  "Write the render before any palette, as PNG (true colour)");
+  cmd->add_option("--png-8514", flags->png8514,
+                  "Write the picture as PRIME's IBM 8514/A (1991) would have shown it, as PNG "
+                  "(for PRIME the same as --png)");
+  addQuantizeOptions(cmd, flags->quantize, "the --png picture");
+  cmd->add_option("--threads", flags->threads, "Render threads (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  cmd->add_flag("-q,--quiet", flags->quiet, "No progress, no report and no summary");
+  cmd->add_flag("--timings", flags->timings,
+                "Print the seconds spent reading, building and rendering")
+      ->group("");  // for the benchmark scripts
+  auto live = std::shared_ptr<LiveOptions>(flags, &flags->live);
+  addLiveWindowOptions(cmd, live, true);
+  const TraceFactory make = system.trace(cmd, flags);
+  cmd->callback([flags, make, &action] {
+    action = [flags, make] {
+      const std::unique_ptr<TraceJob> job = make();
+      return runTrace(*job, *flags);
+    };
+  });
+}
+
+// ---- probe -------------------------------------------------------------------
+
+void addProbeVerb(CLI::App& app, Action& action, const System& system) {
+  auto* cmd = addVerb(app, "probe",
+                      "Explain one pixel of any system's scene: its whole ray tree, the tests, "
+                      "hits, lights and shading (--json for machines)",
+                      system);
+  auto flags = std::make_shared<ProbeFlags>();
+  addFormatOption(cmd, &flags->format, "scene");
+  cmd->add_option(
+         "--pixel", flags->pixel,
+         "Column X and row Y of the picture `prime trace` writes, 0-based from its top-left")
+      ->expected(2)
+      ->allow_extra_args(false);
+  cmd->add_flag("--json", flags->json,
+                "Print JSON: one object with an events array (docs/user-guide.md, probe)");
+  const ProbeFactory make = system.probe(cmd, flags);
+  cmd->callback([flags, make, &action] {
+    action = [flags, make] {
+      const ProbeReport r = make();
+      if (flags->json)
+        std::cout << r.json << "\n";
+      else
+        std::cout << r.text;
+      return 0;
+    };
+  });
+}
+
+// ---- the verbs whose whole command is the system's ----------------------------
+
+namespace {
+void addWholeVerb(CLI::App& app, Action& action, const System& system, const std::string& verb,
+                  const std::string& what, void (*part)(CLI::App*, Action&)) {
+  auto* cmd = addVerb(app, verb, what, system);
+  // export and view take a picture, whose format (--format) is the system's
+  // own option; elsewhere --format was read by systemFor() and is only checked.
+  if (verb != "export" && verb != "view") addFormatOption(cmd, nullptr, "scene");
+  if (part == nullptr) {
+    cmd->callback([&action, verb, title = std::string(system.title)] {
+      action = [verb, title] {
+        std::cerr << "prime: " << verb << ": " << title << " has no " << verb << " (prime " << verb
+                  << " --help)\n";
+        return 2;
+      };
+    });
+    return;
+  }
+  part(cmd, action);
+}
+}  // namespace
+
+void addBenchVerb(CLI::App& app, Action& action, const System& system) {
+  addWholeVerb(app, action, system, "bench",
+               "Time scenes: Malone and CGL scene files in one table; PRIME's run time against "
+               "error study",
+               system.bench);
+}
+
+void addExportPovVerb(CLI::App& app, Action& action, const System& system) {
+  addWholeVerb(app, action, system, "export-pov",
+               "Write a scene in POV-Ray 3.7's language, for a side-by-side render",
+               system.exportPov);
+}
+
+void addExportVerb(CLI::App& app, Action& action, const System& system) {
+  addWholeVerb(app, action, system, "export",
+               "Convert a picture file to PNG: a PRIME graph file through a palette, a CGL RLE or "
+               "raw picture",
+               system.exportPicture);
+}
+
+void addViewVerb(CLI::App& app, Action& action, const System& system) {
+  addWholeVerb(app, action, system, "view",
+               "Show a picture file in a window: a PRIME graph file on the emulated 8514/A, a CGL "
+               "RLE or raw picture",
+               system.viewPicture);
+}
+
+}  // namespace prime::cli

@@ -1,0 +1,103 @@
+#include "src/render/probe_log.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace prime {
+
+std::string jsonString(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+JsonObject& JsonObject::key(std::string_view k) {
+  if (text_.size() > 1) text_ += ",";
+  text_ += jsonString(k) + ":";
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, int v) {
+  key(k).text_ += std::to_string(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, std::uint64_t v) {
+  key(k).text_ += std::to_string(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, double v) {
+  key(k).text_ += json(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, bool v) {
+  key(k).text_ += v ? "true" : "false";
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, const Vec3& v) {
+  key(k).text_ += json(v);
+  return *this;
+}
+JsonObject& JsonObject::add(std::string_view k, std::string_view v) {
+  key(k).text_ += jsonString(v);
+  return *this;
+}
+JsonObject& JsonObject::addJson(std::string_view k, std::string_view v) {
+  key(k).text_ += v;
+  return *this;
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string fmt(const Vec3& v) {
+  return "(" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + ")";
+}
+
+std::string json(double v) {
+  if (!std::isfinite(v)) return std::isnan(v) ? "\"NaN\"" : (v > 0 ? "\"Inf\"" : "\"-Inf\"");
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string json(const Vec3& v) {
+  return "[" + json(v[0]) + "," + json(v[1]) + "," + json(v[2]) + "]";
+}
+
+std::string ProbeLog::jsonEvents() const {
+  std::string s = "[";
+  for (std::size_t i = 0; i < events.size(); ++i)
+    s += (i ? "," : "") + JsonObject()
+                              .add("depth", events[i].depth)
+                              .add("event", events[i].kind)
+                              .addJson("data", events[i].json)
+                              .str();
+  return s + "]";
+}
+
+}  // namespace prime
