@@ -104,11 +104,7 @@ std::string textureMatrix(const Object& o, const Surface& s) {
   // local = R P + c  =>  P = R^-1 local - R^-1 c; POV-Ray's matrix rows are
   // the images of local x, y, z (R^-1's columns), then the translation.
   const Vec3 t = -solve(inv, {cx, cy, 0.0});
-  std::string text = "matrix <";
-  const Vec3* rows[4] = {&inv[0], &inv[1], &inv[2], &t};
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 3; ++k) text += (r || k ? ", " : "") + povNumber((*rows[r])[k]);
-  return text + ">";
+  return povMatrix(inv[0], inv[1], inv[2], t);
 }
 
 Spectrum texelSpectrum(const Texture& tex, std::size_t i) {
@@ -123,18 +119,6 @@ std::string fraction(int pixels) {
 }
 
 }  // namespace
-
-std::string povNumber(double v) {
-  if (!std::isfinite(v)) return "0";  // POV-Ray has no Inf/NaN literal
-  if (v == 0.0) return "0";           // also turns -0 into 0
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string povVector(const Vec3& v) {
-  return "<" + povNumber(v[0]) + ", " + povNumber(v[1]) + ", " + povNumber(v[2]) + ">";
-}
 
 PovCamera povCamera(const Camera& camera, bool pixelCorners) {
   // CGL (section 8.2): D = S + (x - 256) X + (y - 256) Y for the screen point

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "legacy_io/cgl/frame.h"
+#include "legacy_io/common/pov_text.h"
 #include "src/cgl/scene.h"
 
 namespace prime::cgl {
@@ -110,8 +111,9 @@ std::array<Vec3, 4> polygonCorners(const Object& polygon);
 
 // Shortest decimal that reads back as the same double; -0 and non-finite
 // values as 0.
-std::string povNumber(double v);
-std::string povVector(const Vec3& v);
+// POV-Ray text: the shared writers (legacy_io/common/pov_text.h).
+using prime::povNumber;
+using prime::povVector;
 
 // One object node's geometry (no texture); "" for a box.
 std::string povGeometry(const Object& object);

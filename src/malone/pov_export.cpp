@@ -19,11 +19,7 @@ std::string rgbText(const Rgb& c) {
 // Rows of POV-Ray's `matrix`: the images of the local x, y and z axes, then
 // the translation (p_world = p_local * M with row vectors).
 std::string matrixText(const Vec3& x, const Vec3& y, const Vec3& z, const Vec3& o) {
-  std::string s = "matrix <";
-  const Vec3* rows[4] = {&x, &y, &z, &o};
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 3; ++k) s += (r || k ? ", " : "") + povNumber((*rows[r])[k]);
-  return s + ">";
+  return povMatrix(x, y, z, o);
 }
 
 // A finite open cone piece from parameter u0 to u1 along the axis (both on
@@ -41,18 +37,6 @@ std::string triangleText(const Primitive& p) {
 }
 
 }  // namespace
-
-std::string povNumber(double v) {
-  if (!std::isfinite(v)) return "0";  // POV-Ray has no Inf/NaN literal
-  if (v == 0.0) return "0";           // also turns -0 into 0
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string povVector(const Vec3& v) {
-  return "<" + povNumber(v[0]) + ", " + povNumber(v[1]) + ", " + povNumber(v[2]) + ">";
-}
 
 PovCamera povCamera(const Viewer& v) {
   // Malone's ray for pixel (X, Y) points along

@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <string>
 
+#include "legacy_io/common/pov_text.h"
 #include "src/malone/scene.h"
 
 namespace prime::malone {
@@ -50,8 +51,9 @@ struct PovCamera {
 PovCamera povCamera(const Viewer& viewer);
 
 // Shortest decimal that reads back as the same double; -0 as 0.
-std::string povNumber(double v);
-std::string povVector(const Vec3& v);
+// POV-Ray text: the shared writers (legacy_io/common/pov_text.h).
+using prime::povNumber;
+using prime::povVector;
 
 // One primitive's geometry, without its texture (an affine primitive's
 // embedded one with its matrix). Meshes are the exporter's: a single

@@ -206,8 +206,9 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
   display::ScreenWindow window(frame, {caption, display.zoom, "."});
   std::fprintf(stderr,
                "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
-               "right-drag pan, W S + - wheel dolly, Home R reset, L 0..9 lights, P profile, V "
-               "palette view, F12 screenshot, Esc quits\n",
+               "right-drag pan, I O wheel dolly, Home R reset, L lights, P profile, V palette "
+               "view; as in every window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc "
+               "quits\n",
                window.nativeId(), start.width, start.height);
   auto stateOf = [&] {
     return WalkState{ctl.view(), ctl.lights(), profiles[static_cast<std::size_t>(ctl.profile())],
@@ -243,13 +244,14 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
       return true;
     }
     if (e.key == Key::Home || e.letter == 'r') return ctl.reset(), true;
-    if (e.letter == 'w' || e.key == Key::ZoomIn) return ctl.dolly(1), true;
-    if (e.letter == 's' || e.key == Key::ZoomOut) return ctl.dolly(-1), true;
+    // The window's own keys mean what they mean in trace and view: S and F12
+    // screenshot, + - and 1..8 zoom, F11 fullscreen, Esc quit.
+    if (e.letter == 'i') return ctl.dolly(1), true;
+    if (e.letter == 'o') return ctl.dolly(-1), true;
     if (e.letter == 'l') return ctl.cycleSelection(), true;
     if (e.letter == 'p') return ctl.nextProfile(), true;
     if (e.letter == 'v') return ctl.togglePaletteView(), true;
-    if (e.key == Key::Digit || e.key == Key::Zero) return ctl.selectLight(e.digit), true;
-    return false;  // Esc, F12: the window's
+    return false;  // the window's
   });
 
   std::uint64_t shown = ctl.generation();
@@ -301,13 +303,11 @@ void addWalkCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--log-frames", *logFrames, "Say on stderr when each frame is complete (tests)");
   addWindowOptions(cmd, *display);
-  addRenderOptions(cmd, *options);
+  addRenderOptions(cmd, *options, false);  // one ray per pixel: no sampling options
   cmd->callback([=, &action] {
     action = [=] {
       finishRenderOptions(*options);
       RenderSettings settings = options->settings;
-      if (settings.sampling.mode != Sampling::Mode::Single)
-        throw CLI::ValidationError("walk", "renders one ray per pixel: no --samples or --adaptive");
       // Without free-camera options: the listing's window framed at 512 x 512 (T41).
       if (!settings.camera.free)
         settings.camera.free = framedListingWindow(settings.camera, 512, 512);

@@ -14,23 +14,9 @@ namespace prime::cli {
 
 namespace fs = std::filesystem;
 
-void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
-  addCameraOptions(cmd, o.camera);
-  addFreeCameraOptions(cmd, o.camera);
-  cmd->add_option("--max-depth", o.settings.trace.maxDepth,
-                  "Recursion depth limit (listing MaxDepth: 5)")
-      ->check(CLI::Range(0, 64));
-  cmd->add_option(
-         "--tir-cap", o.settings.trace.tirCap,
-         "1991 profile: total-internal-reflection steps before giving up (errata E59: 1000; 0 = "
-         "never, may hang); the modern profile stops at 64")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
-                "Errata Q4 alternative: skip the right subtree when the left list is empty");
-  cmd->add_flag(
-      "--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
-      "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
-      "and every right CSG subtree (same pixels, more rays)");
+namespace {
+// A pixel's several rays: --samples, --adaptive, --jitter, --statistical and theirs.
+void addSamplingOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("--samples", o.samples, "Regular N x N supersampling (listing: 1 ray per pixel)")
       ->check(CLI::Range(1, 16));
   cmd->add_option(
@@ -56,6 +42,27 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o) {
   cmd->add_option("--max-samples", o.settings.sampling.maxSamples,
                   "Rays per pixel at most for --statistical (64)")
       ->check(CLI::Range(4, 4096));
+}
+}  // namespace
+
+void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
+  addCameraOptions(cmd, o.camera);
+  addFreeCameraOptions(cmd, o.camera);
+  cmd->add_option("--max-depth", o.settings.trace.maxDepth,
+                  "Recursion depth limit (listing MaxDepth: 5)")
+      ->check(CLI::Range(0, 64));
+  cmd->add_option(
+         "--tir-cap", o.settings.trace.tirCap,
+         "1991 profile: total-internal-reflection steps before giving up (errata E59: 1000; 0 = "
+         "never, may hang); the modern profile stops at 64")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
+                "Errata Q4 alternative: skip the right subtree when the left list is empty");
+  cmd->add_flag(
+      "--no-skip", [&o](std::int64_t) { o.settings.trace.skipUnneededWork = false; },
+      "Do all the work the listing did: reflected/transmitted rays even where kSR/kST = 0, "
+      "and every right CSG subtree (same pixels, more rays)");
+  if (sampling) addSamplingOptions(cmd, o);
   cmd->add_option("--seed", o.settings.sampling.seed,
                   "Seed of --jitter's, --statistical's and the soft shadows' random numbers (1)");
   cmd->add_option("--light-radius", o.lightRadius,

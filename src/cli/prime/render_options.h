@@ -26,7 +26,9 @@ struct RenderOptions {
   std::string texel = "both";       // --texel fresnel|both (thesis profile, T8)
 };
 
-void addRenderOptions(CLI::App* cmd, RenderOptions& o);
+// `sampling`: also the options of a pixel's several rays (--samples, --adaptive,
+// --jitter, --statistical and theirs); `walk` takes one ray per pixel.
+void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling = true);
 // Copies the parsed vectors into o.settings.
 void finishRenderOptions(RenderOptions& o);
 // Loads the scene, after modelling it (`model`: --model) or checking that its

@@ -17,14 +17,6 @@ namespace prime {
 
 namespace fs = std::filesystem;
 
-std::string povNumber(double v) {
-  if (!std::isfinite(v)) return "0";  // POV-Ray has no Inf/NaN literal; callers check first
-  if (v == 0.0) return "0";           // also turns -0 into 0
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
 std::array<double, 12> povMatrix(const Matrix4& m) {
   std::array<double, 12> out{};
   for (int row = 0; row < 4; ++row)
@@ -58,13 +50,11 @@ PovCamera povCamera(const CameraSettings& s) {
 namespace {
 
 std::string vec(const Vec3& v) {
-  return "<" + povNumber(v[0]) + ", " + povNumber(v[1]) + ", " + povNumber(v[2]) + ">";
+  return povVector(v);
 }
 
 std::string matrixText(const std::array<double, 12>& m) {
-  std::string s = "matrix <";
-  for (std::size_t i = 0; i < m.size(); ++i) s += (i ? ", " : "") + povNumber(m[i]);
-  return s + ">";
+  return povMatrix(m);
 }
 
 bool affine(const Matrix4& m) {

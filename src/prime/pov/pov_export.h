@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "legacy_io/common/pov_text.h"
 #include "palette/png_image.h"
 #include "src/math/matrix.h"
 #include "src/prime/render/camera.h"
@@ -63,7 +64,6 @@ PovCamera povCamera(const CameraSettings& settings);
 std::array<double, 12> povMatrix(const Matrix4& m);
 
 // Shortest decimal that reads back as the same double (POV-Ray parses it).
-std::string povNumber(double v);
 
 PovExport exportPov(const Scene& scene, const PovExportOptions& options = {});
 

@@ -128,6 +128,13 @@ with tempfile.TemporaryDirectory() as tmp:
         r = run(["trace", scene, "--format", "nosuch"])
         check(r.returncode == 2, f"--format nosuch refused for {system} (exit {r.returncode})")
 
+# walk takes one ray per pixel: its help lists no sampling option, which it
+# would only refuse.
+r = run(["walk", os.path.join(ROOT, "scenes/prime/default"), "--help"])
+listed = [line.split()[0] for line in r.stdout.splitlines() if line.startswith("  -")]
+check(r.returncode == 0 and not {"--samples", "--jitter", "--adaptive", "--statistical"} & set(listed),
+      f"walk --help lists no sampling option: {listed}")
+
 # A file named on the command line that is not a scene of the system --format
 # names: the system's own reader says so (Malone's numbers read as CGL).
 r = run(["trace", SCENES["malone"], "--format", "cgl", "--no-window"])
