@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "legacy_io/common/dir_lock.h"
+#include "legacy_io/prime/dir_lock.h"
 #include "legacy_io/prime/map_file.h"
 #include "legacy_io/prime/obj_file.h"
 #include "legacy_io/prime/obj_list.h"

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "legacy_io/common/dir_lock.h"
+#include "legacy_io/prime/dir_lock.h"
 #include "legacy_io/prime/scene_dir.h"
 
 namespace prime::io {

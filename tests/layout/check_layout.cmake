@@ -16,7 +16,7 @@ if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<tree> -P check_layout.cmake")
 endif()
 get_filename_component(ROOT "${ROOT}" ABSOLUTE)
-set(shared_src util math geom render bench cli)
+set(shared_src math geom render bench cli)
 
 file(GLOB src_dirs RELATIVE ${ROOT}/src LIST_DIRECTORIES true ${ROOT}/src/*)
 set(systems "")

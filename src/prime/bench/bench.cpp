@@ -11,8 +11,8 @@
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/scene_dir.h"
-#include "src/bench/pareto.h"
-#include "src/bench/plot.h"
+#include "src/prime/bench/pareto.h"
+#include "src/prime/bench/plot.h"
 #include "src/prime/scene/scene_loader.h"
 
 namespace prime::bench {

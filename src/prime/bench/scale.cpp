@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "legacy_io/prime/records.h"
-#include "src/bench/plot.h"
 #include "src/math/matrix.h"
+#include "src/prime/bench/plot.h"
 #include "src/prime/math/listing_matrix.h"
 
 namespace prime::bench {

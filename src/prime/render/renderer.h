@@ -2,7 +2,7 @@
 // ColorNum'ed to a palette index and collected into a graph file (PRIME's
 // "film"). The rows go through the shared scheduler (src/render/render_rows.h)
 // and the optional supersampling through the shared sampler
-// (src/render/pixel_sampling.h); what is PRIME's is here: the profile's
+// (src/prime/render/pixel_sampling.h); what is PRIME's is here: the profile's
 // tracer, the listing's camera, the primary-ray mask and ColorNum.
 #pragma once
 #include <atomic>
@@ -10,9 +10,9 @@
 
 #include "legacy_io/prime/graph_file.h"
 #include "src/prime/render/camera.h"
+#include "src/prime/render/pixel_sampling.h"
 #include "src/prime/render/tracer_1991.h"
 #include "src/prime/render/tracer_thesis.h"
-#include "src/render/pixel_sampling.h"
 #include "src/render/render_rows.h"
 #include "src/render/rgb_image.h"
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <tuple>
 
-#include "src/math/float_step.h"
 #include "src/prime/geom/csg_modern.h"
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/geom/uv_mapping_1991.h"
+#include "src/prime/math/float_step.h"
 #include "src/prime/math/listing_matrix.h"
 #include "src/prime/render/hall_modern.h"
 

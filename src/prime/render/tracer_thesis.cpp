@@ -8,7 +8,7 @@
 #include "src/prime/geom/interval_list.h"
 #include "src/prime/geom/primitives_modern.h"
 #include "src/prime/render/hall_modern.h"
-#include "src/render/sample_random.h"
+#include "src/prime/render/sample_random.h"
 
 namespace prime {
 

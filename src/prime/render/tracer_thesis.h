@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "src/prime/render/hall_thesis.h"
+#include "src/prime/render/pixel_sampling.h"
 #include "src/prime/render/tracer_modern.h"
-#include "src/render/pixel_sampling.h"
 
 namespace prime {
 

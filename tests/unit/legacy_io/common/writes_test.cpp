@@ -1,7 +1,8 @@
 // Issue 17, part A (docs/prime/deviations.md M19-M23): no output overwrites an
 // input of its run; temporaries go on every exit path, signals included, and
-// a killed run's are cleaned by the next; failures give the step's errno; the
-// directory lock; line breaks the same in every text input.
+// a killed run's are cleaned by the next; failures give the step's errno;
+// line breaks the same in every text input. (PRIME's directory lock:
+// tests/unit/legacy_io/prime/dir_lock_test.cpp.)
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -14,7 +15,6 @@
 #include <random>
 #include <string>
 
-#include "legacy_io/common/dir_lock.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
@@ -209,47 +209,6 @@ TEST(Temporaries, AReadOnlyDirectoryReportsPermissionDenied) {
   const std::string m = messageOf([&] { OutputFile out(d / "x"); });
   fs::permissions(d.path(), fs::perms::owner_all);
   EXPECT_NE(m.find("Permission denied"), std::string::npos) << m;
-}
-
-// --- the lock -------------------------------------------------------------------
-
-TEST(DirLockTest, TheSecondWriterIsBusyAndNamesTheFirst) {
-  TempDir d;
-  // flock locks belong to open files: two DirLocks in one process conflict
-  // as two processes would.
-  DirLock first(d / "lock", "prime model"), second(d / "lock", "prime model");
-  ASSERT_TRUE(first.tryLock(DirLock::Mode::Exclusive));
-  EXPECT_FALSE(second.tryLock(DirLock::Mode::Exclusive));
-  EXPECT_FALSE(second.tryLock(DirLock::Mode::Shared));
-  EXPECT_EQ(second.holder(), getpid());
-  const std::string m = messageOf([&] { second.busy("scenes/x", "add --wait"); });
-  EXPECT_NE(m.find("busy: another prime model (pid " + std::to_string(getpid()) +
-                   ") is writing scenes/x; add --wait"),
-            std::string::npos)
-      << m;
-  first.unlock();
-  EXPECT_TRUE(second.tryLock(DirLock::Mode::Exclusive));
-}
-
-TEST(DirLockTest, ReadersShareAndExcludeTheWriter) {
-  TempDir d;
-  DirLock a(d / "lock", "w"), b(d / "lock", "w"), c(d / "lock", "w");
-  EXPECT_TRUE(a.tryLock(DirLock::Mode::Shared));
-  EXPECT_TRUE(b.tryLock(DirLock::Mode::Shared));
-  EXPECT_FALSE(c.tryLock(DirLock::Mode::Exclusive));
-}
-
-TEST(DirLockTest, AKilledHolderLeavesNoLock) {
-  TempDir d;
-  const pid_t child = fork();
-  if (child == 0) {
-    DirLock l(d / "lock", "w");
-    l.tryLock(DirLock::Mode::Exclusive);
-    ::raise(SIGKILL);
-  }
-  waitpid(child, nullptr, 0);
-  DirLock l(d / "lock", "w");
-  EXPECT_TRUE(l.tryLock(DirLock::Mode::Exclusive));
 }
 
 // --- line breaks ----------------------------------------------------------------

@@ -1,4 +1,4 @@
-#include "legacy_io/common/dir_lock.h"
+#include "legacy_io/prime/dir_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

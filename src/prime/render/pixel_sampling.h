@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "src/math/rgb.h"
-#include "src/render/sample_random.h"
+#include "src/prime/render/sample_random.h"
 
 namespace prime {
 

@@ -1,5 +1,5 @@
 // The chart renderer of prime bench: text, labels and marks land where they should.
-#include "src/bench/plot.h"
+#include "src/prime/bench/plot.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "src/bench/pareto.h"
+#include "src/prime/bench/pareto.h"
 
 #include <algorithm>
 #include <cmath>

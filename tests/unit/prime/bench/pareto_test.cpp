@@ -1,5 +1,5 @@
 // The Pareto front of prime bench's time-against-error points, by hand.
-#include "src/bench/pareto.h"
+#include "src/prime/bench/pareto.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The shared pixel sampler: Single is the system's own ray, Grid averages
 // n x n sub-pixel points, Adaptive subdivides only where the colours differ
 // and traces each shared lattice point once.
-#include "src/render/pixel_sampling.h"
+#include "src/prime/render/pixel_sampling.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "src/render/pixel_sampling.h"
-#include "src/render/sample_random.h"
+#include "src/prime/render/pixel_sampling.h"
+#include "src/prime/render/sample_random.h"
 
 namespace prime {
 namespace {

@@ -1,7 +1,7 @@
 // stepAway against std::nextafter, to the bit: ordinary values of both signs
 // and every magnitude, subnormals, zeros of both signs, the largest finite
 // values, infinities and NaN.
-#include "src/math/float_step.h"
+#include "src/prime/math/float_step.h"
 
 #include <gtest/gtest.h>
 

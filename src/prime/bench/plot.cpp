@@ -1,4 +1,4 @@
-#include "src/bench/plot.h"
+#include "src/prime/bench/plot.h"
 
 #include <algorithm>
 #include <cctype>
