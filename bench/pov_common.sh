@@ -1,4 +1,4 @@
-# Sourced by bench/pov_compare.sh (PRIME) and bench/malone_pov_compare.sh
+# Sourced by bench/prime/pov_compare.sh (PRIME) and bench/malone/pov_compare.sh
 # (Malone): what a paired prime / POV-Ray timing needs, written once.
 #   NAME   the calling script's name, for messages (set before sourcing)
 #   ROOT   the repository root

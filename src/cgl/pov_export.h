@@ -2,7 +2,7 @@
 // Package", University of Waterloo CS-85-35, 1985), after Preprocess
 // (src/cgl/scene.h), as POV-Ray 3.7 scene language (`prime export-pov
 // SCENE.cgl OUT.pov`): for a modern re-render of a scene and for timing the
-// port against POV-Ray on the same geometry (bench/cgl_pov_compare.sh,
+// port against POV-Ray on the same geometry (bench/cgl/pov_compare.sh,
 // docs/cgl/benchmarks.md).
 //
 // What is exact, close and different (CGL-D60):

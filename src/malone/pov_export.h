@@ -3,7 +3,7 @@
 // points, the viewer as a perspective camera whose ray for pixel (X, Y) is
 // Malone's, the lights, and a finish per surface. For a modern re-render of a
 // scene and for timing this port against POV-Ray on the same geometry
-// (bench/malone_pov_compare.sh).
+// (bench/malone/pov_compare.sh).
 //
 // What is exact and what is approximate (docs/malone/benchmarks.md):
 //   exact   geometry (sphere, plane, disc, annulus, triangle, parallelogram,

@@ -10,7 +10,7 @@
 // (src/cgl/spline.h): the rays it hits and the Newton path misses. With
 // --distances FILE, every pixel's primary ray is traced by both and the
 // distances to the nearest spline hit are written as CSV (the holes against
-// POV-Ray: bench/cgl_spline_holes.sh, CGL-D171).
+// POV-Ray: bench/cgl/spline_holes.sh, CGL-D171).
 #include <time.h>
 
 #include <algorithm>

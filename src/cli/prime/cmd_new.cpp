@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The cube's 4 x 4 checker of yellow (0.05 0.05 0) and red (0.05 0 0) texels
-// (0.05 is "on": K12), as tools/mapgen.py checker writes it.
+// (0.05 is "on": K12), as tools/prime/mapgen.py checker writes it.
 std::string checkerMap() {
   std::string s = "2\n4 4\n";
   for (int plane = 0; plane < 3; ++plane)

@@ -3,7 +3,7 @@
 // as image files, the lights, and a perspective camera that puts the listing's
 // world window on the same pixels. Useful for a modern re-render of a 1991
 // scene, and for timing PRIME against POV-Ray on the same geometry
-// (bench/pov_compare.sh).
+// (bench/prime/pov_compare.sh).
 //
 // What is exact and what is approximate (docs/prime/pov-export.md):
 //   exact   geometry (the five unit primitives, their matrices, CSG), the

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates every texture map under scenes/prime/ that tools/mapgen.py makes (the
+# Regenerates every texture map under scenes/prime/ that tools/prime/mapgen.py makes (the
 # others are typed by hand: 1 x 1 maps). With --check, writes nothing and
 # fails if a committed map differs from what the script makes (CTest
 # tools.maps_are_generated runs this).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 check=0
 [ "${1:-}" = "--check" ] && check=1
 status=0
@@ -13,12 +13,12 @@ gen() {  # gen scene/map/MapN.txt mapgen-arguments...
   local target="scenes/prime/$1"
   shift
   if [ $check = 1 ]; then
-    if ! python3 tools/mapgen.py "$@" | cmp -s - "$target"; then
-      echo "regen_maps: $target differs from: tools/mapgen.py $*" >&2
+    if ! python3 tools/prime/mapgen.py "$@" | cmp -s - "$target"; then
+      echo "regen_maps: $target differs from: tools/prime/mapgen.py $*" >&2
       status=1
     fi
   else
-    python3 tools/mapgen.py --out "$target" "$@"
+    python3 tools/prime/mapgen.py --out "$target" "$@"
   fi
 }
 

@@ -8,7 +8,7 @@ table: mean and max CIEDE2000, PSNR, and the median CPU time of --rounds
 interleaved runs (each round runs every method once, in turn, so a busy
 machine slows all of them alike).
 
-  bench/quantize_compare.py [--prime build/release/src/cli/prime] [--rounds 5]
+  bench/prime/quantize_compare.py [--prime build/release/src/cli/prime] [--rounds 5]
 """
 import argparse
 import os

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Holes of prime's B-spline surfaces and of POV-Ray's bicubic_patch at equal time (CGL-D171).
 
-Subcommands (used by bench/cgl_spline_holes.sh; plain Python, no packages):
+Subcommands (used by bench/cgl/spline_holes.sh; plain Python, no packages):
 
   depth-pov IN.pov OUT.pov DISTANCES.csv [U_STEPS FLATNESS]
       IN.pov (from `prime export-pov --aalevel 0`) with every object's texture replaced by a flat

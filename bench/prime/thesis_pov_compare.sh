@@ -16,13 +16,13 @@
 # Writes docs/prime/benchmarks-thesis.csv and the generated part of
 # docs/prime/benchmarks-thesis.md (between its thesis_pov_compare markers).
 #
-# Usage: bench/thesis_pov_compare.sh [RUNS] [SCENE...]   (RUNS >= 5, default 5;
+# Usage: bench/prime/thesis_pov_compare.sh [RUNS] [SCENE...]   (RUNS >= 5, default 5;
 #        all scenes with a Model.txt when none is named)
 # Environment: PRIME=path/to/prime (default: build/release, brought up to date),
 #              OUT=output directory (default: out/thesis-pov-compare).
 set -euo pipefail
 
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ROOT=$PWD
 RUNS=${1:-5}
 shift || true
@@ -90,7 +90,7 @@ cpuModel=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 loadEnd=$(cut -d' ' -f1-3 /proc/loadavg)
 generated=$(
   cat <<EOF
-<!-- thesis_pov_compare:begin (written by bench/thesis_pov_compare.sh; edit outside the markers) -->
+<!-- thesis_pov_compare:begin (written by bench/prime/thesis_pov_compare.sh; edit outside the markers) -->
 Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(nproc) CPU(s), ${cpuModel:-unknown CPU}, $(uname -sr);
 prime at commit \`$PRIME_VERSION\` (release preset), $POV_VERSION (Debian package). Load average
 (1, 5, 15 min) at the start: $loadStart; at the end: $loadEnd. $RUNS paired runs per cell, the two
@@ -111,7 +111,7 @@ povray +INAME.pov +W${W} +H${H} -A +WT1 -D -F -GA
 prime trace DIR --screen ${SCREEN[*]} --no-window -q --out NAME.graph --profile 1991 --threads 1      # and --profile modern
 \`\`\`
 
-Rerun: \`bench/thesis_pov_compare.sh\` (\`bench/thesis_pov_compare.sh 7 plate2 plate3\` for 7 pairs on
+Rerun: \`bench/prime/thesis_pov_compare.sh\` (\`bench/prime/thesis_pov_compare.sh 7 plate2 plate3\` for 7 pairs on
 two scenes). The CSV is [benchmarks-thesis.csv](benchmarks-thesis.csv).
 <!-- thesis_pov_compare:end -->
 EOF

@@ -5,7 +5,7 @@ thread each, so that load drifting on a shared machine hits both alike.
 Prints each profile's median CPU seconds and the median of the per-pair
 ratios thesis / modern.
 
-  python3 bench/thesis_vs_modern.py [--prime build/release/src/cli/prime]
+  python3 bench/prime/thesis_vs_modern.py [--prime build/release/src/cli/prime]
       [--scene scenes/prime/plate2] [--runs 7] [-- extra trace options...]
 
 The scene must be modelled (`prime model SCENE`) first. Pictures go to a

@@ -21,20 +21,20 @@
 # 3. A hole is a pixel the reference hits that the renderer misses or hits more
 #    than 5 % of the distance farther (the far side seen through the hole);
 #    hits 1-5 % off are counted apart (depth error: a coarse approximation):
-#    bench/cgl_spline_holes.py count. The same rule for prime (its Newton path)
+#    bench/cgl/spline_holes.py count. The same rule for prime (its Newton path)
 #    and for POV-Ray. "POV-Ray at equal time" is reported twice: the setting
 #    whose CPU is nearest prime's, and the setting with the fewest holes (with
 #    its CPU), since POV-Ray's time hardly depends on the setting here.
 # Writes docs/cgl/spline-holes.csv and the generated part of
 # docs/cgl/benchmarks.md between the cgl_spline_holes markers.
 #
-# Usage: bench/cgl_spline_holes.sh [RUNS [SCENE.cgl ...]]   (RUNS >= 5, default 5;
+# Usage: bench/cgl/spline_holes.sh [RUNS [SCENE.cgl ...]]   (RUNS >= 5, default 5;
 #        scenes default: scenes/cgl/spline-*.cgl)
 # Environment: PRIME=path/to/prime (default: build/release, brought up to date),
 #              OUT=output directory (default: out/cgl-spline-holes).
 set -euo pipefail
 
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ROOT=$PWD
 RUNS=${1:-5}
 if ((RUNS < 5)); then
@@ -102,7 +102,7 @@ LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 cpuModel=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 generated=$(
   cat <<MDEOF
-<!-- cgl_spline_holes:begin (written by bench/cgl_spline_holes.sh; edit outside the markers) -->
+<!-- cgl_spline_holes:begin (written by bench/cgl/spline_holes.sh; edit outside the markers) -->
 Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(nproc) CPU(s), ${cpuModel:-unknown CPU}, $(uname -sr);
 prime at commit \`$PRIME_VERSION\` (release preset), $POV_VERSION. Load average (1, 5, 15 min)
 at the start: $LOAD_START; at the end: $LOAD_END. $RUNS interleaved pairs per setting, CPU = user

@@ -3,7 +3,7 @@
 # shipped scene that walk can show (all of scenes/prime but plate1, a
 # wireframe), at 350 x 769 and 1024 x 768, each profile, N frames along an
 # orbit (medians). The scenes are modelled first.
-# Usage: bench/walk_fps.sh [PRIME] [FRAMES] [THREADS]
+# Usage: bench/prime/walk_fps.sh [PRIME] [FRAMES] [THREADS]
 set -eu
 PRIME=${1:-build/release/src/cli/prime}
 FRAMES=${2:-9}

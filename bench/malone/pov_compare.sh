@@ -24,13 +24,13 @@
 # docs/malone/benchmarks.md (between its malone_pov_compare markers; the rest
 # of the file is kept).
 #
-# Usage: bench/malone_pov_compare.sh [RUNS]      (RUNS >= 5, default 7)
+# Usage: bench/malone/pov_compare.sh [RUNS]      (RUNS >= 5, default 7)
 # Environment: PRIME=path/to/prime (default: build/release, brought up to date),
 #              OUT=output directory (default: out/malone-pov-compare),
 #              MESH_RUNS (default 5), LINEAR_RES (default 128).
 set -euo pipefail
 
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ROOT=$PWD
 RUNS=${1:-7}
 if ((RUNS < 5)); then
@@ -153,7 +153,7 @@ echo "ns/test: BVH $bvhNs ($bvhTests tests in $bvhSec s), linear $linNs ($linTes
 cpuModel=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 generated=$(
   cat <<MDEOF
-<!-- malone_pov_compare:begin (written by bench/malone_pov_compare.sh; edit outside the markers) -->
+<!-- malone_pov_compare:begin (written by bench/malone/pov_compare.sh; edit outside the markers) -->
 Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(nproc) CPU(s), ${cpuModel:-unknown CPU}, $(uname -sr);
 prime at commit \`$PRIME_VERSION\` (release preset), $POV_VERSION (Debian package).
 The machine is shared with other builds: the $RUNS pairs per scene are interleaved (prime and

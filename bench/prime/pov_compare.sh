@@ -9,16 +9,16 @@
 # at the same size, each measured as the CPU time (user + system, getrusage of
 # the child process) of the whole program run. Reports the median of the
 # per-pair ratios prime/POV-Ray, writes a CSV and the table in
-# docs/benchmarks-pov.md (between its pov_compare markers; the rest of that
+# docs/prime/benchmarks-pov.md (between its pov_compare markers; the rest of that
 # file is kept), and renders every scene once with both programs for a
 # side-by-side look (OUT/<scene>_side.png, auto-levelled).
 #
-# Usage: bench/pov_compare.sh [RUNS]          (RUNS >= 5, default 7)
+# Usage: bench/prime/pov_compare.sh [RUNS]          (RUNS >= 5, default 7)
 # Environment: PRIME=path/to/prime (default: build/release, brought up to date),
 #              OUT=output directory (default: out/pov-compare).
 set -euo pipefail
 
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ROOT=$PWD
 RUNS=${1:-7}
 if ((RUNS < 5)); then
@@ -75,7 +75,7 @@ done
 cpuModel=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 generated=$(
   cat <<EOF
-<!-- pov_compare:begin (written by bench/pov_compare.sh; edit outside the markers) -->
+<!-- pov_compare:begin (written by bench/prime/pov_compare.sh; edit outside the markers) -->
 Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(nproc) CPU(s), ${cpuModel:-unknown CPU}, $(uname -sr);
 prime at commit \`$PRIME_VERSION\` (RelWithDebInfo), $POV_VERSION (Debian package).
 $RUNS paired runs per scene; CPU time = user + system of the whole process (getrusage of the
@@ -94,7 +94,7 @@ prime trace DIR --threads 1 --no-window -q --out NAME.graph
 povray +INAME.pov +W350 +H769 -A +WT1 -D -F -GA
 \`\`\`
 
-Rerun: \`bench/pov_compare.sh\` (optionally \`bench/pov_compare.sh 11\` for 11 pairs). The CSV is
+Rerun: \`bench/prime/pov_compare.sh\` (optionally \`bench/prime/pov_compare.sh 11\` for 11 pairs). The CSV is
 [benchmarks-pov.csv](benchmarks-pov.csv).
 <!-- pov_compare:end -->
 EOF

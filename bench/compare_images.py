@@ -1,4 +1,4 @@
-"""malone_compare_images.py A.png B.png: how close two renders of one scene
+"""compare_images.py A.png B.png: how close two renders of one scene
 are, pixel by pixel (A: prime trace, B: POV-Ray of the exported scene).
 Prints: mean absolute difference (bytes, 0-255, all channels), how many
 pixels differ at all and by how much at most, the share of pixels whose

@@ -26,13 +26,13 @@
 # Writes docs/cgl/benchmarks.csv and the generated part of
 # docs/cgl/benchmarks.md (between its cgl_pov_compare markers).
 #
-# Usage: bench/cgl_pov_compare.sh [RUNS]      (RUNS >= 5, default 7)
+# Usage: bench/cgl/pov_compare.sh [RUNS]      (RUNS >= 5, default 7)
 # Environment: PRIME=path/to/prime (default: build/release, brought up to
 #              date), MICRO=path/to/prime_micro (default: build/release),
 #              OUT=output directory (default: out/cgl-pov-compare).
 set -euo pipefail
 
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ROOT=$PWD
 RUNS=${1:-7}
 if ((RUNS < 5)); then
@@ -168,7 +168,7 @@ LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 cpuModel=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 generated=$(
   cat <<MDEOF
-<!-- cgl_pov_compare:begin (written by bench/cgl_pov_compare.sh; edit outside the markers) -->
+<!-- cgl_pov_compare:begin (written by bench/cgl/pov_compare.sh; edit outside the markers) -->
 Measured $(date -u '+%Y-%m-%d %H:%M UTC') on $(nproc) CPU(s), ${cpuModel:-unknown CPU}, $(uname -sr);
 prime at commit \`$PRIME_VERSION\` (release preset), $POV_VERSION (Debian package). Load average
 (1, 5, 15 min) at the start: $LOAD_START; at the end: $LOAD_END. The machine is shared with
