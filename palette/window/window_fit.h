@@ -3,7 +3,7 @@
 // the picture, the picture's place in a window of any size (fullscreen, or
 // resized by the user), and the pace at which finished rows are shown.
 // ScreenWindow (screen_window.cpp) and LiveRender (src/cli/live_render.cpp)
-// use them; tests/unit/palette/window checks them.
+// use them; tests/core/window checks them.
 #pragma once
 #include <algorithm>
 #include <cmath>

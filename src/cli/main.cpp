@@ -179,7 +179,7 @@ std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& actio
 }  // namespace
 
 // The whole command line; with `parseOnly`, everything but the chosen
-// command's action (the CLI fuzz target, tests/fuzz/prime/cli_fuzz.cpp,
+// command's action (the CLI fuzz target, tests/prime/fuzz/cli_fuzz.cpp,
 // calls it so, in-process).
 int primeMain(int argc, char** argv, bool parseOnly) {
   std::vector<char*> args(argv, argv + argc);

@@ -15,7 +15,7 @@ What it does:
 2. Reads the defining files. An id is defined by a Markdown table row whose first cell is the id,
    "| E57 | ...". A defining row of a family in any other Markdown file is an error (each table
    of ids lives in exactly one file), and so is a second row for the same id.
-3. Scans every file git tracks (but not tests/fuzz/prime/corpus, binary files and images) for cited
+3. Scans every file git tracks (but not tests/prime/fuzz/corpus, binary files and images) for cited
    ids: in Markdown the whole text; in C and C++ the // and /* */ comments and the string
    literals (which is where the messages prime prints live); in Python the # comments and the
    docstrings; in shell, CMake and other #-comment files (scene Model.txt, CMakeLists.txt,

@@ -50,7 +50,7 @@ class TempScene {
 
 #ifdef PRIME_TEST_DATA
 // Fills the scene with the sphere test scene's text inputs
-// (tests/data/prime/sphere) and returns its path.
+// (tests/prime/data/sphere) and returns its path.
 inline std::filesystem::path sphere(const TempScene& s) {
   std::filesystem::copy(
       std::filesystem::path(PRIME_TEST_DATA) / "sphere", s.path(),

@@ -1,0 +1,119 @@
+// prime walk's passes (src/prime/render/walk_render.h) and prime compare's
+// arithmetic (src/prime/render/compare.h).
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "src/prime/render/compare.h"
+#include "src/prime/render/walk_render.h"
+#include "src/render/progressive.h"
+#include "tests/prime/unit/render/small_scene.h"
+
+namespace prime {
+namespace {
+
+using test::sphereScene;
+
+TEST(WalkRenderer, LastPassEqualsTheRenderAndCoarsePassesFillBlocks) {
+  const Scene scene = sphereScene();
+  for (const Profile profile : {Profile::Listing1991, Profile::Modern}) {
+    RenderSettings settings;
+    settings.profile = profile;
+    settings.camera.free = framedListingWindow(settings.camera, 45, 37);  // not multiples of 8
+    settings.threads = 2;
+    const RenderResult full = render(scene, settings);
+    const FreeCamera camera(*settings.camera.free);
+    const WalkRenderer walk(scene, profile, settings.trace);
+    RgbImage img;
+    img.assign(45, 37);
+    TraceStats stats;
+    int rowsReported = 0;
+    ASSERT_TRUE(walk.pass(
+        camera, 8, 8, img, 2, nullptr, [&](int, int rows) { rowsReported += rows; }, stats));
+    EXPECT_EQ(rowsReported, 37);
+    EXPECT_EQ(stats.primaryRays, 6u * 5u);  // ceil(45/8) x ceil(37/8) block corners
+    // A whole 8 x 8 block has its top-left pixel's colour.
+    for (int y = 8; y < 16; ++y)
+      for (int x = 16; x < 24; ++x) EXPECT_EQ(img.at(y, x), full.rgb.at(8, 16));
+    for (const int block : {4, 2, 1})
+      ASSERT_TRUE(walk.pass(camera, block, 8, img, 2, nullptr, {}, stats));
+    EXPECT_EQ(stats.primaryRays, 45u * 37u);  // every pixel traced once over the passes
+    for (int y = 0; y < 37; ++y)
+      for (int x = 0; x < 45; ++x)
+        ASSERT_EQ(std::memcmp(img.at(y, x).data(), full.rgb.at(y, x).data(), sizeof(Rgb)), 0)
+            << y << " " << x;
+  }
+}
+
+TEST(WalkRenderer, AnAbandonedPassStopsAtOnce) {
+  const Scene scene = sphereScene();
+  const WalkRenderer walk(scene, Profile::Listing1991, {});
+  const FreeCamera camera(framedListingWindow(CameraSettings{}, 64, 64));
+  RgbImage img;
+  img.assign(64, 64);
+  TraceStats stats;
+  const std::atomic<bool> abandon{true};
+  EXPECT_FALSE(walk.pass(camera, 1, 1, img, 1, &abandon, {}, stats));
+  EXPECT_EQ(stats.primaryRays, 0u);
+}
+
+RenderResult tiny(std::vector<Rgb> colours, std::vector<std::int16_t> indices) {
+  RenderResult r;
+  r.rgb.assign(2, 2);
+  r.rgb.pixels.assign(colours.begin(), colours.end());
+  r.graph.pixels.assign(indices.begin(), indices.end());
+  return r;
+}
+
+TEST(CompareRenders, CountsAndDifferencesOfTwoKnownRenders) {
+  // Pixel (0, 1) differs by 0.5 in red; pixel (1, 1) by 1e-17 in green
+  // (bit-different, its clamped difference tiny); the indices differ at one.
+  const RenderResult a =
+      tiny({{0, 0, 0}, {0.2, 0.5, 0.5}, {1, 1, 1}, {0.3, 0.3, 0.3}}, {1, 2, 3, 4});
+  const RenderResult b =
+      tiny({{0, 0, 0}, {0.7, 0.5, 0.5}, {1, 1, 1}, {0.3, 0.3 + 1e-16, 0.3}}, {1, 9, 3, 4});
+  const RenderComparison c = compareRenders(a, b, 5);
+  EXPECT_EQ(c.pixels, 4u);
+  EXPECT_EQ(c.differing, 2u);
+  EXPECT_EQ(c.indexDiffering, 1u);
+  EXPECT_DOUBLE_EQ(c.share(), 0.5);
+  EXPECT_NEAR(c.maxDifference, 0.5, 1e-15);
+  EXPECT_EQ(c.maxRow, 0);
+  EXPECT_EQ(c.maxColumn, 1);
+  EXPECT_NEAR(c.meanDifference, (0.5 + 1e-16) / 4, 1e-15);
+  ASSERT_EQ(c.sample.size(), 2u);
+  EXPECT_EQ(c.sample[0], std::make_pair(0, 1));
+  EXPECT_EQ(c.sample[1], std::make_pair(1, 1));
+  // Clamped: an out-of-range red of 3 against 1 is no difference on a screen.
+  EXPECT_DOUBLE_EQ(colourDifference({3, 0, 0}, {1, 0, 0}), 0.0);
+  EXPECT_THROW(compareRenders(a, RenderResult{}, 1), std::invalid_argument);
+}
+
+ProbeEvent rayEvent(int depth, std::string text) {
+  return {depth, "ray", std::move(text), "{}"};
+}
+
+TEST(FirstDivergence, FirstRayWhoseLineDiffers) {
+  const std::vector<ProbeEvent> a{rayEvent(0, "primary from 0 dir 1"),
+                                  {0, "hit", "x", "{}"},
+                                  rayEvent(1, "reflected from 2 dir 3"),
+                                  rayEvent(1, "transmitted from 2 dir 4")};
+  std::vector<ProbeEvent> b{rayEvent(0, "primary from 0 dir 1"),
+                            {0, "hit", "y", "{}"},
+                            rayEvent(1, "reflected from 2 dir 3"),
+                            rayEvent(1, "transmitted from 2 dir 5")};
+  RayDivergence d = firstDivergence(a, b);
+  EXPECT_EQ(d.firstDiffering, 2);  // the hit events do not count; ray 2 is the third ray
+  EXPECT_EQ(d.rayA, "transmitted from 2 dir 4");
+  EXPECT_EQ(d.rayB, "transmitted from 2 dir 5");
+  b.pop_back();  // B has no transmitted ray at all
+  d = firstDivergence(a, b);
+  EXPECT_EQ(d.firstDiffering, 2);
+  EXPECT_EQ(d.raysA, 3);
+  EXPECT_EQ(d.raysB, 2);
+  EXPECT_EQ(d.rayB, "");
+  EXPECT_EQ(firstDivergence(a, a).firstDiffering, -1);
+}
+
+}  // namespace
+}  // namespace prime
