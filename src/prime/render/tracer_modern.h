@@ -18,6 +18,7 @@
 
 #include "src/prime/geom/csg_pointwise.h"
 #include "src/prime/geom/csg_program_1991.h"
+#include "src/prime/math/robust.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/probe.h"
 #include "src/prime/render/trace_options.h"
@@ -183,17 +184,6 @@ class TracerModern {
   // CsgPointwise::kMaxLeaves leaves and no shared subtree.
   std::vector<std::optional<CsgPointwise>> pointwise_;
 };
-
-// The inverse of an affine row-vector transform, accurate to about one
-// rounding per entry (long double cofactors and one Newton step), instead of
-// the database's unpivoted Gauss-Jordan inverse (K42, M18: good to 1.5e-9
-// only for a 90-degree rotation). A singular matrix gives prime::inverse's.
-Matrix4 accurateInverse(const Matrix4& m);
-
-// A point moved off its surface along `n` (the side the new ray leaves on)
-// by more than its error bound, so the new ray cannot re-hit the surface it
-// starts on (Ray Tracing Gems ch. 6 / pbrt-v4 OffsetRayOrigin).
-Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w);
 
 // The origin of a secondary ray leaving `hit` in direction w: the hit point
 // stepped, for every surface near it (hit.near), to the side w travels into,
