@@ -6,26 +6,9 @@
 
 namespace prime::malone {
 
-namespace {
-
-std::string fmt(const char* format, double a = 0, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b, c, d);
-  return buf;
-}
-std::string vec(const Vec3& v) {
-  return fmt("(%.6g, %.6g, %.6g)", v[0], v[1], v[2]);
-}
-
-}  // namespace
-
 TraceStats& TraceStats::operator+=(const TraceStats& o) {
-  primaryRays += o.primaryRays;
-  reflectedRays += o.reflectedRays;
-  transmittedRays += o.transmittedRays;
-  shadowRays += o.shadowRays;
+  RayCounts::operator+=(o);
   primitiveTests += o.primitiveTests;
-  hits += o.hits;
   totalInternalReflections += o.totalInternalReflections;
   cutByDepth += o.cutByDepth;
   cutByWeight += o.cutByWeight;
@@ -99,14 +82,10 @@ bool Tracer::blocked(const MRay& ray, TraceStats& stats) const {
   return found;
 }
 
-Rgb Tracer::pixel(int X, int Y, TraceStats& stats, ProbeLog* probe) const {
+Rgb Tracer::pixel(int X, int Y, TraceStats& stats, Probe* probe) const {
   const MRay ray = primaryRay(X, Y);
   ++stats.primaryRays;
-  if (probe)
-    probe->add(0, "pixel",
-               "pixel (" + std::to_string(X) + ", " + std::to_string(Y) + "): primary ray from " +
-                   vec(ray.o) + " along " + vec(ray.d),
-               JsonObject().add("x", X).add("y", Y).add("origin", ray.o).add("direction", ray.d));
+  if (probe) probe->pixel(X, Y, ray);
   if (settings_.debug != TraceSettings::Debug::None) return debugValue(ray, stats);
   return trace(ray, 1, 1.0, 1.0, stats, probe);
 }
@@ -139,7 +118,7 @@ Rgb Tracer::debugValue(const MRay& ray, TraceStats& stats) const {
 // I (k_d c (d.s) + k_s' (r.s)^k_e) / l^2 (without / l^2 for 104); the
 // specular term only where r.s > 0 (MAL-E9).
 Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
-                         TraceStats& stats, ProbeLog* probe, int depth) const {
+                         TraceStats& stats, Probe* probe, int depth) const {
   Rgb colour{0, 0, 0};
   if (settings_.ambient && scene_.hasAmbient)
     for (int k = 0; k < 3; ++k) colour[k] += scene_.ambient[k] * s.kd[k];
@@ -158,14 +137,7 @@ Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const 
       shadow.d = sdir;
       shadow.length = l;
       if (blocked(shadow, stats)) {
-        if (probe)
-          probe->add(depth, "light",
-                     "light " + std::to_string(light.light + 1) + " at " + vec(light.position) +
-                         ": shadowed",
-                     JsonObject()
-                         .add("light", light.light + 1)
-                         .add("position", light.position)
-                         .add("shadowed", true));
+        if (probe) probe->shadowed(depth, light.light, light.position);
         continue;
       }
     }
@@ -178,31 +150,17 @@ Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const 
       add[k] = light.rgb[k] * (diffuse + spec) * falloff;
       colour[k] += add[k];
     }
-    if (probe)
-      probe->add(depth, "light",
-                 "light " + std::to_string(light.light + 1) + " at " + vec(light.position) +
-                     ": d.s = " + fmt("%.6g", ds) + ", r.s = " + fmt("%.6g", rs) +
-                     ", l = " + fmt("%.6g", l) + ", adds " + vec(add),
-                 JsonObject()
-                     .add("light", light.light + 1)
-                     .add("position", light.position)
-                     .add("shadowed", false)
-                     .add("ds", ds)
-                     .add("rs", rs)
-                     .add("distance", l)
-                     .add("adds", add));
+    if (probe) probe->light(depth, light.light, light.position, ds, rs, l, add);
   }
 
   return colour;
 }
 
 Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
-                  ProbeLog* probe) const {
+                  Probe* probe) const {
   const Hit hit = nearest(ray, stats);
   if (hit.primitive < 0) {
-    if (probe)
-      probe->add(depth, "miss", "depth " + std::to_string(depth) + ": no hit (black)",
-                 JsonObject().add("colour", Vec3{0, 0, 0}));
+    if (probe) probe->miss(depth);
     return {0, 0, 0};  // an escaped ray contributes nothing (MAL-Q6)
   }
   ++stats.hits;
@@ -213,18 +171,8 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
   const Vec3 n = normal(scene_, p, x);
   const Vec3 df = dot(i, n) <= 0 ? n : -n;  // the normal facing the ray (section 1.7)
   if (probe)
-    probe->add(depth, "hit",
-               "depth " + std::to_string(depth) + ": hit object " + std::to_string(p.objectNumber) +
-                   " (" + objectName(static_cast<int>(p.id)) + ", " +
-                   io::describe(scene_.where(p)) + ") at t = " + fmt("%.9g", hit.t) + ", point " +
-                   vec(x) + ", normal " + vec(n),
-               JsonObject()
-                   .add("object", p.objectNumber)
-                   .add("primitive", objectName(static_cast<int>(p.id)))
-                   .add("where", io::describe(scene_.where(p)))
-                   .add("t", hit.t)
-                   .add("point", x)
-                   .add("normal", n));
+    probe->hit(depth, p.objectNumber, objectName(static_cast<int>(p.id)), scene_.where(p), hit.t, x,
+               n);
 
   double ks = s.ks;  // k_s', augmented by k_t on total internal reflection
   Rgb colour{0, 0, 0};
@@ -239,9 +187,7 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
     if (D < 0) {
       ks += s.kt;
       ++stats.totalInternalReflections;
-      if (probe)
-        probe->add(depth, "tir", "total internal reflection: k_s' = " + fmt("%.6g", ks),
-                   JsonObject().add("ks", ks));
+      if (probe) probe->tir(depth, ks);
     } else if (depth + 1 > settings_.maxDepth) {
       ++stats.cutByDepth;
     } else if (weight * s.kt < settings_.minWeight) {
@@ -252,12 +198,7 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
       refracted.o = x;
       refracted.d = normalized(i * eta - df * (eta * c + std::sqrt(D)));
       ++stats.transmittedRays;
-      if (probe)
-        probe->add(
-            depth, "transmitted",
-            std::string("transmitted (") + (leaving ? "leaving" : "entering") +
-                ", eta = " + fmt("%.6g", eta) + ") along " + vec(refracted.d),
-            JsonObject().add("leaving", leaving).add("eta", eta).add("direction", refracted.d));
+      if (probe) probe->transmitted(depth, leaving, eta, refracted.d);
       const Rgb t = trace(refracted, depth + 1, weight * s.kt, n2, stats, probe);
       for (int k = 0; k < 3; ++k) colour[k] += s.kt * t[k];
     }
@@ -279,16 +220,12 @@ Rgb Tracer::trace(const MRay& ray, int depth, double weight, double index, Trace
       reflected.o = x;
       reflected.d = r;
       ++stats.reflectedRays;
-      if (probe)
-        probe->add(depth, "reflected", "reflected (k_s' = " + fmt("%.6g", ks) + ") along " + vec(r),
-                   JsonObject().add("ks", ks).add("direction", r));
+      if (probe) probe->reflected(depth, ks, r);
       const Rgb refl = trace(reflected, depth + 1, weight * ks, index, stats, probe);
       for (int k = 0; k < 3; ++k) colour[k] += ks * refl[k];
     }
   }
-  if (probe)
-    probe->add(depth, "returns", "depth " + std::to_string(depth) + " returns " + vec(colour),
-               JsonObject().add("colour", colour));
+  if (probe) probe->returns(depth, colour);
   return colour;
 }
 

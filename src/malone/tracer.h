@@ -11,8 +11,9 @@
 
 #include "src/geom/bvh.h"
 #include "src/malone/primitives.h"
+#include "src/malone/probe.h"
 #include "src/malone/scene.h"
-#include "src/render/probe_log.h"
+#include "src/render/ray_counts.h"
 
 namespace prime::malone {
 
@@ -31,11 +32,10 @@ struct TraceSettings {
   bool linearSearch = false;
 };
 
-struct TraceStats {
-  std::uint64_t primaryRays = 0, reflectedRays = 0, transmittedRays = 0, shadowRays = 0;
-  std::uint64_t primitiveTests = 0, hits = 0, totalInternalReflections = 0;
+// The shared ray counts (src/render/ray_counts.h) and Malone's own.
+struct TraceStats : RayCounts {
+  std::uint64_t primitiveTests = 0, totalInternalReflections = 0;
   std::uint64_t cutByDepth = 0, cutByWeight = 0;
-  std::uint64_t rays() const { return primaryRays + reflectedRays + transmittedRays + shadowRays; }
   TraceStats& operator+=(const TraceStats& o);
 };
 
@@ -49,11 +49,11 @@ class Tracer {
   // The colour of pixel (X, Y) (or its debug value).
   // With `probe`, every ray, hit, light and returned colour is recorded
   // (src/cli/malone/cmd_probe.cpp prints them).
-  Rgb pixel(int X, int Y, TraceStats& stats, ProbeLog* probe = nullptr) const;
+  Rgb pixel(int X, int Y, TraceStats& stats, Probe* probe = nullptr) const;
   // trace(ray, depth, weight, index): the primary ray has depth 1, weight 1
   // and index 1.
   Rgb trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
-            ProbeLog* probe = nullptr) const;
+            Probe* probe = nullptr) const;
 
   const Scene& scene() const { return scene_; }
   const TraceSettings& settings() const { return settings_; }
@@ -67,7 +67,7 @@ class Tracer {
   bool blocked(const MRay& ray, TraceStats& stats) const;
   Rgb debugValue(const MRay& ray, TraceStats& stats) const;
   Rgb illumination(const Surface& s, const Vec3& x, const Vec3& df, const Vec3& r, double ks,
-                   TraceStats& stats, ProbeLog* probe, int depth) const;
+                   TraceStats& stats, Probe* probe, int depth) const;
 
   const Scene& scene_;
   TraceSettings settings_;

@@ -37,7 +37,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
                                                 std::to_string(scene.viewer.yRes) + " picture");
     const prime::malone::Tracer tracer(scene, o->trace);
     prime::malone::TraceStats stats;
-    ProbeLog log;
+    prime::malone::Probe log;
     const Rgb c = tracer.pixel(x, y, stats, &log);
     const int r = prime::malone::toByte(c[0]), g = prime::malone::toByte(c[1]),
               b = prime::malone::toByte(c[2]);

@@ -35,7 +35,7 @@ void expectVec(const Vec3& got, const Vec3& want, double tol = 1e-12) {
 Rgb traceOnce(const Scene& s, const MRay& ray, TraceStats& stats, TraceSettings settings = {},
               double index = 1.0, std::string* probe = nullptr, std::string* json = nullptr) {
   const Tracer tracer(s, settings);
-  ProbeLog log;
+  Probe log;
   const Rgb c = tracer.trace(ray, 1, 1.0, index, stats, probe ? &log : nullptr);
   for (const ProbeEvent& e : log.events) {
     if (probe) *probe += e.kind + " " + e.text + "\n";
