@@ -205,133 +205,164 @@ std::string povGeometry(const Object& o) {
   return "";
 }
 
-PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
-  PovExport out;
-  const ProgramParameters& prog = options.program;
-  const Phosphors ph = options.phosphors;
+namespace {
 
-  // The main light: the brightest (luminance of I dw); colours are taken
-  // under its spectrum. Without lights, the ambience's; without either, a
-  // flat spectrum.
-  Spectrum reference{};
-  reference.fill(1.0);
-  double best = -1.0;
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    const double y = luminance(scene.lights[i].intensityDw);
-    if (y > best) {
-      best = y;
-      out.mainLight = static_cast<int>(i);
+// The scene's export, one section at a time (the POV-Ray file's order).
+class CglPovWriter {
+ public:
+  CglPovWriter(const Scene& scene, const PovExportOptions& options)
+      : scene_(scene), options_(options), prog_(options.program), ph_(options.phosphors) {}
+
+  PovExport run() {
+    mainLight();
+    commandLine();
+    header();
+    lights();
+    images();
+    for (const Object& o : scene_.objects) object(o);
+    if (out_.boxesOmitted > 0)
+      out_.pov += "// " + std::to_string(out_.boxesOmitted) +
+                  " super box(es) not written: POV-Ray bounds the objects itself.\n";
+    return std::move(out_);
+  }
+
+ private:
+  void mainLight() {
+    // The main light: the brightest (luminance of I dw); colours are taken
+    // under its spectrum. Without lights, the ambience's; without either, a
+    // flat spectrum.
+    reference_.fill(1.0);
+    double best = -1.0;
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+      const double y = luminance(scene_.lights[i].intensityDw);
+      if (y > best) {
+        best = y;
+        out_.mainLight = static_cast<int>(i);
+      }
     }
-  }
-  if (out.mainLight >= 0)
-    reference = scene.lights[static_cast<std::size_t>(out.mainLight)].intensity;
-  else if (luminance(scene.ambient) > 0.0)
-    reference = scene.ambient;
-
-  // Command-line options: the window as fractions of 512 (POV-Ray rows from
-  // the top: scanline yhigh is row 511 - yhigh), and the anti-aliasing.
-  std::string& args = out.povArgs;
-  args = "+W512 +H512";
-  if (prog.xleft != 0 || prog.xright != 511)
-    args += " +SC" + fraction(prog.xleft) + " +EC" + fraction(prog.xright + 1);
-  if (prog.ylow != 0 || prog.yhigh != 511)
-    args += " +SR" + fraction(511 - prog.yhigh) + " +ER" + fraction(512 - prog.ylow);
-  if (prog.aalevel == 0) {
-    args += " -A";
-  } else {
-    // Subdivid at level L samples an (L + 1) x (L + 1) grid of points over a
-    // pixel that differs: POV-Ray's method 1 with +R(L + 1) samples as many;
-    // aathreshold is a sum of |dr| + |dg| + |db| in 0..255, POV-Ray's +A a
-    // sum over 0..1.
-    char buf[96];
-    std::snprintf(buf, sizeof buf, " +A%.4f +AM1 +R%d", prog.aathreshold / 255.0, prog.aalevel + 1);
-    args += buf;
+    if (out_.mainLight >= 0)
+      reference_ = scene_.lights[static_cast<std::size_t>(out_.mainLight)].intensity;
+    else if (luminance(scene_.ambient) > 0.0)
+      reference_ = scene_.ambient;
   }
 
-  std::string& s = out.pov;
-  s += "// " + scene.path +
-       ": a Waterloo CGL (1985) scene exported by `prime export-pov`.\n"
-       "// Render: povray +I<this file> " +
-       args + " File_Gamma=1.0\n";
-  s += "// Colours are the RGB of each spectrum under the main light (";
-  s += out.mainLight >= 0 ? "light " + std::to_string(out.mainLight + 1)
-                          : std::string(luminance(scene.ambient) > 0.0 ? "no light: the ambience"
-                                                                       : "none: a flat spectrum");
-  s += "): pigment =\n// L(D * I)/L(I) per channel, light = L(I dw)/255, L = (1/15) M^-1 XYZ.\n";
-  s += "#version 3.7;\n\n";
-  const Rgb ambient = povRgb(scene.ambient, ph);
-  s += "global_settings {\n  assumed_gamma 1.0\n  ambient_light " + rgbText(ambient) +
-       "  // k_a pi I_a\n  max_trace_level " + std::to_string(prog.depth + 1) + "  // depth " +
-       std::to_string(prog.depth) +
-       " + the primary ray\n  adc_bailout 0  // no weight cut-off (section 8)\n}\n";
-  s += "background { " +
-       rgbText(
-           {prog.background[0] / 255.0, prog.background[1] / 255.0, prog.background[2] / 255.0}) +
-       " }\n\n";
-
-  const bool corners = prog.aalevel == 0;
-  const PovCamera cam = povCamera(scene.camera, corners);
-  s += corners ? "// aalevel 0: one ray through each pixel's corner (x, y); POV-Ray shoots the\n"
-                 "// pixel's centre, so the direction is moved back half a pixel.\n"
-               : "// Anti-aliased: POV-Ray's pixel centre is the centre of the square whose\n"
-                 "// corners CGL's Subdivid samples.\n";
-  s += "camera {\n  perspective\n  location " + povVector(cam.location) + "\n  direction " +
-       povVector(cam.direction) + "\n  right " + povVector(cam.right) + "\n  up " +
-       povVector(cam.up) + "\n}\n\n";
-
-  // Lights (section 9.3): no fall-off with distance in either kind.
-  const std::string shadowless = prog.shadows ? "" : " shadowless";
-  for (const Light& l : scene.lights) {
-    const Rgb c = povRgb(l.intensityDw, ph);
-    if (l.inScene) {
-      s += "light_source { " + povVector(l.xyz) + " " + rgbText(c) + shadowless + " }\n";
+  void commandLine() {
+    // Command-line options: the window as fractions of 512 (POV-Ray rows from
+    // the top: scanline yhigh is row 511 - yhigh), and the anti-aliasing.
+    std::string& args = out_.povArgs;
+    args = "+W512 +H512";
+    if (prog_.xleft != 0 || prog_.xright != 511)
+      args += " +SC" + fraction(prog_.xleft) + " +EC" + fraction(prog_.xright + 1);
+    if (prog_.ylow != 0 || prog_.yhigh != 511)
+      args += " +SR" + fraction(511 - prog_.yhigh) + " +ER" + fraction(512 - prog_.ylow);
+    if (prog_.aalevel == 0) {
+      args += " -A";
     } else {
-      // A parallel light from far along the direction to the light; its
-      // shadow rays reach the plane through `location`, CGL's reach 10^10.
-      s += "light_source { " + povVector(l.xyz * 1e7) + " " + rgbText(c) +
-           " parallel point_at <0, 0, 0>" + shadowless + " }\n";
+      // Subdivid at level L samples an (L + 1) x (L + 1) grid of points over a
+      // pixel that differs: POV-Ray's method 1 with +R(L + 1) samples as many;
+      // aathreshold is a sum of |dr| + |dg| + |db| in 0..255, POV-Ray's +A a
+      // sum over 0..1.
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " +A%.4f +AM1 +R%d", prog_.aathreshold / 255.0,
+                    prog_.aalevel + 1);
+      args += buf;
     }
-    ++out.lights;
-  }
-  s += "\n";
-
-  // Texture images: each texel's reflectance under the main light.
-  std::vector<int> imageOf(scene.textures.size(), -1);
-  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
-    bool used = false;
-    for (const Surface& sf : scene.surfaces) used = used || sf.texture == static_cast<int>(t);
-    if (!used) continue;
-    const Texture& tex = scene.textures[t];
-    std::vector<Rgb> pig(tex.texels.size());
-    double top = 1.0;
-    for (std::size_t i = 0; i < tex.texels.size(); ++i) {
-      pig[i] = pigmentUnder(texelSpectrum(tex, i), reference, ph);
-      for (double c : pig[i]) top = std::max(top, c);
-    }
-    PovImage img;
-    img.file = options.textureStem + "-texture" + std::to_string(out.images.size() + 1) + ".png";
-    img.scale = top;
-    for (std::size_t i = 0; i < pig.size() && i < img.frame.words.size(); ++i) {
-      int ch[3];
-      for (int k = 0; k < 3; ++k)
-        ch[k] = static_cast<int>(std::lround(std::clamp(pig[i][k] / top, 0.0, 1.0) * 255.0));
-      img.frame.words[i] = packPixel(ch[0], ch[1], ch[2]);
-    }
-    imageOf[t] = static_cast<int>(out.images.size());
-    out.images.push_back(std::move(img));
   }
 
-  for (const Object& o : scene.objects) {
+  void header() {
+    const std::string& args = out_.povArgs;
+    std::string& s = out_.pov;
+    s += "// " + scene_.path +
+         ": a Waterloo CGL (1985) scene exported by `prime export-pov`.\n"
+         "// Render: povray +I<this file> " +
+         args + " File_Gamma=1.0\n";
+    s += "// Colours are the RGB of each spectrum under the main light (";
+    s += out_.mainLight >= 0
+             ? "light " + std::to_string(out_.mainLight + 1)
+             : std::string(luminance(scene_.ambient) > 0.0 ? "no light: the ambience"
+                                                           : "none: a flat spectrum");
+    s += "): pigment =\n// L(D * I)/L(I) per channel, light = L(I dw)/255, L = (1/15) M^-1 XYZ.\n";
+    s += "#version 3.7;\n\n";
+    const Rgb ambient = povRgb(scene_.ambient, ph_);
+    s += "global_settings {\n  assumed_gamma 1.0\n  ambient_light " + rgbText(ambient) +
+         "  // k_a pi I_a\n  max_trace_level " + std::to_string(prog_.depth + 1) + "  // depth " +
+         std::to_string(prog_.depth) +
+         " + the primary ray\n  adc_bailout 0  // no weight cut-off (section 8)\n}\n";
+    s += "background { " +
+         rgbText({prog_.background[0] / 255.0, prog_.background[1] / 255.0,
+                  prog_.background[2] / 255.0}) +
+         " }\n\n";
+
+    const bool corners = prog_.aalevel == 0;
+    const PovCamera cam = povCamera(scene_.camera, corners);
+    s += corners ? "// aalevel 0: one ray through each pixel's corner (x, y); POV-Ray shoots the\n"
+                   "// pixel's centre, so the direction is moved back half a pixel.\n"
+                 : "// Anti-aliased: POV-Ray's pixel centre is the centre of the square whose\n"
+                   "// corners CGL's Subdivid samples.\n";
+    s += "camera {\n  perspective\n  location " + povVector(cam.location) + "\n  direction " +
+         povVector(cam.direction) + "\n  right " + povVector(cam.right) + "\n  up " +
+         povVector(cam.up) + "\n}\n\n";
+  }
+
+  void lights() {
+    std::string& s = out_.pov;
+    // Lights (section 9.3): no fall-off with distance in either kind.
+    const std::string shadowless = prog_.shadows ? "" : " shadowless";
+    for (const Light& l : scene_.lights) {
+      const Rgb c = povRgb(l.intensityDw, ph_);
+      if (l.inScene) {
+        s += "light_source { " + povVector(l.xyz) + " " + rgbText(c) + shadowless + " }\n";
+      } else {
+        // A parallel light from far along the direction to the light; its
+        // shadow rays reach the plane through `location`, CGL's reach 10^10.
+        s += "light_source { " + povVector(l.xyz * 1e7) + " " + rgbText(c) +
+             " parallel point_at <0, 0, 0>" + shadowless + " }\n";
+      }
+      ++out_.lights;
+    }
+    s += "\n";
+  }
+
+  void images() {
+    // Texture images: each texel's reflectance under the main light.
+    imageOf_.assign(scene_.textures.size(), -1);
+    for (std::size_t t = 0; t < scene_.textures.size(); ++t) {
+      bool used = false;
+      for (const Surface& sf : scene_.surfaces) used = used || sf.texture == static_cast<int>(t);
+      if (!used) continue;
+      const Texture& tex = scene_.textures[t];
+      std::vector<Rgb> pig(tex.texels.size());
+      double top = 1.0;
+      for (std::size_t i = 0; i < tex.texels.size(); ++i) {
+        pig[i] = pigmentUnder(texelSpectrum(tex, i), reference_, ph_);
+        for (double c : pig[i]) top = std::max(top, c);
+      }
+      PovImage img;
+      img.file =
+          options_.textureStem + "-texture" + std::to_string(out_.images.size() + 1) + ".png";
+      img.scale = top;
+      for (std::size_t i = 0; i < pig.size() && i < img.frame.words.size(); ++i) {
+        int ch[3];
+        for (int k = 0; k < 3; ++k)
+          ch[k] = static_cast<int>(std::lround(std::clamp(pig[i][k] / top, 0.0, 1.0) * 255.0));
+        img.frame.words[i] = packPixel(ch[0], ch[1], ch[2]);
+      }
+      imageOf_[t] = static_cast<int>(out_.images.size());
+      out_.images.push_back(std::move(img));
+    }
+  }
+
+  void object(const Object& o) {
     if (o.kind == ObjectKind::Box) {
-      ++out.boxesOmitted;
-      continue;
+      ++out_.boxesOmitted;
+      return;
     }
-    const Surface& sf = scene.surfaces[static_cast<std::size_t>(o.surface)];
+    const Surface& sf = scene_.surfaces[static_cast<std::size_t>(o.surface)];
     const std::string geometry =
         o.kind == ObjectKind::Fractal
-            ? povFractalMesh(scene.fractals[static_cast<std::size_t>(o.fractal)])
+            ? povFractalMesh(scene_.fractals[static_cast<std::size_t>(o.fractal)])
         : o.kind == ObjectKind::Spline
-            ? povSpline(scene.splines[static_cast<std::size_t>(o.spline)])
+            ? povSpline(scene_.splines[static_cast<std::size_t>(o.spline)])
             : povGeometry(o);
     // CGL adds k_t T to the whole colour; POV-Ray's transmit t scales the
     // diffuse and ambient terms by 1 - t, which the finish divides out (for
@@ -343,12 +374,12 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     double scale = 1.0;
     std::string pigment;
     std::string matrix;
-    if (sf.texture >= 0 && imageOf[static_cast<std::size_t>(sf.texture)] >= 0 &&
+    if (sf.texture >= 0 && imageOf_[static_cast<std::size_t>(sf.texture)] >= 0 &&
         o.kind != ObjectKind::Spline)
       matrix = textureMatrix(o, sf);
     const std::string transmit = transparent ? " transmit " + povNumber(sf.kt) : "";
     if (!matrix.empty()) {
-      const PovImage& img = out.images[static_cast<std::size_t>(imageOf[sf.texture])];
+      const PovImage& img = out_.images[static_cast<std::size_t>(imageOf_[sf.texture])];
       scale = img.scale;
       // gamma 1.0: the bytes are linear (POV-Ray 3.7 would decode a PNG as
       // sRGB under assumed_gamma 1.0).
@@ -359,7 +390,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
       Spectrum d = sf.colour;
       if (sf.texture >= 0) {
         // A degenerate map (A1 = A2): the texture's mean colour.
-        const Texture& tex = scene.textures[static_cast<std::size_t>(sf.texture)];
+        const Texture& tex = scene_.textures[static_cast<std::size_t>(sf.texture)];
         d.fill(0.0);
         for (std::size_t i = 0; i < tex.texels.size(); ++i) {
           const Spectrum t = texelSpectrum(tex, i);
@@ -367,9 +398,9 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
             d[k] += t[k] / static_cast<double>(tex.texels.size());
         }
       }
-      pigment = "pigment { " + rgbText(pigmentUnder(d, reference, ph)) + transmit + " }";
+      pigment = "pigment { " + rgbText(pigmentUnder(d, reference_, ph_)) + transmit + " }";
     }
-    std::string finish = "finish { ambient " + povNumber(options.ambientFactor * scale * undo) +
+    std::string finish = "finish { ambient " + povNumber(options_.ambientFactor * scale * undo) +
                          " diffuse " + povNumber(sf.kd * scale * undo);
     if (sf.model == ShadingModel::Phong && sf.ks > 0.0)
       finish += " phong " + povNumber(sf.ks) + " phong_size " + povNumber(sf.e);
@@ -389,7 +420,7 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
         Spectrum w{};
         for (int k = 0; k < kSpectrumSamples; ++k)
           w[k] = sf.kr * (sf.ks * sf.fresnel[0][k] / (kPi * m2) + sf.kd * sf.colour[k]);
-        finish += " reflection { " + rgbText(pigmentUnder(w, reference, ph)) + " }";
+        finish += " reflection { " + rgbText(pigmentUnder(w, reference_, ph_)) + " }";
       }
     } else if (sf.kr > 0.0) {
       finish += " reflection { " + povNumber(sf.kr) + " }";
@@ -399,14 +430,25 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
     if (transparent) material += " interior { ior " + povNumber(sf.index) + " }";
     // Section 9.3: objects that are not opaque are ignored by shadow rays.
     if (!o.opaque) material += " no_shadow";
-    s += "// node " + std::to_string(o.node) + ", surface " + std::to_string(sf.number) + "\n";
-    s += geometry.substr(0, geometry.size() - 1) + material + " }\n";
-    ++out.objects;
+    out_.pov +=
+        "// node " + std::to_string(o.node) + ", surface " + std::to_string(sf.number) + "\n";
+    out_.pov += geometry.substr(0, geometry.size() - 1) + material + " }\n";
+    ++out_.objects;
   }
-  if (out.boxesOmitted > 0)
-    s += "// " + std::to_string(out.boxesOmitted) +
-         " super box(es) not written: POV-Ray bounds the objects itself.\n";
-  return out;
+
+  const Scene& scene_;
+  const PovExportOptions& options_;
+  const ProgramParameters& prog_;
+  const Phosphors ph_;
+  PovExport out_;
+  Spectrum reference_{};      // the main light's spectrum: colours are taken under it
+  std::vector<int> imageOf_;  // texture -> its image in out_.images, or -1 (unused)
+};
+
+}  // namespace
+
+PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
+  return CglPovWriter(scene, options).run();
 }
 
 void writePovFile(const std::string& text, const std::filesystem::path& file) {
