@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "src/render/rgb_image.h"
+
 namespace prime {
 
 namespace {
@@ -90,12 +92,7 @@ Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t
 }
 
 Rgb8 trueColour(const Rgb& c) {
-  auto to8 = [](double v) -> std::uint8_t {
-    if (std::isnan(v) || v <= 0.0) return 0;
-    if (v >= 1.0) return 255;
-    return static_cast<std::uint8_t>(std::lround(v * 255.0));
-  };
-  return {to8(c[0]), to8(c[1]), to8(c[2])};
+  return {channelByte(c[0]), channelByte(c[1]), channelByte(c[2])};
 }
 
 Image8 exportTrueColour(int screenWidth, int screenHeight, const io::GraphFile& graph,

@@ -24,6 +24,7 @@
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
 #include "src/cli/view_8514.h"
+#include "src/render/rgb_image.h"
 
 namespace prime::cli::cgl {
 
@@ -139,13 +140,8 @@ class CglTrace : public TraceJob {
     std::vector<std::uint32_t> row(Frame::kSize);
     if (live.windowed())
       cb.rowDone = [&](int imageRow, std::span<const Rgb> colours) {
-        for (int x = 0; x < Frame::kSize; ++x) {
-          const Rgb& c = colours[static_cast<std::size_t>(x)];
-          auto byte = [](double v) {
-            return static_cast<std::uint32_t>(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5);
-          };
-          row[static_cast<std::size_t>(x)] = byte(c[0]) << 16 | byte(c[1]) << 8 | byte(c[2]);
-        }
+        for (int x = 0; x < Frame::kSize; ++x)
+          row[static_cast<std::size_t>(x)] = xrgbOf(colours[static_cast<std::size_t>(x)]);
         frame_.setRow(imageRow, row);
       };
     // Made by the render (a default RenderResult would be one more 1 MiB frame).

@@ -66,9 +66,7 @@ double finiteOr(double v, double fallback) {
 }
 
 std::uint8_t toByte(double v) {
-  if (!(v > 0.0)) return 0;  // also NaN
-  if (v >= 1.0) return 255;
-  return static_cast<std::uint8_t>(std::lround(v * 255.0));
+  return channelByte(v);
 }
 
 // The unit primitive of type `t` in POV-Ray terms, without its closing brace.

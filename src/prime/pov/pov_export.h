@@ -25,6 +25,7 @@
 #include "src/math/matrix.h"
 #include "src/prime/render/camera.h"
 #include "src/prime/scene/scene.h"
+#include "src/render/rgb_image.h"
 
 namespace prime {
 
