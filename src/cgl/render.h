@@ -50,13 +50,8 @@ struct RenderResult {
   std::vector<std::pair<int, int>> corners;
 };
 
-struct RenderCallbacks {
-  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
-  // A finished scanline: its image row (511 - scanline) and the row's 512
-  // colours. Called on the calling thread.
-  std::function<void(int imageRow, std::span<const Rgb> colours)> rowDone;
-  const std::atomic<bool>* abort = nullptr;
-};
+// A finished scanline is image row 511 - scanline, its 512 colours.
+using RenderCallbacks = PictureCallbacks<Rgb>;
 
 TraceSettings traceSettings(const RenderSettings& settings);
 

@@ -26,11 +26,7 @@ struct RenderResult {
 
 // The shared scheduler's callbacks, with each finished row's colours (what
 // a live window shows).
-struct RenderCallbacks {
-  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
-  std::function<void(int row, std::span<const Rgb> colours)> rowDone;  // calling thread
-  const std::atomic<bool>* abort = nullptr;
-};
+using RenderCallbacks = PictureCallbacks<Rgb>;  // rows of colours, from the top
 
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const RenderCallbacks& callbacks = {});

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -45,6 +46,20 @@ inline constexpr std::size_t kCacheLine = 64;
 template <class T>
 struct alignas(kCacheLine) ThreadSlot {
   T value{};
+};
+
+// What a system's render() reports while it runs, for every system: progress,
+// each finished row's pixels (PRIME's palette indices, Malone's and CGL's
+// colours), and the abort flag it honours between rows.
+template <class Pixel>
+struct PictureCallbacks {
+  // Called on the calling thread about five times a second and once at the end.
+  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
+  // Called on the calling thread for every finished row of the picture (from
+  // its top), in no fixed order; the pixels stay where they are, unchanged,
+  // until render() returns.
+  std::function<void(int row, std::span<const Pixel> pixels)> rowDone;
+  const std::atomic<bool>* abort = nullptr;
 };
 
 struct RowsRun {

@@ -49,15 +49,8 @@ struct RenderResult {
 
 // The shared scheduler's callbacks, with each finished row's palette
 // indices (what the live 8514/A screen draws).
-struct RenderCallbacks {
-  // Called on the calling thread about five times a second and once at the end.
-  std::function<void(int rowsDone, int rows, std::uint64_t raysSoFar)> progress;
-  // Called on the calling thread for every finished row, in no fixed order.
-  // rowIndices is the row in the render's picture: it stays there, unchanged,
-  // until render() returns.
-  std::function<void(int row, std::span<const std::int16_t> rowIndices)> rowDone;
-  const std::atomic<bool>* abort = nullptr;
-};
+// Rows of palette indices, from the top of the graph file's picture.
+using RenderCallbacks = PictureCallbacks<std::int16_t>;
 
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const RenderCallbacks& callbacks = {});
