@@ -364,29 +364,7 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
   }
 
   ProbeRay* pr = probe ? &probe->rays[probeIndex] : nullptr;
-  if (pr) {
-    pr->hit = true;
-    pr->object = hit.object;
-    pr->node = object.node;
-    pr->surface = surface.number;
-    pr->objectKind = object.kind;
-    pr->facet = hit.facet;
-    pr->t = hit.t;
-    pr->point = point;
-    pr->normal = n;
-    pr->textured = surface.texture >= 0;
-    pr->u = u;
-    pr->v = w;
-    pr->ui = ui;
-    pr->vi = vi;
-    if (object.kind == ObjectKind::Spline) {
-      pr->splineU = hit.spline.u;
-      pr->splineV = hit.spline.v;
-      pr->newtonU0 = hit.spline.u0;
-      pr->newtonV0 = hit.spline.v0;
-      pr->newtonIterations = hit.spline.iterations;
-    }
-  }
+  if (pr) recordHit(*pr, hit, point, n, u, w, ui, vi);
 
   // Z = k_a((N.V) + 0.5) I_a pi D + k_r R + k_t T (sections 9.6-9.8); Cook
   // (section 9.9) replaces k_r R + k_t T by Psi(R, D_reflect, k_r) +
@@ -401,16 +379,7 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
   const auto cookPsi = [&](const Spectrum& intensity, const Vec3& l, double dw, ProbeLight* pl) {
     const CookTerms t = cookTerms(n, v, l, surface.m);
     addPsi(z, intensity, dw, t, surface.ks, surface.kd, colour, surface.fresnel);
-    if (pl) {
-      pl->cook = true;
-      pl->d = t.d;
-      pl->g = t.g;
-      pl->s = t.s;
-      pl->dw = dw;
-      pl->fresnel = t.fresnel;
-      pl->diffuse = surface.kd * t.nl;
-      pl->specular = surface.ks * t.specular;
-    }
+    if (pl) pl->cookTorrance(t, dw, surface.kd, surface.ks);
   };
   if (cook) {
     const std::pair<const Vec3*, int> rays[2] = {{reflectDir, ProbeLight::kReflectedLight},
@@ -419,15 +388,8 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
       const double dw = which == ProbeLight::kReflectedLight ? surface.kr : surface.kt;
       if (!dir || !(dw > 0.0)) continue;  // CGL-Q107: k = 0 or no ray, no term
       const Vec3 l = which == ProbeLight::kReflectedLight ? *dir : -*dir;
-      ProbeLight* pl = nullptr;
-      if (pr) {
-        pr->lights.push_back(ProbeLight{});
-        pl = &pr->lights.back();
-        pl->light = which;
-        pl->l = l;
-        pl->nl = dot(n, l);
-        if (!(pl->nl > 0.0)) pl->skipped = "N.L <= 0";
-      }
+      ProbeLight* pl = pr ? &pr->addLight(which, l, dot(n, l)) : nullptr;
+      if (pl && !(pl->nl > 0.0)) pl->skip("N.L <= 0");
       cookPsi(which == ProbeLight::kReflectedLight ? reflected : refracted, l, dw, pl);
     }
   }
@@ -447,16 +409,9 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
       l = light.xyz;
     }
     const double nl = dot(n, l);
-    ProbeLight* pl = nullptr;
-    if (pr) {
-      pr->lights.push_back(ProbeLight{});
-      pl = &pr->lights.back();
-      pl->light = li;
-      pl->l = l;
-      pl->nl = nl;
-    }
+    ProbeLight* pl = pr ? &pr->addLight(li, l, nl) : nullptr;
     if (nl < 0.0) {
-      if (pl) pl->skipped = "N.L < 0";
+      if (pl) pl->skip("N.L < 0");
       continue;
     }
     if (settings_.shadows) {
@@ -464,10 +419,7 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
       const int by = shadowed({point, l}, tLight, stats);
       if (by >= 0) {
         ++stats.shadowedLights;
-        if (pl) {
-          pl->skipped = "shadowed";
-          pl->shadowedBy = by;
-        }
+        if (pl) pl->skip("shadowed", by);
         continue;
       }
     }
@@ -493,6 +445,33 @@ Spectrum Tracer::shade(const Ray& ray, const Hit& hit, const Vec3& point, const 
   }
   if (pr) pr->colour = z;
   return z;
+}
+
+void Tracer::recordHit(ProbeRay& pr, const Hit& hit, const Vec3& point, const Vec3& normal,
+                       double u, double v, int ui, int vi) const {
+  const Object& object = scene_.objects[static_cast<std::size_t>(hit.object)];
+  const Surface& surface = scene_.surfaces[static_cast<std::size_t>(object.surface)];
+  pr.hit = true;
+  pr.object = hit.object;
+  pr.node = object.node;
+  pr.surface = surface.number;
+  pr.objectKind = object.kind;
+  pr.facet = hit.facet;
+  pr.t = hit.t;
+  pr.point = point;
+  pr.normal = normal;
+  pr.textured = surface.texture >= 0;
+  pr.u = u;
+  pr.v = v;
+  pr.ui = ui;
+  pr.vi = vi;
+  if (object.kind == ObjectKind::Spline) {
+    pr.splineU = hit.spline.u;
+    pr.splineV = hit.spline.v;
+    pr.newtonU0 = hit.spline.u0;
+    pr.newtonV0 = hit.spline.v0;
+    pr.newtonIterations = hit.spline.iterations;
+  }
 }
 
 Rgb8 Tracer::screenPoint(double x, double y, TraceStats& stats, ProbeReport* probe) const {

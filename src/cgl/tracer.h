@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "src/cgl/colour.h"
+#include "src/cgl/cook.h"
 #include "src/cgl/scene.h"
 #include "src/geom/bvh.h"
 #include "src/render/ray_counts.h"
@@ -70,6 +71,23 @@ struct ProbeLight {
   bool cook = false;
   double d = 0, g = 0, s = 0, dw = 0;
   int fresnel = 0;
+
+  // Not used: why, and the object in the way (shadowed).
+  void skip(std::string why, int by = -1) {
+    skipped = std::move(why);
+    shadowedBy = by;
+  }
+  // Cook-Torrance's terms with solid angle dw, for a surface's k_d and k_s.
+  void cookTorrance(const CookTerms& t, double solidAngle, double kd, double ks) {
+    cook = true;
+    d = t.d;
+    g = t.g;
+    s = t.s;
+    dw = solidAngle;
+    fresnel = t.fresnel;
+    diffuse = kd * t.nl;
+    specular = ks * t.specular;
+  }
 };
 struct ProbeRay {
   RayKind kind = RayKind::Primary;
@@ -91,6 +109,16 @@ struct ProbeRay {
   bool atDepthLimit = false;  // Shade called with the background for R and T
   std::vector<ProbeLight> lights;
   Spectrum colour{};  // what this ray returned
+
+  // A light (or Cook-Torrance's reflected or transmitted ray) considered at
+  // the hit: its direction and N.L; the record to complete.
+  ProbeLight& addLight(int which, const Vec3& toLight, double nDotL) {
+    ProbeLight& pl = lights.emplace_back();
+    pl.light = which;
+    pl.l = toLight;
+    pl.nl = nDotL;
+    return pl;
+  }
 };
 struct ProbeReport {
   double x = 0, y = 0;         // the screen point traced
@@ -146,6 +174,9 @@ class Tracer {
                  const Spectrum& reflected, const Spectrum& refracted, const Vec3* reflectDir,
                  const Vec3* refractDir, TraceStats& stats, ProbeReport* probe,
                  std::size_t probeIndex) const;
+  // The probe's record of a hit: what was hit, where, and the texture lookup.
+  void recordHit(ProbeRay& pr, const Hit& hit, const Vec3& point, const Vec3& normal, double u,
+                 double v, int ui, int vi) const;
 
   const Scene& scene_;
   TraceSettings settings_;
