@@ -180,46 +180,7 @@ void Reader::node(int n) {
   } else if (kw == "spline") {
     d.kind = NodeKind::Spline;
     d.surface = surface();
-    auto end = [&](const std::string& field) {
-      const std::string e = r.keyword(field, {"single", "double", "triple", "closed"});
-      return e == "single"   ? EndCondition::Single
-             : e == "double" ? EndCondition::Double
-             : e == "triple" ? EndCondition::Triple
-                             : EndCondition::Closed;
-    };
-    const std::string ne = "an integer 2-1000 (control vertices; CGL-Q9)";
-    d.nu = static_cast<int>(r.integer("nu", 2, 1000, ne));
-    d.uEnd = end("u end condition");
-    d.nv = static_cast<int>(r.integer("nv", 2, 1000, ne));
-    d.vEnd = end("v end condition");
-    d.divisions = static_cast<int>(
-        r.integer("divisions", 1, 64, "an integer 1-64 (sub-intervals per knot interval; CGL-Q9)"));
-    d.overlap = r.realIn("overlap", 0.0, big, "a real number 0.0 or more");
-    done(r);
-    for (int v = 0; v < d.nv; ++v)
-      for (int u = 0; u < d.nu; ++u) {
-        const std::string cname = name + ", control vertex " + std::to_string(u + 1) +
-                                  " of group " + std::to_string(v + 1) + " of " +
-                                  std::to_string(d.nv);
-        const std::size_t k = header(cname);
-        if (!isCount(lines_[k].tokens[0].text) ||
-            (lines_[k].tokens.size() >= 2 && anyKeyword(lines_[k].tokens[1].text)))
-          notARecord(k, cname + ", field count",
-                     "'" + std::to_string(u + 1) + " x y z' (the spline's " +
-                         std::to_string(d.nu * d.nv) + " control vertices: " +
-                         std::to_string(d.nv) + " groups of " + std::to_string(d.nu) + ")");
-        Record c(*this, k, cname, Section::Nodes);
-        c.count("the u count " + std::to_string(u + 1) +
-                    " (it restarts at 1 in each group of nu = " + std::to_string(d.nu) +
-                    "; CGL-Q6)",
-                u + 1);
-        Vec3 p{};
-        p[0] = c.real("x");
-        p[1] = c.real("y");
-        p[2] = c.real("z");
-        d.controls.push_back(p);
-        done(c);
-      }
+    splineNode(r, d, name);
     scene_.nodes.push_back(std::move(d));
     return;
   } else if (kw == "box") {
@@ -234,6 +195,51 @@ void Reader::node(int n) {
 // The DAG: no cycle along down and right links (shared subtrees allowed),
 // walked iteratively so that a long chain cannot overflow the stack (CGL-D2);
 // nodes the root cannot reach are reported as warnings (CGL-Q10).
+// A spline node's fields after its surface (section 6.2: nu, the u end
+// condition, nv, the v end condition, divisions, overlap), then its nu x nv
+// control vertices, one a line, in groups of nu whose count restarts at 1.
+void Reader::splineNode(Record& r, NodeRecord& d, const std::string& name) {
+  auto end = [&](const std::string& field) {
+    const std::string e = r.keyword(field, {"single", "double", "triple", "closed"});
+    return e == "single"   ? EndCondition::Single
+           : e == "double" ? EndCondition::Double
+           : e == "triple" ? EndCondition::Triple
+                           : EndCondition::Closed;
+  };
+  const std::string ne = "an integer 2-1000 (control vertices; CGL-Q9)";
+  d.nu = static_cast<int>(r.integer("nu", 2, 1000, ne));
+  d.uEnd = end("u end condition");
+  d.nv = static_cast<int>(r.integer("nv", 2, 1000, ne));
+  d.vEnd = end("v end condition");
+  d.divisions = static_cast<int>(
+      r.integer("divisions", 1, 64, "an integer 1-64 (sub-intervals per knot interval; CGL-Q9)"));
+  d.overlap =
+      r.realIn("overlap", 0.0, std::numeric_limits<double>::max(), "a real number 0.0 or more");
+  done(r);
+  for (int v = 0; v < d.nv; ++v)
+    for (int u = 0; u < d.nu; ++u) {
+      const std::string cname = name + ", control vertex " + std::to_string(u + 1) + " of group " +
+                                std::to_string(v + 1) + " of " + std::to_string(d.nv);
+      const std::size_t k = header(cname);
+      if (!isCount(lines_[k].tokens[0].text) ||
+          (lines_[k].tokens.size() >= 2 && anyKeyword(lines_[k].tokens[1].text)))
+        notARecord(k, cname + ", field count",
+                   "'" + std::to_string(u + 1) + " x y z' (the spline's " +
+                       std::to_string(d.nu * d.nv) + " control vertices: " + std::to_string(d.nv) +
+                       " groups of " + std::to_string(d.nu) + ")");
+      Record c(*this, k, cname, Section::Nodes);
+      c.count("the u count " + std::to_string(u + 1) +
+                  " (it restarts at 1 in each group of nu = " + std::to_string(d.nu) + "; CGL-Q6)",
+              u + 1);
+      Vec3 p{};
+      p[0] = c.real("x");
+      p[1] = c.real("y");
+      p[2] = c.real("z");
+      d.controls.push_back(p);
+      done(c);
+    }
+}
+
 void Reader::checkDag() {
   const auto& nodes = scene_.nodes;
   const std::size_t count = nodes.size();

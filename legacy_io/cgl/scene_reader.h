@@ -253,6 +253,7 @@ class Reader {
   void ambience();
   void light(int n);
   void node(int n);
+  void splineNode(Record& r, NodeRecord& d, const std::string& name);
   void checkDag();
   Spectrum colourVector(const std::string& what, Section section);
   Spectrum strictColourVector(const std::string& what);
