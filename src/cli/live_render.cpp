@@ -72,6 +72,8 @@ void parsePace(const std::string& text, LiveOptions& o) {
   o.pace = v;
 }
 
+namespace {
+// --fullscreen and --scale, and --pace when `pace` (G23, G24).
 void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace) {
   cmd->add_flag("--fullscreen", o->fullscreen, "Show the picture fullscreen (key F11 toggles)");
   cmd->add_option_function<std::string>(
@@ -88,6 +90,7 @@ void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, b
         "Show the finished rows no faster than this many a second, or 1991 for an estimate of "
         "PRIME's 1991 speed (the render may finish first; the window catches up, Esc stops it)");
 }
+}  // namespace
 
 void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace) {
   cmd->add_flag("--no-window", o->noWindow,

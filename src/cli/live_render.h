@@ -40,11 +40,6 @@ struct LiveOptions {
   int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
 };
 
-// --fullscreen and --scale, and --pace when `pace` (a render to watch), for a
-// command whose window is a LiveRender over *o (G23, G24): the same options
-// PRIME's trace and view have, for Malone's and CGL's windows.
-void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace);
-
 // The window flags of a command that renders live, for every system:
 // --no-window, --zoom, --fullscreen, --scale, --no-wait, and --pace when
 // `pace` (a render to watch).

@@ -30,7 +30,6 @@ namespace prime::cli {
 
 // The flags `prime trace` has for every system, with one meaning.
 struct TraceFlags {
-  std::string format;         // --format (empty: detected)
   std::string png;            // --png: the picture as the system itself showed or wrote it
   std::string trueColourPng;  // --true-color-png: the render before any palette
   std::string png8514;        // --png-8514: as PRIME's IBM 8514/A would show it
@@ -77,7 +76,6 @@ using TraceFactory = std::function<std::unique_ptr<TraceJob>()>;
 
 // The flags `prime probe` has for every system.
 struct ProbeFlags {
-  std::string format;
   std::vector<int> pixel;  // --pixel X Y: column X, row Y from the top of what `trace` writes
   bool json = false;       // --json
 };

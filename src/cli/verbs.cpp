@@ -32,15 +32,12 @@ std::string systemNames() {
 
 // --format, on every verb: one of the systems (the one chosen, whose flags
 // follow; systemFor() read it before the command line was parsed).
-// `format`: where the value goes (null: nowhere, only checked).
-void addFormatOption(CLI::App* cmd, std::string* format, const std::string& what) {
+// The value was read by systemFor() before parsing: here it is only checked.
+void addFormatOption(CLI::App* cmd, const std::string& what) {
   std::vector<std::string> names;
   for (const System& sys : systems()) names.push_back(sys.name);
   cmd->add_option_function<std::string>(
-         "--format",
-         [format](const std::string& v) {
-           if (format != nullptr) *format = v;
-         },
+         "--format", [](const std::string&) {},
          "The " + what + "'s system: " + systemNames() +
              " (default: detected; a directory is "
              "PRIME's)")
@@ -67,8 +64,6 @@ CLI::App* addVerb(CLI::App& app, const std::string& verb, const std::string& wha
 }
 
 }  // namespace
-
-std::span<const System> systems();  // src/cli/systems.cpp
 
 const System* findSystem(std::string_view name) {
   for (const System& sys : systems())
@@ -148,7 +143,7 @@ void addTraceVerb(CLI::App& app, Action& action, const System& system) {
                       "scene file); --png OUT.png writes the picture as the system showed it",
                       system);
   auto flags = std::make_shared<TraceFlags>();
-  addFormatOption(cmd, &flags->format, "scene");
+  addFormatOption(cmd, "scene");
   cmd->add_option("--png", flags->png,
                   "Write the picture as the system itself showed or wrote it, as PNG (PRIME: the "
                   "8514/A screen; Malone: its PPM; CGL: its frame buffer)");
@@ -183,7 +178,7 @@ void addProbeVerb(CLI::App& app, Action& action, const System& system) {
                       "hits, lights and shading (--json for machines)",
                       system);
   auto flags = std::make_shared<ProbeFlags>();
-  addFormatOption(cmd, &flags->format, "scene");
+  addFormatOption(cmd, "scene");
   cmd->add_option(
          "--pixel", flags->pixel,
          "Column X and row Y of the picture `prime trace` writes, 0-based from its top-left")
@@ -212,7 +207,7 @@ void addWholeVerb(CLI::App& app, Action& action, const System& system, const std
   auto* cmd = addVerb(app, verb, what, system);
   // export and view take a picture, whose format (--format) is the system's
   // own option; elsewhere --format was read by systemFor() and is only checked.
-  if (verb != "export" && verb != "view") addFormatOption(cmd, nullptr, "scene");
+  if (verb != "export" && verb != "view") addFormatOption(cmd, "scene");
   if (part == nullptr) {
     cmd->callback([&action, verb, title = std::string(system.title)] {
       action = [verb, title] {

@@ -49,14 +49,6 @@ PovCamera povCamera(const CameraSettings& s) {
 
 namespace {
 
-std::string vec(const Vec3& v) {
-  return povVector(v);
-}
-
-std::string matrixText(const std::array<double, 12>& m) {
-  return povMatrix(m);
-}
-
 bool affine(const Matrix4& m) {
   return m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0;
 }
@@ -160,10 +152,10 @@ class Exporter {
          << "  max_trace_level " << level << "\n"
          << "  adc_bailout 0  // no adaptive depth cut-off, like the listing\n"
          << "  assumed_gamma 1\n"
-         << "  ambient_light rgb " << vec(scene_.ambient) << "  // IA of light/light.txt\n"
+         << "  ambient_light rgb " << povVector(scene_.ambient) << "  // IA of light/light.txt\n"
          << "}\n\n";
-    out_ << "// The listing's camera: eye " << vec(o_.camera.eye) << ", window top-left "
-         << vec(o_.camera.windowLeft) << ", top-right " << vec(o_.camera.windowRight)
+    out_ << "// The listing's camera: eye " << povVector(o_.camera.eye) << ", window top-left "
+         << povVector(o_.camera.windowLeft) << ", top-right " << povVector(o_.camera.windowRight)
          << ",\n// bottom-left at the origin (K23); ray (row, column) of the listing goes through "
             "the\n"
          << "// centre of pixel (row, column). `right` follows the window's top edge, so world +x\n"
@@ -171,22 +163,23 @@ class Exporter {
             "left-handedness).\n"
          << "camera {\n"
          << "  perspective\n"
-         << "  location " << vec(cam.location) << "\n"
-         << "  direction " << vec(cam.direction) << "\n"
-         << "  right " << vec(cam.right) << "\n"
-         << "  up " << vec(cam.up) << "\n"
+         << "  location " << povVector(cam.location) << "\n"
+         << "  direction " << povVector(cam.direction) << "\n"
+         << "  right " << povVector(cam.right) << "\n"
+         << "  up " << povVector(cam.up) << "\n"
          << "}\n\n"
-         << "background { rgb " << vec(scene_.background) << " }\n\n";
+         << "background { rgb " << povVector(scene_.background) << " }\n\n";
     if (!o_.shadows) {
       out_ << "// Point lights without distance fall-off; shadowless: the listing casts no shadow "
               "rays (K9).\n";
       for (const auto& l : scene_.lights)
-        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " shadowless }\n";
+        out_ << "light_source { " << povVector(l.pt) << " color rgb " << povVector(l.rgb)
+             << " shadowless }\n";
     } else if (!(o_.lightRadius > 0.0)) {
       out_ << "// Point lights without distance fall-off, casting shadows (the thesis profile, "
               "T2).\n";
       for (const auto& l : scene_.lights)
-        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " }\n";
+        out_ << "light_source { " << povVector(l.pt) << " color rgb " << povVector(l.rgb) << " }\n";
     } else {
       // A disc of the radius facing the point lit (the thesis profile's
       // distributed light, T10): POV-Ray's circular, oriented area light.
@@ -194,8 +187,9 @@ class Exporter {
       out_ << "// Area lights: discs of radius " << o_.lightRadius
            << " facing the point lit, casting soft shadows (the thesis profile, T10).\n";
       for (const auto& l : scene_.lights)
-        out_ << "light_source { " << vec(l.pt) << " color rgb " << vec(l.rgb) << " area_light <"
-             << d << ", 0, 0>, <0, 0, " << d << ">, 9, 9 adaptive 1 jitter circular orient }\n";
+        out_ << "light_source { " << povVector(l.pt) << " color rgb " << povVector(l.rgb)
+             << " area_light <" << d << ", 0, 0>, <0, 0, " << d
+             << ">, 9, 9 adaptive 1 jitter circular orient }\n";
     }
     out_ << "\n";
   }
@@ -215,7 +209,7 @@ class Exporter {
     const Vec3 f0 = meanMapColour(obj);
     const std::string n = std::to_string(obj.number);
     out_ << "// Object " << n << " (obj/O" << n << "): Hall hue kDR " << povNumber(h.kDR) << " kDT "
-         << povNumber(h.kDT) << " fDR " << vec({h.fDR[0], h.fDR[1], h.fDR[2]}) << " tT "
+         << povNumber(h.kDT) << " fDR " << povVector({h.fDR[0], h.fDR[1], h.fDR[2]}) << " tT "
          << povNumber(h.tT) << " kRH " << povNumber(h.kRH) << " kTH " << povNumber(h.kTH)
          << " indx " << povNumber(h.indx) << ".\n"
          << "// Pigment: D = kDR*fDR + kDT*(1 - fDR) plus the texture map, transmit kST = 1 - "
@@ -235,7 +229,8 @@ class Exporter {
       }
       out_ << "  // kSR * IA * FSR: F0 (the map's mean colour) facing, 1 at grazing, linear in 1 - "
               "cos\n"
-           << "  reflection { rgb " << vec(lo) << ", rgb " << vec(hi) << " falloff 1 }\n";
+           << "  reflection { rgb " << povVector(lo) << ", rgb " << povVector(hi)
+           << " falloff 1 }\n";
     }
     out_ << "}\n";
     if (L.transparent) {
@@ -310,7 +305,7 @@ class Exporter {
       std::string bound =
           "bounded_by {  // the object's bounding volume, prim " + std::to_string(obj.boundPrim) +
           "\n" +
-          indentLines(shapeOpen(b.type) + "\n  " + matrixText(povMatrix(b.transform)) + "\n}", 2) +
+          indentLines(shapeOpen(b.type) + "\n  " + povMatrix(povMatrix(b.transform)) + "\n}", 2) +
           "}\n";
       // Insert before the root's closing brace (a shared root cannot be: the
       // root has no parent).
@@ -448,7 +443,7 @@ class Exporter {
 
   std::string leafEnd(std::string s, const ScenePrim& prim, const ObjectLook& L) {
     if (!L.interior.empty()) s += "  interior { " + L.interior + " }\n";
-    s += "  " + matrixText(povMatrix(prim.transform)) + "\n";
+    s += "  " + povMatrix(povMatrix(prim.transform)) + "\n";
     if (!affine(prim.transform))
       s += "  // the matrix's fourth column is not (0, 0, 0, 1); POV-Ray ignores it\n";
     return s + "}\n";
