@@ -14,6 +14,7 @@ constexpr double kMaxPitch = 89.0;
 OrbitView OrbitView::from(const FreeCameraSettings& c) {
   OrbitView v;
   v.target = c.lookAt;
+  v.pivot = c.lookAt;
   const Vec3 off = c.eye - c.lookAt;
   v.distance = length(off);
   v.pitch = std::clamp(std::asin(std::clamp(off[1] / v.distance, -1.0, 1.0)) / kDegree, -kMaxPitch,
@@ -24,6 +25,28 @@ OrbitView OrbitView::from(const FreeCameraSettings& c) {
   v.height = c.height;
   return v;
 }
+
+OrbitView OrbitView::from(const FreeCameraSettings& c, const Vec3& pivot) {
+  OrbitView v = from(c);
+  v.pivot = pivot;
+  return v;
+}
+
+namespace {
+// The camera's frame for (yaw, pitch): forward, right = up x forward, and
+// the true up, as FreeCamera makes them for up +y.
+struct Frame {
+  Vec3 forward, right, up;
+};
+Frame frameOf(double yaw, double pitch) {
+  const double y = yaw * kDegree, p = pitch * kDegree;
+  Frame f;
+  f.forward = {-std::cos(p) * std::sin(y), -std::sin(p), std::cos(p) * std::cos(y)};
+  f.right = normalized(cross(Vec3{0.0, 1.0, 0.0}, f.forward));
+  f.up = cross(f.forward, f.right);
+  return f;
+}
+}  // namespace
 
 Vec3 OrbitView::eye() const {
   const double y = yaw * kDegree, p = pitch * kDegree;
@@ -44,8 +67,17 @@ FreeCameraSettings OrbitView::camera() const {
 }
 
 void OrbitView::orbit(double dYaw, double dPitch) {
+  const double oldYaw = yaw, oldPitch = pitch;
   yaw = std::remainder(yaw + dYaw, 360.0);
   pitch = std::clamp(pitch + dPitch, -kMaxPitch, kMaxPitch);
+  const Vec3 arm = target - pivot;
+  if (arm[0] == 0.0 && arm[1] == 0.0 && arm[2] == 0.0) return;  // turning about the target
+  // The rigid turn that takes the old frame to the new one, applied to the
+  // target about the pivot (the eye follows: it is the target's offset in
+  // the camera's frame).
+  const Frame a = frameOf(oldYaw, oldPitch), b = frameOf(yaw, pitch);
+  target =
+      pivot + b.right * dot(arm, a.right) + b.up * dot(arm, a.up) + b.forward * dot(arm, a.forward);
 }
 
 double OrbitView::pixelAtTarget() const {
@@ -55,7 +87,9 @@ double OrbitView::pixelAtTarget() const {
 void OrbitView::pan(double dxPixels, double dyPixels) {
   const FreeCamera c(camera());
   const double s = pixelAtTarget();
-  target = target + c.right() * (dxPixels * s) + c.trueUp() * (dyPixels * s);
+  const Vec3 move = c.right() * (dxPixels * s) + c.trueUp() * (dyPixels * s);
+  target = target + move;
+  pivot = pivot + move;
 }
 
 void OrbitView::dolly(double factor) {

@@ -1,6 +1,7 @@
 #include "src/malone/scene.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace prime::malone {
 
@@ -257,6 +258,31 @@ Scene buildScene(const SceneFile& file, const std::string& name) {
                          str(v.lookAt) + " (the eye itself)");
   scene.viewer = {v.eye, v.lookAt, v.x, v.y, v.xRes, v.yRes};
   return scene;
+}
+
+FreeCameraSettings freeCamera(const Viewer& v) {
+  FreeCameraSettings c;
+  c.eye = v.eye;
+  c.lookAt = v.lookAt;
+  c.up = v.y;
+  c.fovY = 2.0 * std::atan(length(v.y)) * 180.0 / std::numbers::pi;
+  c.width = v.xRes;
+  c.height = v.yRes;
+  return c;
+}
+
+Viewer viewerOf(const FreeCameraSettings& c) {
+  const FreeCamera camera(c);  // the right and up a free camera has
+  const double halfH = std::tan(0.5 * c.fovY * std::numbers::pi / 180.0);
+  const double halfW = halfH * static_cast<double>(c.width) / static_cast<double>(c.height);
+  Viewer v;
+  v.eye = c.eye;
+  v.lookAt = c.lookAt;
+  v.x = camera.right() * halfW;
+  v.y = camera.trueUp() * halfH;
+  v.xRes = c.width;
+  v.yRes = c.height;
+  return v;
 }
 
 }  // namespace prime::malone

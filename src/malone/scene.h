@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "legacy_io/malone/input.h"
+#include "src/geom/free_camera.h"
 #include "src/math/rgb.h"
 #include "src/math/vec.h"
 
@@ -90,6 +91,17 @@ struct Scene {
 // or parallelogram, a singular affine matrix, a refractive index <= 0 on a
 // transparent surface, a viewer looking at its own eye).
 Scene buildScene(const SceneFile& file, const std::string& name);
+
+// The viewer as a free camera (src/geom/free_camera.h): eye, look-at, up
+// along y, the vertical field of view 2 atan |y| (y spans half the picture's
+// height at distance 1), X_RES x Y_RES. It is the viewer exactly when x, y
+// and the view are perpendicular and |x| / |y| = X_RES / Y_RES, as the
+// cameras of this port's scenes are; otherwise the nearest such camera.
+FreeCameraSettings freeCamera(const Viewer& viewer);
+// The viewer of a free camera: x = right tan(fov/2) W/H, y = up tan(fov/2),
+// right and up as FreeCamera makes them. Malone's own sampling stays (MAL-Q23:
+// the ray through a pixel's corner, not its centre).
+Viewer viewerOf(const FreeCameraSettings& camera);
 
 // The deterministic sample positions of a sampled (spherical) light: a
 // Fibonacci lattice of `count` points on the sphere (MAL-D3).

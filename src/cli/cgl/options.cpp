@@ -1,7 +1,9 @@
 #include "src/cli/cgl/options.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <numbers>
 
 #include "legacy_io/common/error.h"
 
@@ -22,6 +24,7 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
   cmd->add_flag("--linear-search", o.linearSearch,
                 "Test the object list in order for every ray, as the package did (the same "
                 "pixels, slower; operation counts as the document's program made them)");
+  addCameraFlags(cmd, o.camera, "the scene's display parameters");
   if (!withParameters) return;
   const std::string g =
       "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
@@ -68,6 +71,43 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
       ->group(g);
 }
 
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+void applyCamera(const CameraFlags& flags, prime::cgl::SceneFile& file) {
+  auto& d = file.display;
+  FreeCameraSettings own;
+  own.eye = d.eye;
+  own.lookAt = d.eye + d.sight;
+  own.up = d.up;
+  own.fovY = 2.0 * std::atan(0.5 * d.viewportHeight / d.dist) / kDegree;
+  own.width = own.height = 512;
+  const CameraFlags given = withCameraFile(flags);
+  const FreeCameraSettings c = applyCameraFlags(given, own);
+  if (c.width > 512 || c.height > 512)
+    throw CLI::ValidationError("--size",
+                               "the CGL package's screen is 512 x 512 (section 8.2); got " +
+                                   std::to_string(c.width) + " x " + std::to_string(c.height));
+  d.eye = c.eye;
+  d.sight = c.lookAt - c.eye;
+  d.up = c.up;
+  d.dist = 1.0;
+  // D = s + (x - 256) (w / 512) r + (y - 256) (h / 512) u: H scanlines of
+  // h / 512 each span 2 tan(fov / 2) at distance 1.
+  d.viewportHeight = d.viewportWidth = 512.0 * 2.0 * std::tan(0.5 * c.fovY * kDegree) / c.height;
+  if (!given.size.empty()) {
+    auto& p = file.program;
+    p.xleft = 256 - c.width / 2;
+    p.xright = p.xleft + c.width - 1;
+    p.ylow = 256 - c.height / 2;
+    p.yhigh = p.ylow + c.height - 1;
+    p.given.xleft = p.given.xright = p.given.ylow = p.given.yhigh = true;
+  }
+}
+
+}  // namespace
+
 prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
   prime::cgl::ReadOptions read;
   read.lenient = o.lenient;
@@ -110,6 +150,7 @@ prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
     p.given.shadows = true;
   }
   if (o.quiet) p.quiet = p.given.quiet = true;
+  if (o.camera.given()) applyCamera(o.camera, file);
   return file;
 }
 

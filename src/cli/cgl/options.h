@@ -10,6 +10,7 @@
 #include "legacy_io/cgl/scene_file.h"
 #include "src/cgl/render.h"
 #include "src/cgl/scene.h"
+#include "src/cli/camera_flags.h"
 
 namespace prime::cli::cgl {
 
@@ -25,13 +26,23 @@ struct CglOptions {
   std::optional<double> brightness, aathreshold;
   std::vector<int> background;
   bool shadows = false, noShadows = false, quiet = false;
+  // --eye --look-at --up --fov --size --camera: replace the display
+  // parameters (and, with --size, the window; see readCgl).
+  CameraFlags camera;
 };
 
 // `withParameters`: also the program-parameter overrides (trace, probe, bench).
 void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters = true);
 
 // Reads the scene file (strict, or lenient: then every repair is listed on
-// stderr unless quiet) and applies the overrides. Throws io::InputError.
+// stderr unless quiet) and applies the overrides. The camera flags make the
+// display parameters of the free camera (src/geom/free_camera.h): eye, sight
+// towards the look-at point, up, dist 1 and a square viewport whose --size
+// H scanlines span --fov; --size W H also sets the window to the W x H
+// pixels centred on the 512 x 512 screen (at most 512 x 512: the package's
+// frame buffer, section 8.2). The scene's own camera, as the flags see it, is
+// its eye, eye + sight, up, the field of view of the whole screen's height
+// and 512 x 512 (CGL-D61). Throws io::InputError.
 prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet);
 
 // Preprocess: the scene with its textures (the scene's directory, then

@@ -31,6 +31,7 @@ void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
           CLI::IsMember({"ambient", "diffuse", "specular", "shadows", "reflection", "refraction"}));
   cmd->add_flag("--linear-search", o.trace.linearSearch,
                 "Test every primitive for every ray, as the original did (same pixels, slower)");
+  addCameraFlags(cmd, o.camera, "the scene's viewer");
 }
 
 prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {
@@ -53,6 +54,9 @@ prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {
   const auto file = prime::malone::readSceneFile(o.file, read);
   const auto readDone = Clock::now();
   auto scene = prime::malone::buildScene(file, o.file);
+  if (o.camera.given())
+    scene.viewer = prime::malone::viewerOf(
+        applyCameraFlags(withCameraFile(o.camera), prime::malone::freeCamera(scene.viewer)));
   if (timings) {
     timings->read = std::chrono::duration<double>(readDone - start).count();
     timings->build = std::chrono::duration<double>(Clock::now() - readDone).count();

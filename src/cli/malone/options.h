@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "src/cli/camera_flags.h"
 #include "src/malone/render.h"
 #include "src/malone/scene.h"
 
@@ -14,11 +15,13 @@ struct MaloneOptions {
   std::string debug;             // depth | colour | normal
   std::vector<std::string> off;  // --no ambient,diffuse,...
   prime::malone::TraceSettings trace;
-  int threads = 0;  // trace's shared --threads
+  int threads = 0;     // trace's shared --threads
+  CameraFlags camera;  // --eye --look-at --up --fov --size --camera: replace the viewer's
 };
 
 void addMaloneOptions(CLI::App* cmd, MaloneOptions& o);
-// Reads and builds the scene, applies --debug and --no to the settings.
+// Reads and builds the scene, applies --debug and --no to the settings and
+// the camera flags to the viewer.
 // With `timings`, the seconds spent reading the file and building the scene.
 struct LoadTimings {
   double read = 0, build = 0;

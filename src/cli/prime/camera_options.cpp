@@ -5,9 +5,7 @@
 namespace prime::cli {
 
 void addCameraOptions(CLI::App* cmd, CameraOptions& o) {
-  cmd->add_option("--eye", o.eye, "Eye position x y z (listing: 500 500 -1500)")
-      ->expected(3)
-      ->allow_extra_args(false);
+  addEyeFlag(cmd, o.flags, "Eye position x y z (listing: 500 500 -1500)");
   cmd->add_option("--window-left", o.windowLeft, "World window top-left corner (listing: 0 1000 0)")
       ->expected(3)
       ->allow_extra_args(false);
@@ -26,34 +24,25 @@ void addCameraOptions(CLI::App* cmd, CameraOptions& o) {
 
 void addFreeCameraOptions(CLI::App* cmd, CameraOptions& o) {
   o.freeOptions = true;
-  auto* lookAt = cmd->add_option("--look-at", o.lookAt,
-                                 "Free camera: the point looked at x y z (default: the listing "
-                                 "window's centre 500 500 0)")
-                     ->expected(3)
-                     ->allow_extra_args(false);
-  auto* up = cmd->add_option("--up", o.up, "Free camera: the up vector x y z (default 0 1 0)")
-                 ->expected(3)
-                 ->allow_extra_args(false);
-  auto* fov = cmd->add_option("--fov", o.fov,
-                              "Free camera: vertical field of view in degrees (default: what "
-                              "frames the listing's window)")
-                  ->check(CLI::Range(0.001, 179.0));
-  auto* size =
-      cmd->add_option("--size", o.size, "Free camera: picture size W H, square pixels (769 769)")
-          ->expected(2)
-          ->allow_extra_args(false)
-          ->check(CLI::Range(1, 32767));
+  addCameraFlags(cmd, o.flags,
+                 "a free camera at the listing's eye, looking at its window's centre 500 500 0 "
+                 "with up 0 1 0 and the field of view that frames the window, 769 x 769",
+                 false);
   auto* frame = cmd->add_flag("--frame-listing-window", o.frameListingWindow,
                               "Free camera that frames the listing's world window (0..1000 x "
                               "0..1000 at z = 0) from the eye, square pixels, at --size");
-  frame->excludes(lookAt)->excludes(fov)->excludes(up);
-  for (auto* free : {lookAt, up, fov, size, frame})
+  frame->excludes("--look-at")->excludes("--fov")->excludes("--up")->excludes("--camera");
+  for (const char* free :
+       {"--look-at", "--up", "--fov", "--size", "--camera", "--frame-listing-window"})
     for (const char* listingOnly : {"--viewport", "--screen"})
-      if (auto* other = cmd->get_option_no_throw(listingOnly)) free->excludes(other);
+      if (auto* other = cmd->get_option_no_throw(listingOnly))
+        cmd->get_option(free)->excludes(other);
 }
 
-void applyCameraOptions(const CameraOptions& o, CameraSettings& c) {
-  if (o.eye.size() == 3) c.eye = {o.eye[0], o.eye[1], o.eye[2]};
+void applyCameraOptions(const CameraOptions& options, CameraSettings& c, int side) {
+  const CameraFlags flags = withCameraFile(options.flags);
+  const CameraOptions& o = options;
+  if (flags.eye.size() == 3) c.eye = {flags.eye[0], flags.eye[1], flags.eye[2]};
   if (o.windowLeft.size() == 3) c.windowLeft = {o.windowLeft[0], o.windowLeft[1], o.windowLeft[2]};
   if (o.windowRight.size() == 3)
     c.windowRight = {o.windowRight[0], o.windowRight[1], o.windowRight[2]};
@@ -67,20 +56,20 @@ void applyCameraOptions(const CameraOptions& o, CameraSettings& c) {
     c.screenWidth = o.screen[0];
     c.screenHeight = o.screen[1];
   }
-  if (!o.anyFree()) return;
-  const int width = o.size.size() == 2 ? o.size[0] : 769;
-  const int height = o.size.size() == 2 ? o.size[1] : 769;
+  if (!flags.freeGiven() && !o.frameListingWindow) return;
+  const int width = flags.size.size() == 2 ? flags.size[0] : side;
+  const int height = flags.size.size() == 2 ? flags.size[1] : side;
   try {
     FreeCameraSettings f;
     const auto corners = listingWindowCorners(c);
     f.eye = c.eye;
-    f.lookAt = o.lookAt.empty() ? (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25
-                                : Vec3{o.lookAt[0], o.lookAt[1], o.lookAt[2]};
-    if (!o.up.empty()) f.up = {o.up[0], o.up[1], o.up[2]};
+    f.lookAt = flags.lookAt.empty() ? (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25
+                                    : Vec3{flags.lookAt[0], flags.lookAt[1], flags.lookAt[2]};
+    if (!flags.up.empty()) f.up = {flags.up[0], flags.up[1], flags.up[2]};
     f.width = width;
     f.height = height;
-    if (o.fov > 0.0) {
-      f.fovY = o.fov;
+    if (flags.fov > 0.0) {
+      f.fovY = flags.fov;
     } else {
       try {
         f.fovY = fitFovY(f.eye, f.lookAt, f.up, width, height, corners);

@@ -4,12 +4,17 @@
 // 8, 4, 2, 1 pixels) on the shared row scheduler; any key or mouse move
 // abandons the frame in flight and starts again from the coarse pass.
 //
-// Keys: arrows / left-drag orbit, shift+arrows / right-drag pan, W S + -
-// and the wheel dolly, Home or R resets, L cycles camera / light 1 / light 2
-// ..., 1..9 select a light and 0 the camera (a selected light moves with the
-// same keys and drags instead of the camera), P switches the profile, V
-// switches between true colour and the 8514/A palette, F12 saves a
-// screenshot, Esc quits.
+// The first frame is the scene's own camera (the listing's eye looking at
+// its window's centre, the window framed at 512 x 512) or the camera the
+// flags give (src/cli/camera_flags.h); the camera turns about the centre of
+// the scene's objects (--pivot), which so stays on its pixel of the picture.
+//
+// Keys: arrows / left-drag orbit, shift+arrows / right-drag pan, I O and the
+// wheel dolly, Home or R resets, L cycles camera / light 1 / light 2 ... (a
+// selected light moves with the same keys and drags instead of the camera),
+// P switches the profile, V switches between true colour and the 8514/A
+// palette, C prints the camera as flags and appends it to the camera file;
+// as in every window: S F12 screenshot, + - 1..8 zoom, F11, Esc quits.
 //
 // --bench N renders N frames headless along an orbit and prints the first
 // coarse pass's latency and the frame rates (docs/prime/interactive.md).
@@ -27,10 +32,12 @@
 #include "palette/prime/export.h"
 #include "palette/window/live_rgb_frame.h"
 #include "palette/window/screen_window.h"
+#include "src/cli/camera_flags.h"
 #include "src/cli/commands.h"
 #include "src/cli/prime/display_options.h"
 #include "src/cli/prime/render_options.h"
 #include "src/prime/render/walk_render.h"
+#include "src/prime/scene/object_bvh.h"
 #include "src/render/progressive.h"
 #include "src/render/walk_controller.h"
 
@@ -156,8 +163,26 @@ int runBench(const Scene& scene, const RenderSettings& settings, const OrbitView
   return 0;
 }
 
+// The centre of the box round the scene's objects (as the set operations
+// make them): what the walk turns about. The window's centre when the scene
+// has no bounded object.
+Vec3 sceneCentre(const Scene& scene, const Vec3& otherwise) {
+  const Aabb all = ObjectBvh(scene, ObjectBvh::ObjectBoxes::kSolid).objectsBox();
+  if (all.empty()) return otherwise;
+  return all.centre();
+}
+
+struct WalkWindowOptions {
+  DisplayOptions display;
+  std::string caption, sceneDir, cameraFile = kDefaultCameraFile;
+  bool logFrames = false;
+};
+
 int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitView& start,
-              const DisplayOptions& display, const std::string& caption, bool logFrames) {
+              const WalkWindowOptions& options) {
+  const DisplayOptions& display = options.display;
+  const std::string& caption = options.caption;
+  const bool logFrames = options.logFrames;
   if (auto why = display::headlessReason(display.noWindow))
     throw CLI::ValidationError("walk", "needs a window (" + *why + "); --bench N runs headless");
   std::vector<Vec3> lights;
@@ -204,12 +229,13 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
       });
 
   display::ScreenWindow window(frame, {caption, display.zoom, "."});
-  std::fprintf(stderr,
-               "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
-               "right-drag pan, I O wheel dolly, Home R reset, L lights, P profile, V palette "
-               "view; as in every window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc "
-               "quits\n",
-               window.nativeId(), start.width, start.height);
+  std::fprintf(
+      stderr,
+      "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
+      "right-drag pan, I O wheel dolly, Home R reset, L lights, P profile, V palette "
+      "view, C camera; as in every window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc "
+      "quits\n",
+      window.nativeId(), start.width, start.height);
   auto stateOf = [&] {
     return WalkState{ctl.view(), ctl.lights(), profiles[static_cast<std::size_t>(ctl.profile())],
                      ctl.paletteView()};
@@ -251,6 +277,27 @@ int runWindow(const Scene& scene, const RenderSettings& settings, const OrbitVie
     if (e.letter == 'l') return ctl.cycleSelection(), true;
     if (e.letter == 'p') return ctl.nextProfile(), true;
     if (e.letter == 'v') return ctl.togglePaletteView(), true;
+    if (e.letter == 'c') {
+      // The camera as flags that render this very frame with trace, probe,
+      // compare or walk, on stdout; and appended to the camera file.
+      const FreeCameraSettings camera = ctl.view().camera();
+      std::printf("%s\n", cameraFlagsText(camera).c_str());
+      std::fflush(stdout);
+      try {
+        appendCamera(options.cameraFile, camera,
+                     "prime walk " + options.sceneDir + ", profile " +
+                         profileName(profiles[static_cast<std::size_t>(ctl.profile())]) +
+                         (ctl.selectedLight() > 0 || ctl.lights() != lights
+                              ? " (lights moved: not part of the camera)"
+                              : ""));
+        std::fprintf(stderr, "prime: walk: camera appended to %s (prime trace %s --camera %s)\n",
+                     options.cameraFile.c_str(), options.sceneDir.c_str(),
+                     options.cameraFile.c_str());
+      } catch (const std::exception& err) {
+        std::fprintf(stderr, "prime: walk: camera not saved: %s\n", err.what());
+      }
+      return true;
+    }
     return false;  // the window's
   });
 
@@ -292,29 +339,41 @@ void addWalkCommand(CLI::App& app, Action& action) {
       "walk", "Walk around a scene in a window: orbit, pan, dolly, move lights; progressive");
   auto dir = std::make_shared<std::string>();
   auto options = std::make_shared<RenderOptions>();
-  auto display = std::make_shared<DisplayOptions>();
   auto bench = std::make_shared<int>(0);
-  auto logFrames = std::make_shared<bool>(false);
+  auto window = std::make_shared<WalkWindowOptions>();
+  auto pivot = std::make_shared<std::vector<double>>();
   cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--threads", options->settings.threads, "Render threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--bench", *bench,
                   "Headless: render N frames along an orbit and print latency and frame rates")
       ->check(CLI::Range(1, 100000));
-  cmd->add_flag("--log-frames", *logFrames, "Say on stderr when each frame is complete (tests)");
-  addWindowOptions(cmd, *display);
+  cmd->add_flag("--log-frames", window->logFrames,
+                "Say on stderr when each frame is complete (tests)");
+  cmd->add_option("--pivot", *pivot,
+                  "The point the camera turns about (default: the centre of the scene's objects)")
+      ->expected(3)
+      ->allow_extra_args(false);
+  cmd->add_option("--camera-file", window->cameraFile,
+                  "Where the C key appends the camera (default: prime-cameras.txt here)");
+  addWindowOptions(cmd, window->display);
   addRenderOptions(cmd, *options, false);  // one ray per pixel: no sampling options
   cmd->callback([=, &action] {
     action = [=] {
-      finishRenderOptions(*options);
+      // A free camera is 512 x 512 unless --size says otherwise (T41).
+      finishRenderOptions(*options, 512);
       RenderSettings settings = options->settings;
-      // Without free-camera options: the listing's window framed at 512 x 512 (T41).
+      // Without free-camera options: the listing's window framed at 512 x 512.
       if (!settings.camera.free)
         settings.camera.free = framedListingWindow(settings.camera, 512, 512);
       const Scene scene = prepareScene(*dir, options->model);
-      const OrbitView start = OrbitView::from(*settings.camera.free);
+      const Vec3 centre = pivot->size() == 3 ? Vec3{(*pivot)[0], (*pivot)[1], (*pivot)[2]}
+                                             : sceneCentre(scene, settings.camera.free->lookAt);
+      const OrbitView start = OrbitView::from(*settings.camera.free, centre);
       if (*bench > 0) return runBench(scene, settings, start, *bench);
-      return runWindow(scene, settings, start, *display, *dir, *logFrames);
+      WalkWindowOptions w = *window;
+      w.caption = w.sceneDir = *dir;
+      return runWindow(scene, settings, start, w);
     };
   });
 }

@@ -106,8 +106,8 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
   });
 }
 
-void finishRenderOptions(RenderOptions& o) {
-  applyCameraOptions(o.camera, o.settings.camera);
+void finishRenderOptions(RenderOptions& o, int freeSide) {
+  applyCameraOptions(o.camera, o.settings.camera, freeSide);
   // R10: a window of no size casts every primary ray in one direction (or
   // none); the listing would have drawn one flat colour and exited 0. The
   // window runs across from --window-left to --window-right, and down from

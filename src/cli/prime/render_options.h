@@ -29,8 +29,9 @@ struct RenderOptions {
 // `sampling`: also the options of a pixel's several rays (--samples, --adaptive,
 // --jitter, --statistical and theirs); `walk` takes one ray per pixel.
 void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling = true);
-// Copies the parsed vectors into o.settings.
-void finishRenderOptions(RenderOptions& o);
+// Copies the parsed vectors into o.settings; a free camera's default size is
+// `freeSide` x `freeSide` (applyCameraOptions).
+void finishRenderOptions(RenderOptions& o, int freeSide = 769);
 // Loads the scene, after modelling it (`model`: --model) or checking that its
 // databases are up to date (else an InputError saying what to run).
 Scene prepareScene(const std::string& dir, bool model);

@@ -1,5 +1,6 @@
 #include "src/prime/scene/object_bvh.h"
 
+#include <cmath>
 #include <cstddef>
 
 namespace prime {
@@ -119,6 +120,17 @@ std::vector<std::vector<Vec3>> ObjectBvh::primitiveHullsOfObjects(const Scene& s
 ObjectBvh::ObjectBvh(const Scene& scene, ObjectBoxes objectBoxes) {
   for (const auto& p : scene.prims) primBoxes_.push_back(primitiveBox(p));
   bvh_ = Bvh(boxesOfObjects(scene, primBoxes_, objectBoxes));
+}
+
+Aabb ObjectBvh::objectsBox() const {
+  Aabb all;
+  for (const Aabb& b : bvh_.boxes()) {
+    if (b.empty()) continue;
+    bool finite = true;
+    for (int i = 0; i < 3; ++i) finite = finite && std::isfinite(b.lo[i]) && std::isfinite(b.hi[i]);
+    if (finite) all.add(b);
+  }
+  return all;
 }
 
 }  // namespace prime

@@ -38,6 +38,9 @@ class ObjectBvh {
   const Aabb& objectBox(int object) const { return bvh_.box(object); }
   std::span<const Aabb> objectBoxes() const { return bvh_.boxes(); }
   const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
+  // The union of the objects' finite boxes (empty when no object is bounded):
+  // what `prime walk` turns about by default is its centre.
+  Aabb objectsBox() const;
   // The box of every primitive of every object's CSG tree (not the bounds),
   // each within its object's box: a ray that meets none of them meets no
   // object. Tighter than the object boxes, for the primary-ray mask.

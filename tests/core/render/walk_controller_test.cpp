@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -55,6 +56,53 @@ TEST(OrbitView, OrbitPanDollyByHand) {
   expectVec(p.eye(), {500 + 10 * px, 500, -1500});
   p.dolly(0.5);
   expectVec(p.eye(), {500 + 10 * px, 500, -750});
+}
+
+// The screen point of `p` in the view's picture (column, row; centres at +0.5).
+std::array<double, 2> projected(const OrbitView& v, const Vec3& p) {
+  const FreeCamera c(v.camera());
+  const Vec3 r = p - v.eye();
+  const double z = dot(r, c.forward());
+  const double pixel = 2.0 * std::tan(0.5 * v.fovY * std::numbers::pi / 180.0) / v.height;
+  return {0.5 * v.width + dot(r, c.right()) / z / pixel,
+          0.5 * v.height - dot(r, c.trueUp()) / z / pixel};
+}
+
+TEST(OrbitView, APivotOffTheTargetStaysOnItsPixelOverAFullOrbit) {
+  // The listing's camera looking at (500, 500, 0), turning about a scene
+  // whose objects are centred at (300, 400, 600), as plate 3's are off the
+  // listing window's centre: the scene's centre stays where it first
+  // appeared on the picture, a full turn round and up and down.
+  const Vec3 centre{300, 400, 600};
+  FreeCameraSettings c;
+  c.eye = {500, 500, -1500};
+  c.lookAt = {500, 500, 0};
+  c.fovY = 36.0;
+  c.width = 512;
+  c.height = 384;
+  OrbitView v = OrbitView::from(c, centre);
+  const auto first = projected(v, centre);
+  const double distance = length(c.eye - centre);
+  for (int step = 0; step < 72; ++step) {
+    v.orbit(5.0, step < 36 ? 1.0 : -1.5);
+    const auto now = projected(v, centre);
+    EXPECT_NEAR(now[0], first[0], 1e-6) << "step " << step;
+    EXPECT_NEAR(now[1], first[1], 1e-6) << "step " << step;
+    EXPECT_NEAR(length(v.eye() - centre), distance, 1e-6);  // a rigid turn
+  }
+  // The turns add up: 72 x 5 degrees of yaw is a whole turn.
+  EXPECT_NEAR(std::remainder(v.yaw, 360.0), 0.0, 1e-9);
+  // Panning takes the pivot along.
+  const Vec3 pivotBefore = v.pivot, targetBefore = v.target;
+  v.pan(10, 0);
+  EXPECT_NEAR(length(v.pivot - pivotBefore), 10 * v.pixelAtTarget(), 1e-9);
+  expectVec(v.pivot - pivotBefore, v.target - targetBefore);
+  // Turning about the target itself is the plain orbit.
+  OrbitView plain = OrbitView::from(c), pivoted = OrbitView::from(c, c.lookAt);
+  plain.orbit(33.0, 12.0);
+  pivoted.orbit(33.0, 12.0);
+  EXPECT_EQ(plain.eye(), pivoted.eye());
+  EXPECT_EQ(plain.target, pivoted.target);
 }
 
 TEST(WalkController, EveryMoveBumpsTheGenerationAndResetRestores) {

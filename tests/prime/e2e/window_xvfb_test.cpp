@@ -438,8 +438,10 @@ TEST_F(XvfbTest, WalkOrbitsWithKeysAndDragAndResetsWithHome) {
   sphere(s);
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
   ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
+  // Turning about a point off the sphere (its own centre would show the same
+  // sphere from every side).
   ChildProcess walk({PRIME_EXE, "walk", s.path().string(), "--size", "96", "72", "--threads", "2",
-                     "--log-frames"},
+                     "--log-frames", "--pivot", "500", "500", "0"},
                     env());
   ASSERT_TRUE(walk.waitForErr("frame 1 done", 60000)) << walk.err();
   const std::string id = windowId(walk.err());
@@ -477,6 +479,51 @@ TEST_F(XvfbTest, WalkOrbitsWithKeysAndDragAndResetsWithHome) {
 
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
+}
+
+// prime walk's C key: the camera the window shows, as flags on stdout and
+// appended to the camera file; `trace --camera FILE` then renders exactly
+// the frame the window showed, pixel for pixel.
+TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
+  prime::test::TempScene out;  // outside the scene: a new file there would make it stale
+  const std::string cameras = out.path("cameras.txt").string();
+  ChildProcess walk({PRIME_EXE, "walk", s.path().string(), "--size", "96", "72", "--threads", "2",
+                     "--log-frames", "--camera-file", cameras},
+                    env());
+  ASSERT_TRUE(walk.waitForErr("frame 1 done", 60000)) << walk.err();
+  const std::string id = windowId(walk.err());
+  ASSERT_FALSE(id.empty()) << walk.err();
+  // Turn, raise and pan: a camera no flag of the scene's own gives.
+  int frame = 1;
+  for (const char* key : {"Right", "Right", "Up", "shift+Left", "i"}) {
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", key}), 0);
+    const std::string done = "frame " + std::to_string(++frame) + " done";
+    ASSERT_TRUE(walk.waitForErr(done, 60000)) << walk.err();
+  }
+  const prime::Image8 shown = stableCapture(run, id, s.path("walk.xwd"));
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
+  ASSERT_TRUE(walk.waitForErr("camera appended to", 20000)) << walk.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
+  // stdout holds the flags; the file holds them too, after a comment.
+  const std::string flags = walk.out().substr(0, walk.out().find('\n'));
+  EXPECT_THAT(flags, HasSubstr("--eye "));
+  EXPECT_THAT(flags, HasSubstr(" --size 96 72"));
+  std::ifstream in(cameras);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(text, HasSubstr("# prime walk "));
+  EXPECT_THAT(text, HasSubstr(flags + "\n"));
+  ASSERT_EQ(run({PRIME_EXE, "trace", s.path().string(), "--camera", cameras, "--true-color-png",
+                 out.path("want.png").string(), "-q", "--no-window"}),
+            0);
+  const prime::Image8 want = prime::readPng(out.path("want.png").string());
+  ASSERT_EQ(want.width, 96);
+  ASSERT_EQ(want.height, 72);
+  EXPECT_EQ(differingPixels(shown, want), 0u) << "the camera file did not give the walk's frame";
 }
 
 // An 800 x 600 screen (G23): the window never grows past it, and fullscreen

@@ -2,10 +2,13 @@
 // arithmetic (src/prime/render/compare.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
+#include "src/geom/orbit_view.h"
 #include "src/prime/render/compare.h"
 #include "src/prime/render/walk_render.h"
+#include "src/prime/scene/object_bvh.h"
 #include "src/render/progressive.h"
 #include "tests/prime/unit/render/small_scene.h"
 
@@ -43,6 +46,45 @@ TEST(WalkRenderer, LastPassEqualsTheRenderAndCoarsePassesFillBlocks) {
         ASSERT_EQ(std::memcmp(img.at(y, x).data(), full.rgb.at(y, x).data(), sizeof(Rgb)), 0)
             << y << " " << x;
   }
+}
+
+// prime walk turns about the centre of the scene's objects: a sphere far off
+// the listing window's centre (as plate 3's are) stays in the picture over a
+// whole turn, where turning about the look-at point loses it.
+TEST(WalkRenderer, TurningAboutTheObjectsCentreKeepsTheSceneInFrame) {
+  test::SmallScene small;
+  const int p = small.prim('S', {120, 120, 120}, {150, 250, 900});
+  small.object(0.6, {0.9, 0.3, 0.2}, p);
+  const Scene& scene = small.scene;
+  const Aabb box = ObjectBvh(scene, ObjectBvh::ObjectBoxes::kSolid).objectsBox();
+  ASSERT_FALSE(box.empty());
+  EXPECT_NEAR(box.centre()[0], 150.0, 1.0);  // the sphere's box, as tight as it is
+  EXPECT_NEAR(box.centre()[2], 900.0, 1.0);
+  const FreeCameraSettings first = framedListingWindow(CameraSettings{}, 48, 48);
+  const WalkRenderer walk(scene, Profile::Listing1991, {});
+  // Pixels showing the sphere (anything but the background) after each of
+  // 36 turns of 10 degrees.
+  auto coverage = [&](OrbitView view) {
+    std::vector<int> shown;
+    for (int step = 0; step < 36; ++step) {
+      view.orbit(10.0, step < 18 ? 1.0 : -1.0);
+      RgbImage img;
+      img.assign(48, 48);
+      TraceStats stats;
+      EXPECT_TRUE(walk.pass(FreeCamera(view.camera()), 1, 1, img, 1, nullptr, {}, stats));
+      int n = 0;
+      for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x) n += img.at(y, x) != scene.background;
+      shown.push_back(n);
+    }
+    return shown;
+  };
+  const std::vector<int> aboutCentre = coverage(OrbitView::from(first, box.centre()));
+  for (std::size_t k = 0; k < aboutCentre.size(); ++k)
+    EXPECT_GT(aboutCentre[k], 20) << "turn " << k << ": the sphere left the picture";
+  // The old pivot, the listing window's centre, loses it (so the check above can fail).
+  const std::vector<int> aboutLookAt = coverage(OrbitView::from(first));
+  EXPECT_EQ(*std::min_element(aboutLookAt.begin(), aboutLookAt.end()), 0);
 }
 
 TEST(WalkRenderer, AnAbandonedPassStopsAtOnce) {

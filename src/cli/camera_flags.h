@@ -1,0 +1,73 @@
+// The free camera's flags, with one meaning for every system (docs/user-
+// guide.md, "Cameras"): --eye X Y Z, --look-at X Y Z, --up X Y Z, --fov DEG
+// (the vertical field of view, the full angle) and --size W H (square
+// pixels), and --camera FILE, a file holding the same flags as text. The
+// geometry is src/geom/free_camera.h's; each system keeps its own way of
+// sampling a pixel. A system's own camera stays its default: a flag that is
+// not given keeps that part of it.
+//
+// A camera file is plain text: one camera per line, written as the flags
+// above (`--eye 500 500 -1500 --look-at 500 500 0 --up 0 1 0 --fov 36.87
+// --size 512 512`); `#` starts a comment; blank lines are skipped. The key C
+// of every window appends the camera it shows, so the last line is the
+// newest: --camera FILE takes the last camera in the file. Numbers are
+// written in the shortest form that reads back to the same double, so a
+// camera written by C renders the very frame it was written from.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/geom/free_camera.h"
+
+namespace prime::cli {
+
+struct CameraFlags {
+  std::vector<double> eye, lookAt, up;
+  double fov = 0.0;  // 0: not given
+  std::vector<int> size;
+  std::string file;  // --camera FILE
+  // Whether any of the five, or a camera file, was given.
+  bool given() const {
+    return !eye.empty() || !lookAt.empty() || !up.empty() || fov > 0.0 || !size.empty() ||
+           !file.empty();
+  }
+  // Whether a flag that makes a free camera was given (PRIME's --eye alone
+  // moves the listing's eye: src/cli/prime/camera_options.h).
+  bool freeGiven() const { return !lookAt.empty() || !up.empty() || fov > 0.0 || !size.empty(); }
+};
+
+// Adds --look-at, --up, --fov, --size and --camera to `cmd`, and --eye unless
+// `eye` is false (PRIME adds its own --eye, which also moves the listing's
+// eye). `what` names the system's own camera in the help ("the scene's viewer").
+void addCameraFlags(CLI::App* cmd, CameraFlags& flags, const std::string& what, bool eye = true);
+// --eye alone, with the system's own help text.
+void addEyeFlag(CLI::App* cmd, CameraFlags& flags, const std::string& help);
+
+// The flags with --camera FILE's values filled in where the command line
+// gave none (the command line's win). Throws io::InputError naming the file,
+// line and word for anything that is not a camera.
+CameraFlags withCameraFile(const CameraFlags& flags);
+
+// The camera the flags (after withCameraFile) make of a system's own
+// camera `own`: each flag given replaces its part; a size without --fov
+// keeps the vertical field of view. Throws CLI::ValidationError for what
+// cannot be a camera (the look-at point at the eye, ...), naming the flag.
+FreeCameraSettings applyCameraFlags(const CameraFlags& flags, const FreeCameraSettings& own);
+
+// The camera as the five flags, each number in the shortest text that reads
+// back to the same double.
+std::string cameraFlagsText(const FreeCameraSettings& camera);
+
+// Appends `camera` (after a `# comment` line, if any) to the camera file
+// `path`, writing the whole file anew (io::OutputFile: all or nothing).
+// Throws io::InputError naming the file.
+void appendCamera(const std::string& path, const FreeCameraSettings& camera,
+                  const std::string& comment);
+
+// The name the windows' C key appends to (the current directory, beside the
+// screenshots): prime-cameras.txt.
+inline constexpr const char* kDefaultCameraFile = "prime-cameras.txt";
+
+}  // namespace prime::cli
