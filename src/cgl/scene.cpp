@@ -25,7 +25,9 @@ io::InputLocation fileOnly(const std::string& path) {
   return where;
 }
 
-Camera makeCamera(const DisplayParameters& display, const std::string& path) {
+}  // namespace
+
+Camera cameraOf(const DisplayParameters& display, const std::string& path) {
   const double sightLength = length(display.sight);
   if (!(sightLength > 0.0))
     throw io::InputError(fileOnly(path), "sight", "a non-zero viewing direction",
@@ -46,6 +48,31 @@ Camera makeCamera(const DisplayParameters& display, const std::string& path) {
   cam.ypath = cam.up * (display.viewportHeight / 512.0);
   return cam;
 }
+
+FreeCameraSettings freeCamera(const DisplayParameters& d) {
+  FreeCameraSettings c;
+  c.eye = d.eye;
+  c.lookAt = d.eye + d.sight;
+  c.up = d.up;
+  c.fovY = 2.0 * std::atan(0.5 * d.viewportHeight / d.dist) * 180.0 / std::numbers::pi;
+  c.width = c.height = 512;
+  return c;
+}
+
+DisplayParameters displayOf(const FreeCameraSettings& c) {
+  DisplayParameters d;
+  d.eye = c.eye;
+  d.sight = c.lookAt - c.eye;
+  d.up = c.up;
+  d.dist = 1.0;
+  // D = s + (x - 256) (w / 512) r + (y - 256) (h / 512) u: H scanlines of
+  // h / 512 each span 2 tan(fov / 2) at distance 1.
+  d.viewportHeight = d.viewportWidth =
+      512.0 * 2.0 * std::tan(0.5 * c.fovY * std::numbers::pi / 180.0) / c.height;
+  return d;
+}
+
+namespace {
 
 // Row-vector matrices (src/math/matrix.h: p' = p M).
 Matrix4 translation(const Vec3& t) {
@@ -480,7 +507,7 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
 Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   Scene scene;
   scene.path = file.path;
-  scene.camera = makeCamera(file.display, file.path);
+  scene.camera = cameraOf(file.display, file.path);
 
   // Surfaces (section 9.4), with their textures (section 10).
   int lastTexture = -1;

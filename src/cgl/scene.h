@@ -21,6 +21,7 @@
 #include "src/cgl/fractal.h"
 #include "src/cgl/primitives.h"
 #include "src/cgl/spline.h"
+#include "src/geom/free_camera.h"
 #include "src/geom/ray.h"
 #include "src/render/picture_buffer.h"
 
@@ -39,6 +40,20 @@ struct Camera {
   // the bottom scanline).
   Ray primaryRay(double x, double y) const;
 };
+
+// The camera of display parameters (section 8.2, Appendix 1 section 6);
+// throws io::InputError naming `path` for a sight of zero or an up vector
+// along it.
+Camera cameraOf(const DisplayParameters& display, const std::string& path);
+
+// The display parameters as a free camera (src/geom/free_camera.h, CGL-D61):
+// eye, eye + sight, up, the vertical field of view of the whole screen
+// (2 atan(viewport height / 2 dist)), 512 x 512.
+FreeCameraSettings freeCamera(const DisplayParameters& display);
+// The display parameters of a free camera whose height H scanlines span its
+// field of view: eye, sight = look-at - eye, up, dist 1, a square viewport of
+// 512 * 2 tan(fov/2) / H (CGL-D61).
+DisplayParameters displayOf(const FreeCameraSettings& camera);
 
 // A texture map's texels as spectra: section 10 sets only the 450, 550 and
 // 600 nm samples (indices 7, 17, 22), so those three are kept per texel.

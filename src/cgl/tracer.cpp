@@ -475,7 +475,16 @@ void Tracer::recordHit(ProbeRay& pr, const Hit& hit, const Vec3& point, const Ve
 }
 
 Rgb8 Tracer::screenPoint(double x, double y, TraceStats& stats, ProbeReport* probe) const {
-  const Ray ray = scene_.camera.primaryRay(x, y);
+  return tracePrimary(scene_.camera, x, y, stats, probe);
+}
+
+Rgb8 Tracer::screenPoint(const Camera& camera, double x, double y, TraceStats& stats) const {
+  return tracePrimary(camera, x, y, stats, nullptr);
+}
+
+Rgb8 Tracer::tracePrimary(const Camera& camera, double x, double y, TraceStats& stats,
+                          ProbeReport* probe) const {
+  const Ray ray = camera.primaryRay(x, y);
   // traceRay's steps, without its copy of the background spectrum for a
   // miss: the pixel of a primary ray that misses is the background RGB.
   const std::size_t probeIndex = startRay(ray, 0, RayKind::Primary, stats, probe);

@@ -136,6 +136,8 @@ class Tracer {
   // The RGB of a primary ray through the screen point (x, y): the background
   // exactly when it misses everything (CGL-Q49), else ToRGB(Trace(ray, 0)).
   Rgb8 screenPoint(double x, double y, TraceStats& stats, ProbeReport* probe = nullptr) const;
+  // The same through another camera (`prime walk`'s camera of the moment).
+  Rgb8 screenPoint(const Camera& camera, double x, double y, TraceStats& stats) const;
   // Trace(ray, level) of Figure 41; `kind` is for the statistics and probe.
   Spectrum trace(const Ray& ray, int level, RayKind kind, TraceStats& stats,
                  ProbeReport* probe) const;
@@ -158,6 +160,8 @@ class Tracer {
   int shadowed(const Ray& ray, double tMax, TraceStats& stats) const;
 
  private:
+  Rgb8 tracePrimary(const Camera& camera, double x, double y, TraceStats& stats,
+                    ProbeReport* probe) const;
   bool intersectList(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
   bool intersectBvh(const Ray& ray, double tMax, Hit& hit, TraceStats& stats) const;
   // Trace: startRay (the count, the probe's record: its index), Intersect,

@@ -113,7 +113,7 @@ void addEyeFlag(CLI::App* cmd, CameraFlags& flags, const std::string& help) {
 }
 
 void addCameraFlags(CLI::App* cmd, CameraFlags& flags, const std::string& what, bool eye) {
-  const std::string keeps = " (default: " + what + "'s)";
+  const std::string keeps = " (default: " + what + ")";
   if (eye) addFlag(cmd, flags, kShapes[0], "Camera: the eye's position" + keeps);
   addFlag(cmd, flags, kShapes[1], "Camera: the point looked at" + keeps);
   addFlag(cmd, flags, kShapes[2], "Camera: the up direction" + keeps);

@@ -21,6 +21,5 @@ void addQuantizeCommand(CLI::App& app, Action& action);  // cmd_quantize.cpp (ev
 void addCheckCommand(CLI::App& app, Action& action);     // cmd_check.cpp
 void addNewCommand(CLI::App& app, Action& action);       // cmd_new.cpp
 void addCompareCommand(CLI::App& app, Action& action);   // cmd_compare.cpp
-void addWalkCommand(CLI::App& app, Action& action);      // cmd_walk.cpp
 
 }  // namespace prime::cli

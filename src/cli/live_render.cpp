@@ -92,7 +92,8 @@ void addWindowFitOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, b
 }
 }  // namespace
 
-void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace) {
+void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace,
+                          bool wait) {
   cmd->add_flag("--no-window", o->noWindow,
                 "Do not open a window (also the case when there is no DISPLAY)");
   cmd->add_option("--zoom", o->zoom,
@@ -100,6 +101,7 @@ void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, 
                   "it)")
       ->check(CLI::Range(1, 8));
   addWindowFitOptions(cmd, o, pace);
+  if (!wait) return;
   cmd->add_flag("--no-wait", o->noWait,
                 "Close the window when the render is done instead of waiting for Esc");
 }

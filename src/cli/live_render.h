@@ -41,9 +41,11 @@ struct LiveOptions {
 };
 
 // The window flags of a command that renders live, for every system:
-// --no-window, --zoom, --fullscreen, --scale, --no-wait, and --pace when
-// `pace` (a render to watch).
-void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace);
+// --no-window, --zoom, --fullscreen, --scale, --no-wait (unless `wait` is
+// false: a window that is the command, as walk's), and --pace when `pace` (a
+// render to watch).
+void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, bool pace,
+                          bool wait = true);
 
 // The value of --pace: a number of rows a second (> 0), or "1991" (G24).
 // Sets o.pace or o.pace1991; a CLI::ValidationError for anything else.

@@ -109,7 +109,7 @@ const std::vector<Command>& commands() {
       {{"check"}, cli::addCheckCommand},
       {{"new"}, cli::addNewCommand},
       {{"compare"}, cli::addCompareCommand},
-      {{"walk"}, cli::addWalkCommand},
+      {{"walk"}, nullptr, cli::addWalkVerb},
       {{"cgl-splines"}, cli::cgl::addSplinesCommand},
       {{"cook"}, cli::cgl::addCookCommand},
       {{"tovector"}, cli::cgl::addTovectorCommand},

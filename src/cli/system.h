@@ -19,6 +19,7 @@
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
 #include "src/cli/quantize_options.h"
+#include "src/cli/walk.h"
 
 namespace prime::display {
 class LiveFrame;
@@ -120,6 +121,9 @@ struct System {
   // before parsing (CGL's 1985 call statement: `trace -yh 511 -d 3 scene`);
   // arguments from `first` on. Null: none.
   void (*callStatement)(std::vector<std::string>& args, std::size_t first);
+  // walk's system part (src/cli/walk.h): the system's own flags (its camera
+  // flags among them) and the scene to walk. Null: the system has no walk.
+  WalkFactory (*walk)(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);
 };
 
 // Every system, PRIME first (the default for a directory or nothing).
@@ -139,6 +143,12 @@ void addBenchVerb(CLI::App& app, Action& action, const System& system);
 void addExportPovVerb(CLI::App& app, Action& action, const System& system);
 void addExportVerb(CLI::App& app, Action& action, const System& system);
 void addViewVerb(CLI::App& app, Action& action, const System& system);
+void addWalkVerb(CLI::App& app, Action& action, const System& system);  // src/cli/walk.cpp
+
+// For the verbs: --format (checked; systemFor() read it before parsing), and
+// the help's last lines naming whose options these are.
+void addFormatOption(CLI::App* cmd, const std::string& what);
+std::string systemFooter(const System& system, const std::string& verb);
 
 // The shared skeleton of `prime trace`.
 int runTrace(TraceJob& job, const TraceFlags& flags);

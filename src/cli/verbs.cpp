@@ -30,6 +30,15 @@ std::string systemNames() {
   return s;
 }
 
+CLI::App* addVerb(CLI::App& app, const std::string& verb, const std::string& what,
+                  const System& system) {
+  auto* cmd = app.add_subcommand(verb, what);
+  cmd->footer(systemFooter(system, verb));
+  return cmd;
+}
+
+}  // namespace
+
 // --format, on every verb: one of the systems (the one chosen, whose flags
 // follow; systemFor() read it before the command line was parsed).
 // The value was read by systemFor() before parsing: here it is only checked.
@@ -55,15 +64,6 @@ std::string systemFooter(const System& system, const std::string& verb) {
          (picture ? "pictures" : "scenes") + " take their own: prime " + verb + " " +
          (picture ? "PICTURE" : "SCENE") + " --help names one (" + others + ").";
 }
-
-CLI::App* addVerb(CLI::App& app, const std::string& verb, const std::string& what,
-                  const System& system) {
-  auto* cmd = app.add_subcommand(verb, what);
-  cmd->footer(systemFooter(system, verb));
-  return cmd;
-}
-
-}  // namespace
 
 const System* findSystem(std::string_view name) {
   for (const System& sys : systems())

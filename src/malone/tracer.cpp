@@ -29,15 +29,28 @@ Tracer::Tracer(const Scene& scene, TraceSettings settings) : scene_(scene), sett
   bvh_ = Bvh(std::move(boxes));
 }
 
-MRay Tracer::primaryRay(int X, int Y) const {
-  const Viewer& v = scene_.viewer;
+namespace {
+// Section 1.6: the ray through v(alpha, beta), `forward` = (l - e)/|l - e|.
+MRay rayThrough(const Viewer& v, const Vec3& forward, int X, int Y) {
   const double alpha = (2.0 * X - v.xRes) / v.xRes;
   const double beta = -(2.0 * Y - v.yRes) / v.yRes;
   // v(alpha, beta) - e = (l - e)/|l - e| + alpha x + beta y.
   MRay ray;
   ray.o = v.eye;
-  ray.d = normalized(forward_ + v.x * alpha + v.y * beta);
+  ray.d = normalized(forward + v.x * alpha + v.y * beta);
   return ray;
+}
+}  // namespace
+
+MRay Tracer::primaryRay(int X, int Y) const {
+  return rayThrough(scene_.viewer, forward_, X, Y);
+}
+
+Rgb Tracer::pixel(const Viewer& viewer, int X, int Y, TraceStats& stats) const {
+  const MRay ray = rayThrough(viewer, normalized(viewer.lookAt - viewer.eye), X, Y);
+  ++stats.primaryRays;
+  if (settings_.debug != TraceSettings::Debug::None) return debugValue(ray, stats);
+  return trace(ray, 1, 1.0, 1.0, stats, nullptr);
 }
 
 Tracer::Hit Tracer::nearest(const MRay& ray, TraceStats& stats) const {

@@ -50,6 +50,9 @@ class Tracer {
   // With `probe`, every ray, hit, light and returned colour is recorded
   // (src/cli/malone/cmd_probe.cpp prints them).
   Rgb pixel(int X, int Y, TraceStats& stats, Probe* probe = nullptr) const;
+  // The same through another viewer (`prime walk`'s camera of the moment):
+  // the colour pixel(X, Y) gives when the scene's viewer is `viewer`.
+  Rgb pixel(const Viewer& viewer, int X, int Y, TraceStats& stats) const;
   // trace(ray, depth, weight, index): the primary ray has depth 1, weight 1
   // and index 1.
   Rgb trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,

@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include "src/render/progressive.h"
+
 namespace prime {
 
 int startThreads(std::vector<std::thread>& pool, int count, const std::function<void(int)>& fn) {
@@ -114,6 +116,37 @@ RowsRun renderRows(int rows, int threads,
   run.aborted = rowsDone.load() < rows;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
+}
+
+bool progressivePass(int width, int height, int block, int firstBlock, int threads,
+                     const std::atomic<bool>* abandon,
+                     const std::function<void(int row0, int rows)>& rowsDone,
+                     const std::function<Rgb(int row, int column, int thread)>& sample,
+                     RgbImage& out) {
+  const int blockRows = (height + block - 1) / block;
+  auto renderRow = [&](int br, int thread) -> std::uint64_t {
+    std::uint64_t sampled = 0;
+    const int y0 = br * block, y1 = std::min(height, y0 + block);
+    for (int x0 = 0; x0 < width; x0 += block) {
+      if (!sampledInEarlierPass(y0, x0, block, firstBlock)) {
+        out.at(y0, x0) = sample(y0, x0, thread);
+        ++sampled;
+      }
+      const Rgb c = out.at(y0, x0);
+      const int x1 = std::min(width, x0 + block);
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) out.at(y, x) = c;
+    }
+    return sampled;
+  };
+  RowCallbacks cb;
+  cb.abort = abandon;
+  if (rowsDone)
+    cb.rowDone = [&](int br) {
+      const int y0 = br * block;
+      rowsDone(y0, std::min(height, y0 + block) - y0);
+    };
+  return !renderRows(blockRows, threads, renderRow, cb).aborted;
 }
 
 }  // namespace prime

@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "src/render/rgb_image.h"
+
 namespace prime {
 
 struct RowCallbacks {
@@ -85,5 +87,19 @@ int threadCount(int requested, int rows);
 RowsRun renderRows(int rows, int threads,
                    const std::function<std::uint64_t(int row, int thread)>& renderRow,
                    const RowCallbacks& callbacks = {});
+
+// One pass of a walk's coarse-to-fine frame (src/render/progressive.h, T38)
+// over the shared scheduler: for every block x block block of the width x
+// height picture, sample(row, column, thread) gives the colour of its
+// top-left pixel (unless an earlier pass sampled it: firstBlock is the
+// frame's coarsest) and the block takes it. rowsDone(row0, rows) runs on
+// the calling thread when picture rows row0 .. row0+rows-1 are final for this
+// pass. Returns false when `abandon` stopped it. The last pass (block 1)
+// samples each pixel once over the frame's passes.
+bool progressivePass(int width, int height, int block, int firstBlock, int threads,
+                     const std::atomic<bool>* abandon,
+                     const std::function<void(int row0, int rows)>& rowsDone,
+                     const std::function<Rgb(int row, int column, int thread)>& sample,
+                     RgbImage& out);
 
 }  // namespace prime

@@ -24,6 +24,7 @@ extern const System kSystem{"cgl",
                             addExportOptions,
                             addViewOptions,
                             isPicture,
-                            translateCallStatement};
+                            translateCallStatement,
+                            addWalkOptions};
 
 }  // namespace prime::cli::cgl

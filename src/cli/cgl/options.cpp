@@ -24,7 +24,7 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
   cmd->add_flag("--linear-search", o.linearSearch,
                 "Test the object list in order for every ray, as the package did (the same "
                 "pixels, slower; operation counts as the document's program made them)");
-  addCameraFlags(cmd, o.camera, "the scene's display parameters");
+  addCameraFlags(cmd, o.camera, "the scene's display parameters, section 6");
   if (!withParameters) return;
   const std::string g =
       "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
@@ -73,29 +73,14 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
-
 void applyCamera(const CameraFlags& flags, prime::cgl::SceneFile& file) {
-  auto& d = file.display;
-  FreeCameraSettings own;
-  own.eye = d.eye;
-  own.lookAt = d.eye + d.sight;
-  own.up = d.up;
-  own.fovY = 2.0 * std::atan(0.5 * d.viewportHeight / d.dist) / kDegree;
-  own.width = own.height = 512;
   const CameraFlags given = withCameraFile(flags);
-  const FreeCameraSettings c = applyCameraFlags(given, own);
+  const FreeCameraSettings c = applyCameraFlags(given, prime::cgl::freeCamera(file.display));
   if (c.width > 512 || c.height > 512)
     throw CLI::ValidationError("--size",
                                "the CGL package's screen is 512 x 512 (section 8.2); got " +
                                    std::to_string(c.width) + " x " + std::to_string(c.height));
-  d.eye = c.eye;
-  d.sight = c.lookAt - c.eye;
-  d.up = c.up;
-  d.dist = 1.0;
-  // D = s + (x - 256) (w / 512) r + (y - 256) (h / 512) u: H scanlines of
-  // h / 512 each span 2 tan(fov / 2) at distance 1.
-  d.viewportHeight = d.viewportWidth = 512.0 * 2.0 * std::tan(0.5 * c.fovY * kDegree) / c.height;
+  file.display = prime::cgl::displayOf(c);
   if (!given.size.empty()) {
     auto& p = file.program;
     p.xleft = 256 - c.width / 2;

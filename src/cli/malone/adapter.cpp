@@ -12,9 +12,17 @@ bool recognises(const std::string&, bool isFile, std::string_view head) {
 }
 }  // namespace
 
-extern const System kSystem{
-    "malone",        "Malone's ray tracer (1995)", recognises, addTraceOptions, addProbeOptions,
-    addBenchOptions, addExportPovOptions,          nullptr,    nullptr,         nullptr,
-    nullptr};
+extern const System kSystem{"malone",
+                            "Malone's ray tracer (1995)",
+                            recognises,
+                            addTraceOptions,
+                            addProbeOptions,
+                            addBenchOptions,
+                            addExportPovOptions,
+                            nullptr,
+                            nullptr,
+                            nullptr,
+                            nullptr,
+                            addWalkOptions};
 
 }  // namespace prime::cli::malone

@@ -10,5 +10,6 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
 ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags);
 void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp
 void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
+WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);  // cmd_walk.cpp
 
 }  // namespace prime::cli::malone

@@ -31,7 +31,7 @@ void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
           CLI::IsMember({"ambient", "diffuse", "specular", "shadows", "reflection", "refraction"}));
   cmd->add_flag("--linear-search", o.trace.linearSearch,
                 "Test every primitive for every ray, as the original did (same pixels, slower)");
-  addCameraFlags(cmd, o.camera, "the scene's viewer");
+  addCameraFlags(cmd, o.camera, "the scene's viewer, 102");
 }
 
 prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {

@@ -25,8 +25,9 @@ void addCameraOptions(CLI::App* cmd, CameraOptions& o) {
 void addFreeCameraOptions(CLI::App* cmd, CameraOptions& o) {
   o.freeOptions = true;
   addCameraFlags(cmd, o.flags,
-                 "a free camera at the listing's eye, looking at its window's centre 500 500 0 "
-                 "with up 0 1 0 and the field of view that frames the window, 769 x 769",
+                 "the listing's camera; any of these makes a free camera at --eye looking at the "
+                 "window's centre 500 500 0, up 0 1 0, the field of view that frames the window, "
+                 "769 x 769 (walk: 512 x 512)",
                  false);
   auto* frame = cmd->add_flag("--frame-listing-window", o.frameListingWindow,
                               "Free camera that frames the listing's world window (0..1000 x "

@@ -1,5 +1,5 @@
 // PRIME's parts of the shared verbs (src/cli/system.h); its own commands
-// (model, dump, diff, palette, plate1, stress, check, new, compare, walk) are
+// (model, dump, diff, palette, plate1, stress, check, new, compare) are
 // in src/cli/commands.h. src/cli/prime/adapter.cpp is the system's row.
 #pragma once
 #include "src/cli/system.h"
@@ -12,5 +12,6 @@ void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp: time
 void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
 void addExportOptions(CLI::App* cmd, Action& action);     // cmd_export.cpp: graph file -> PNG
 void addViewOptions(CLI::App* cmd, Action& action);       // cmd_view.cpp
+WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);  // cmd_walk.cpp
 
 }  // namespace prime::cli

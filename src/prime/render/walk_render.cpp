@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/render/progressive.h"
+#include "src/render/render_rows.h"
 
 namespace prime {
 
@@ -37,34 +37,17 @@ bool WalkRenderer::passWith(const Tracer& tracer, const FreeCamera& camera, int 
                             const std::function<void(int, int)>& rowsDone,
                             TraceStats& stats) const {
   const int w = camera.columns(), h = camera.rows();
-  const int blockRows = (h + block - 1) / block;
-  const int n = threadCount(threads, blockRows);
-  std::vector<TraceStats> perThread(static_cast<std::size_t>(n));
-  auto renderRow = [&](int br, int thread) -> std::uint64_t {
-    TraceStats& s = perThread[static_cast<std::size_t>(thread)];
-    const std::uint64_t before = s.rays();
-    const int y0 = br * block, y1 = std::min(h, y0 + block);
-    for (int x0 = 0; x0 < w; x0 += block) {
-      if (!sampledInEarlierPass(y0, x0, block, firstBlock)) {
-        out.at(y0, x0) = tracer.castRay(camera.primaryRay(y0, x0), 0, s);
-      }
-      const Rgb c = out.at(y0, x0);
-      const int x1 = std::min(w, x0 + block);
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) out.at(y, x) = c;
-    }
-    return s.rays() - before;
-  };
-  RowCallbacks cb;
-  cb.abort = abandon;
-  if (rowsDone)
-    cb.rowDone = [&](int br) {
-      const int y0 = br * block;
-      rowsDone(y0, std::min(h, y0 + block) - y0);
-    };
-  const RowsRun run = renderRows(blockRows, n, renderRow, cb);
+  std::vector<TraceStats> perThread(
+      static_cast<std::size_t>(threadCount(threads, (h + block - 1) / block)));
+  const bool done = progressivePass(
+      w, h, block, firstBlock, threads, abandon, rowsDone,
+      [&](int row, int column, int thread) {
+        return tracer.castRay(camera.primaryRay(row, column), 0,
+                              perThread[static_cast<std::size_t>(thread)]);
+      },
+      out);
   for (const TraceStats& s : perThread) stats += s;
-  return !run.aborted;
+  return done;
 }
 
 }  // namespace prime

@@ -39,6 +39,8 @@ SHARED = {
               "-q", "--no-window", "--zoom", "--fullscreen", "--scale", "--pace", "--no-wait"],
     "probe": ["--format", "--pixel", "--json"],
     "bench": ["--format"],
+    "walk": ["--format", "--threads", "--bench", "--pivot", "--camera-file", "--no-window",
+             "--zoom", "--fullscreen", "--eye", "--look-at", "--up", "--fov", "--size", "--camera"],
     "export-pov": ["--format"],
 }
 # Each system's own flags that must keep one name across systems.

@@ -526,6 +526,70 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
   EXPECT_EQ(differingPixels(shown, want), 0u) << "the camera file did not give the walk's frame";
 }
 
+// Malone's and CGL's walks: the same keys, and C's camera given to `trace
+// --camera` renders the frame the window showed (CGL: with --aalevel 0, the
+// walk's one ray per pixel, in the --size window in the middle of its
+// 512 x 512 frame).
+TEST_F(XvfbTest, MaloneAndCglWalksHandTheirCameraToTrace) {
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  const fs::path scenes = fs::path(PRIME_SCENES).parent_path();
+  struct Case {
+    std::string scene;
+    std::vector<std::string> traceExtra;
+    int left, top;  // where the walk's picture is in trace's
+  };
+  const std::vector<Case> cases = {
+      {(scenes / "malone" / "primitives.mal").string(), {}, 0, 0},
+      {(scenes / "cgl" / "ball.cgl").string(), {"--aalevel", "0"}, 256 - 48, 511 - (220 + 71)}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.scene);
+    prime::test::TempScene out;
+    const std::string cameras = out.path("cameras.txt").string();
+    ChildProcess walk({PRIME_EXE, "walk", c.scene, "--size", "96", "72", "--threads", "2",
+                       "--log-frames", "--camera-file", cameras},
+                      env());
+    ASSERT_TRUE(walk.waitForErr("frame 1 done", 60000)) << walk.err();
+    const std::string id = windowId(walk.err());
+    ASSERT_FALSE(id.empty()) << walk.err();
+    const prime::Image8 first = stableCapture(run, id, out.path("first.xwd"));
+    int frame = 1;
+    for (const char* key : {"Left", "Down", "o"}) {
+      EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", key}), 0);
+      const std::string done = "frame " + std::to_string(++frame) + " done";
+      ASSERT_TRUE(walk.waitForErr(done, 60000)) << walk.err();
+    }
+    const prime::Image8 shown = stableCapture(run, id, out.path("walk.xwd"));
+    EXPECT_GT(differingPixels(first, shown), 50u) << "the keys changed nothing";
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
+    ASSERT_TRUE(walk.waitForErr("camera appended to", 20000)) << walk.err();
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+    EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
+    std::vector<std::string> trace = {PRIME_EXE,
+                                      "trace",
+                                      c.scene,
+                                      "--camera",
+                                      cameras,
+                                      "--true-color-png",
+                                      out.path("want.png").string(),
+                                      "-q",
+                                      "--no-window"};
+    trace.insert(trace.end(), c.traceExtra.begin(), c.traceExtra.end());
+    ASSERT_EQ(run(trace), 0);
+    const prime::Image8 whole = prime::readPng(out.path("want.png").string());
+    prime::Image8 want;
+    want.width = 96;
+    want.height = 72;
+    for (int y = 0; y < 72; ++y)
+      for (int x = 0; x < 96; ++x)
+        for (int k = 0; k < 3; ++k)
+          want.rgb.push_back(whole.rgb[(static_cast<std::size_t>(c.top + y) * whole.width +
+                                        static_cast<std::size_t>(c.left + x)) *
+                                           3 +
+                                       static_cast<std::size_t>(k)]);
+    EXPECT_EQ(differingPixels(shown, want), 0u) << "the camera file did not give the walk's frame";
+  }
+}
+
 // An 800 x 600 screen (G23): the window never grows past it, and fullscreen
 // fills it with the picture at the largest whole factor, centred.
 class SmallXvfbTest : public XvfbTest {

@@ -1,0 +1,118 @@
+// prime walk SCENE.cgl: the Waterloo CGL package's part of the shared walk
+// (src/cli/walk.h): the display parameters made a free camera (CGL-D61)
+// that orbits the centre of the object nodes' boxes, each frame traced one
+// ray per pixel through the pixel's corner (aalevel 0, Figure 41) in the
+// W x H window in the middle of the 512 x 512 screen, by CGL's own tracer.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "src/cli/cgl/commands.h"
+#include "src/cli/cgl/options.h"
+#include "src/render/render_rows.h"
+
+namespace prime::cli::cgl {
+
+namespace {
+
+using prime::cgl::Tracer;
+using prime::cgl::TraceStats;
+
+class CglWalkFrame : public WalkFrame {
+ public:
+  CglWalkFrame(const Tracer& tracer, std::string path) : tracer_(tracer), path_(std::move(path)) {}
+  bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
+            const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
+            std::uint64_t& rays) override {
+    const prime::cgl::Camera cam =
+        prime::cgl::cameraOf(prime::cgl::displayOf(camera.settings()), path_);
+    // The window `--size W H` makes (src/cli/cgl/options.h): picture row r,
+    // column c is the screen's scanline yhigh - r, pixel xleft + c.
+    const int xleft = 256 - camera.columns() / 2;
+    const int yhigh = 256 - camera.rows() / 2 + camera.rows() - 1;
+    std::vector<TraceStats> perThread(
+        static_cast<std::size_t>(threadCount(threads, (camera.rows() + block - 1) / block)));
+    const bool done = progressivePass(
+        camera.columns(), camera.rows(), block, firstBlock, threads, abandon, rowsDone,
+        [&](int row, int column, int thread) {
+          const prime::cgl::Rgb8 c = tracer_.screenPoint(
+              cam, xleft + column, yhigh - row, perThread[static_cast<std::size_t>(thread)]);
+          return Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
+        },
+        out);
+    for (const TraceStats& s : perThread) rays += s.rays.rays();
+    return done;
+  }
+
+ private:
+  const Tracer& tracer_;
+  std::string path_;
+};
+
+class CglWalkScene : public WalkScene {
+ public:
+  CglWalkScene(prime::cgl::Scene scene, const prime::cgl::RenderSettings& settings)
+      : scene_(std::move(scene)), tracer_(scene_, prime::cgl::traceSettings(settings)) {}
+  std::vector<std::string> profiles() const override { return {"document"}; }
+  std::unique_ptr<WalkFrame> frame(const WalkView&) const override {
+    return std::make_unique<CglWalkFrame>(tracer_, scene_.path);
+  }
+  // The frame buffer's bytes.
+  void paint(const WalkView&, const RgbImage& image, int row,
+             std::span<std::uint32_t> out) const override {
+    auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(v * 255.0)); };
+    for (int x = 0; x < image.width; ++x) {
+      const Rgb& c = image.at(row, x);
+      out[static_cast<std::size_t>(x)] = byte(c[0]) << 16 | byte(c[1]) << 8 | byte(c[2]);
+    }
+  }
+  std::string cameraNote() const override {
+    return "walk traces one ray per pixel: trace it with --aalevel 0 for this very frame";
+  }
+
+ private:
+  prime::cgl::Scene scene_;
+  Tracer tracer_;  // over scene_: built once
+};
+
+}  // namespace
+
+WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
+  auto o = std::make_shared<CglOptions>();
+  addCglOptions(cmd, *o);
+  return [o]() -> WalkJob {
+    const prime::cgl::SceneFile file = readCgl(*o, o->quiet);
+    prime::cgl::Scene scene = buildCgl(*o, file);
+    const prime::cgl::RenderSettings settings = renderSettings(*o, file);
+    Aabb box;
+    for (const auto& obj : scene.objects) {
+      if (obj.kind == prime::cgl::ObjectKind::Box || obj.box.empty()) continue;
+      bool finite = true;
+      for (int i = 0; i < 3; ++i)
+        finite = finite && std::isfinite(obj.box.lo[i]) && std::isfinite(obj.box.hi[i]);
+      if (finite) box.add(obj.box);
+    }
+    WalkJob job;
+    job.name = o->file;
+    job.camera = prime::cgl::freeCamera(file.display);
+    // The picture the flags' --size asked for (the window they set), else
+    // the whole screen.
+    const CameraFlags given = withCameraFile(o->camera);
+    if (given.size.size() == 2) {
+      job.camera.width = given.size[0];
+      job.camera.height = given.size[1];
+      // freeCamera reads the field of view over 512 scanlines; the flags'
+      // display parameters span it over H.
+      job.camera.fovY = 2.0 *
+                        std::atan(0.5 * file.display.viewportHeight * job.camera.height / 512.0 /
+                                  file.display.dist) *
+                        180.0 / std::numbers::pi;
+    }
+    job.centre = box.empty() ? job.camera.lookAt : box.centre();
+    job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings);
+    return job;
+  };
+}
+
+}  // namespace prime::cli::cgl
