@@ -15,6 +15,7 @@ void addModelCommand(CLI::App& app, Action& action);
 void addDumpCommand(CLI::App& app, Action& action);
 void addDiffCommand(CLI::App& app, Action& action);      // cmd_diff.cpp
 void addPaletteCommand(CLI::App& app, Action& action);   // cmd_palette.cpp
+void addErrataCommand(CLI::App& app, Action& action);    // cmd_errata.cpp
 void addPlate1Command(CLI::App& app, Action& action);    // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);    // cmd_stress.cpp
 void addQuantizeCommand(CLI::App& app, Action& action);  // cmd_quantize.cpp (every system's PNG)

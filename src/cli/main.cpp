@@ -101,6 +101,7 @@ const std::vector<Command>& commands() {
       {{"export"}, nullptr, cli::addExportVerb},
       {{"diff"}, cli::addDiffCommand},
       {{"palette"}, cli::addPaletteCommand},
+      {{"errata"}, cli::addErrataCommand},
       {{"export-pov"}, nullptr, cli::addExportPovVerb},
       {{"bench"}, nullptr, cli::addBenchVerb},
       {{"plate1"}, cli::addPlate1Command},

@@ -345,6 +345,9 @@ class PrimeTrace : public TraceJob {
   }
   void summary(const std::vector<std::string>&) const override {
     printSummary(result_, target_);
+    if (const std::string ids = fixIds(options_->settings.trace.fixes); !ids.empty())
+      std::printf("1991 profile with listing quirks corrected: --fix %s (prime errata)\n",
+                  ids.c_str());
     if (!quantizing_) noteOneIndex(result_);
   }
   double seconds() const override { return result_.seconds; }

@@ -57,7 +57,10 @@ class PrimeWalkScene : public WalkScene {
         settings_(std::move(settings)),
         table_(settings_.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette()) {}
 
-  std::vector<std::string> profiles() const override { return {"1991", "modern", "thesis"}; }
+  std::vector<std::string> profiles() const override {
+    const std::string fixes = fixIds(settings_.trace.fixes);
+    return {fixes.empty() ? "1991" : "1991 --fix " + fixes, "modern", "thesis"};
+  }
   int firstProfile() const override {
     const auto& all = walkProfiles();
     return static_cast<int>(std::find(all.begin(), all.end(), settings_.profile) - all.begin());

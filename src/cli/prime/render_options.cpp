@@ -90,6 +90,19 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
          "what the thesis describes: shadow rays, Hall's model as written, soft shadows "
          "(docs/prime/thesis-profile.md)")
       ->check(CLI::IsMember({"1991", "modern", "thesis"}));
+  cmd->add_option_function<std::string>(
+         "--fix",
+         [&o](const std::string& ids) {
+           try {
+             o.settings.trace.fixes = parseListingFixes(ids);
+           } catch (const std::invalid_argument& e) {
+             throw CLI::ValidationError("--fix", e.what());
+           }
+           o.fixGiven = true;
+         },
+         "1991 profile: correct these listing quirks and no other (K4, K5, K10, K15, K18 or all; "
+         "prime errata lists every K id)")
+      ->type_name("ID[,ID...]");
   cmd->add_flag("--model", o.model, "Build the databases from the text inputs first (prime model)");
   // Combinations no single option can check: usage errors (exit 2) at parse time.
   cmd->parse_complete_callback([&o] {
@@ -98,6 +111,9 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
     if (modes > 1)
       throw CLI::ValidationError("sampling",
                                  "choose one of --samples, --adaptive, --jitter, --statistical");
+    if (o.fixGiven && o.profile != "1991")
+      throw CLI::ValidationError("--fix", "corrects quirks of the 1991 profile; the " + o.profile +
+                                              " profile has its own corrections");
     if (o.profile != "thesis" && (!o.lightRadius.empty() || o.noShadows || o.texel != "both"))
       throw CLI::ValidationError("--light-radius/--no-shadows/--texel",
                                  "only the thesis profile has them (add --profile thesis)");

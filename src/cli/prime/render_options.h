@@ -24,6 +24,7 @@ struct RenderOptions {
   std::vector<double> lightRadius;  // --light-radius R [R ...] (thesis profile)
   bool noShadows = false;           // --no-shadows (thesis profile)
   std::string texel = "both";       // --texel fresnel|both (thesis profile, T8)
+  bool fixGiven = false;            // --fix (1991 profile only)
 };
 
 // `sampling`: also the options of a pixel's several rays (--samples, --adaptive,

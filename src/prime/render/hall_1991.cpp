@@ -107,7 +107,7 @@ HallPrepared prepareHall1991(const HallGeometry& geom, std::span<const HallLight
     const auto k = static_cast<std::size_t>(i);
     // MakeVector(light[i].pt, pt, l): l = pt - light (K10), then UnitVector;
     // a zero l (light at the point) stays zero.
-    Vec3 l = geom.pt - lights[k].pt;
+    Vec3 l = geom.towardsLight ? lights[k].pt - geom.pt : geom.pt - lights[k].pt;
     unitVector(l, l);
     dotHj[k] = dot(n, hj1991(l, geom.v));
     dotHj_[k] = dot(n, hjPrime1991(l, geom.v, indx));
@@ -223,7 +223,7 @@ std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfCol
 
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient, HallSkipping skipping) {
+                     const Rgb& ambient, HallSkipping skipping, bool clampNegative) {
   const auto terms =
       hallTermsRgb1991(hue, surfColor, iSR, iST, sT, geom, lights, ambient, skipping);
   Rgb color{};
@@ -232,6 +232,7 @@ Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, c
     if (color[k] >= 1.0) {  // K15: only >= 1.0 is clamped
       color[k] = 0.999999;
     }
+    if (clampNegative && color[k] < 0.0) color[k] = 0.0;  // --fix K15
   }
   return color;
 }

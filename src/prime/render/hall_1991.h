@@ -48,6 +48,9 @@ struct HallGeometry {
   Vec3 n{};
   Vec3 r{};
   Vec3 t{};
+  // --fix K10: l is light - pt (towards the light) instead of pt - light;
+  // the caller passes v towards the eye too.
+  bool towardsLight = false;
 };
 
 // FSR(surfColor, iL, ang), lines 4078-4114 (K12): with f0 = surfColor and
@@ -152,9 +155,10 @@ double processWavelength1991(int lambda, double surfColor, double kDR, double kD
 // 0.999999; negatives and NaN are NOT clamped (K15).
 // `skipping`: the HallShortcut for the hue's zero coefficients and black
 // returned colours (same pixels; see HallShortcut and HallSkipping).
+// `clampNegative` (--fix K15): negatives become 0 as well.
 Rgb processColor1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR, const Rgb& iST,
                      double sT, const HallGeometry& geom, std::span<const HallLight> lights,
-                     const Rgb& ambient, HallSkipping skipping = {});
+                     const Rgb& ambient, HallSkipping skipping = {}, bool clampNegative = false);
 
 // The terms of all three channels (before ProcessColor's clamp).
 std::array<HallTerms, 3> hallTermsRgb1991(const HallHue& hue, const Rgb& surfColor, const Rgb& iSR,

@@ -4,6 +4,7 @@
 // tracer takes its part.
 #pragma once
 #include "src/prime/geom/csg_1991.h"
+#include "src/prime/render/listing_fixes.h"
 
 namespace prime {
 
@@ -27,6 +28,9 @@ struct Listing1991Options {
   // error (E57), which the original could not render either (docs/prime/deviations.md).
   // false: do every piece of work the listing did (for ray counts and checks).
   bool skipUnneededWork = true;
+  // --fix: the listing quirks corrected on top of the 1991 profile (none:
+  // the listing).
+  ListingFixes fixes;
 };
 
 // Both parts: Tracer1991 takes all of it, TracerModern the RayTreeOptions.

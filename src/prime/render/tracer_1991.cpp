@@ -14,6 +14,17 @@
 namespace prime {
 
 namespace {
+// A normal taken from a primitive's frame to the world's: n (M^-1)^T with
+// row vectors, M^-1 the primitive's inverse matrix (--fix K4, K5).
+Vec3 byInverseTranspose(const Vec3& n, const Matrix4& inverse) {
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i)
+    out[i] = n[0] * inverse[i][0] + n[1] * inverse[i][1] + n[2] * inverse[i][2];
+  return out;
+}
+}  // namespace
+
+namespace {
 constexpr double kInfinity = 1E100;  // Rays module: const double Infinity
 }
 
@@ -93,8 +104,19 @@ Ray Tracer1991::reflectedRay(const Ray& ray, double t, const Vec3& n) const {
     r.d[i] = ray.d[i] - (n[i] * twoDot);
   }
   unitVector(r.d, r.d);
+  if (options_.fixes.k18) return r;  // --fix K18: from the hit point
   for (int i = 0; i < 3; ++i) r.o[i] += r.d[i];
   return r;
+}
+
+// K5: the exit normal as the primitive routine returned it, in the
+// primitive's frame and unnormalised; with --fix K5 in the world frame (the
+// inverse transpose of its matrix) and normalised.
+Vec3 Tracer1991::exitNormal(const TNode& exit) const {
+  if (!options_.fixes.k5) return exit.norm;
+  Vec3 n = byInverseTranspose(exit.norm, scene_.prims[exit.prim].inverse);
+  unitVector(n, n);
+  return n;
 }
 
 // TransmittedRay (6927-7012, K19, K5): refract in, walk through the whole
@@ -128,12 +150,13 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
     }
     ++iterations;
     const TNode& exit = list[1];  // tList->next
-    c1 = dot(tr.d, exit.norm);
+    const Vec3 exitNorm = exitNormal(exit);
+    c1 = dot(tr.d, exitNorm);
     if ((c2 = (1.0 - sqr(indx) * (1.0 - sqr(c1)))) < 0.0) {  // total internal reflection
       ++stats.totalInternalReflections;
       for (int i = 0; i < 3; ++i) {
         tr.o[i] += exit.t * tr.d[i];
-        tr.d[i] += 2.0 * c1 * -exit.norm[i];
+        tr.d[i] += 2.0 * c1 * -exitNorm[i];
         tr.o[i] -= tr.d[i];
       }
       distance += exit.t;
@@ -145,9 +168,10 @@ Ray Tracer1991::transmittedRay(const Ray& ray, const SceneObject& obj, double t,
   }
   if (ok) {
     const TNode& exit = list[1];
+    const Vec3 exitNorm = exitNormal(exit);
     for (int i = 0; i < 3; ++i) {
       tr.o[i] += exit.t * tr.d[i];
-      tr.d[i] = indx * tr.d[i] + (indx * c1 - c2) * -exit.norm[i];
+      tr.d[i] = indx * tr.d[i] + (indx * c1 - c2) * -exitNorm[i];
     }
   }
   for (int i = 0; i < 3; ++i) tr.o[i] += tr.d[i];
@@ -223,7 +247,8 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   const InverseMapResult mapped = inverseMap1991(prim.type, tmpV);
   const InverseMapResult* const uv = &mapped;
   if (uv->noFaceMatched) ++stats.noFaceMatched;
-  Vec3 n = vectorMatrixMul(best.norm, prim.transform);  // K4: forward matrix
+  Vec3 n = vectorMatrixMul(best.norm, prim.transform);                     // K4: forward matrix
+  if (options_.fixes.k4) n = byInverseTranspose(best.norm, prim.inverse);  // --fix K4
   unitVector(n, n);
   if (probe)
     probe->hit(depth, obj.number, best.prim, prim.type, nearest, surfPt, tmpV, n,
@@ -264,9 +289,10 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   }
   const HallHue hue{obj.hue.kDR, obj.hue.kDT, obj.hue.fDR, obj.hue.tT,
                     obj.hue.kRH, obj.hue.kTH, obj.hue.indx};
-  const HallGeometry geom{surfPt, ray.d, n, reflected.d, transmitted.d};
+  const bool k10 = options_.fixes.k10;  // --fix K10: v towards the eye, l towards the light
+  const HallGeometry geom{surfPt, k10 ? -ray.d : ray.d, n, reflected.d, transmitted.d, k10};
   const Rgb color = processColor1991(hue, surfColor, colorReflected, colorTransmitted, sT, geom,
-                                     lights_, scene_.ambient, hallSkipping_);
+                                     lights_, scene_.ambient, hallSkipping_, options_.fixes.k15);
   if (probe) {  // at the hit's depth (depth++ above)
     probe->hallTerms(depth - 1, hallTermsRgb1991(hue, surfColor, colorReflected, colorTransmitted,
                                                  sT, geom, lights_, scene_.ambient));

@@ -64,6 +64,7 @@ class Tracer1991 {
                    int depth) const;
 
   const Scene& scene_;
+  Vec3 exitNormal(const TNode& exit) const;  // K5, --fix K5
   TraceOptions options_;
   ObjectBvh bvh_;                                        // used when options_.skipUnneededWork
   std::vector<std::optional<CsgProgram1991>> programs_;  // per object; none: csg1991 walks the tree
