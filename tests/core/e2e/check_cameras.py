@@ -19,10 +19,12 @@ Run: check_cameras.py PRIME_EXE REPO_ROOT
 import os
 import shutil
 import struct
-import subprocess
 import sys
 import tempfile
 import zlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
+from prime_checks import Checks  # noqa: E402
 
 PRIME, ROOT = sys.argv[1], sys.argv[2]
 SCENES = {
@@ -38,18 +40,8 @@ CAMERAS = {
 }
 OLDER = "--eye 1 2 3 --look-at 0 0 0 --up 0 1 0 --fov 50 --size 32 32"
 
-failures = []
-
-
-def run(args):
-    env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
-    return subprocess.run([PRIME] + args, capture_output=True, text=True, env=env)
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-    return ok
+CHECKS = Checks(PRIME)
+run, check, failures = CHECKS.run, CHECKS.check, CHECKS.failures
 
 
 def png_size(path):

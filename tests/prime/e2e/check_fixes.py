@@ -18,24 +18,16 @@ Run: check_fixes.py PRIME_EXE REPO_ROOT [--table]
 import json
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
+from prime_checks import Checks  # noqa: E402
+
 PRIME, ROOT = sys.argv[1], sys.argv[2]
 TABLE = "--table" in sys.argv
-failures = []
-
-
-def run(args):
-    env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
-    return subprocess.run([PRIME] + args, capture_output=True, text=True, env=env)
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-    return ok
+CHECKS = Checks(PRIME)
+run, check, failures = CHECKS.run, CHECKS.check, CHECKS.failures
 
 
 def pixels(graph):

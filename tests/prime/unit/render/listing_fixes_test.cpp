@@ -63,6 +63,17 @@ TEST(ListingFixes, K18StartsTheReflectedRayAtTheHitPoint) {
   }
 }
 
+// The eye looks along +z at the origin on a face facing it (hall_1991_test.cpp's head-on case).
+HallGeometry facingTheEye() {
+  HallGeometry g;
+  g.pt = {0, 0, 0};
+  g.v = {0, 0, 1};
+  g.n = {0, 0, -1};
+  g.r = {0, 0, -1};  // v - 2(v.n)n
+  g.t = {0, 0, 1};
+  return g;
+}
+
 // K10: l and v turned round. Fixed, Hall's sum is what the listing's code
 // gives when it is handed the corrected vectors (the light mirrored through
 // the point, the view reversed): with the point at the origin the mirror is
@@ -70,12 +81,7 @@ TEST(ListingFixes, K18StartsTheReflectedRayAtTheHitPoint) {
 TEST(ListingFixes, K10TurnsLAndVTowardsTheLightAndTheEye) {
   const HallHue hue{0.5, 1.0, {0.8, 0.8, 0.8}, 0.9, 1.0, 1.0, 2.0};
   const Rgb ia = {0.2, 0.2, 0.2};
-  HallGeometry g;  // the eye looks along +z at a face facing it, the light in front
-  g.pt = {0, 0, 0};
-  g.v = {0, 0, 1};
-  g.n = {0, 0, -1};
-  g.r = {0, 0, -1};
-  g.t = {0, 0, 1};
+  const HallGeometry g = facingTheEye();  // the light in front
   const std::vector<HallLight> lights = {{{0, 0, -10}, {1.0, 0.5, 0.25}}};
   HallGeometry fixed = g;
   fixed.v = -g.v;  // what the tracer passes with --fix K10
@@ -102,12 +108,7 @@ TEST(ListingFixes, K10TurnsLAndVTowardsTheLightAndTheEye) {
 // the positive channel is untouched.
 TEST(ListingFixes, K15ClampsNegativeColoursOnly) {
   const HallHue hue{0.5, 1.0, {0.8, 0.8, 0.8}, 0.9, 1.0, 1.0, 2.0};
-  HallGeometry g;
-  g.pt = {0, 0, 0};
-  g.v = {0, 0, 1};
-  g.n = {0, 0, -1};
-  g.r = {0, 0, -1};
-  g.t = {0, 0, 1};
+  const HallGeometry g = facingTheEye();
   const std::vector<HallLight> lights = {{{0, 0, -10}, {1.0, 0.5, 0.25}}};
   const Rgb ia = {0.2, 0.2, 0.2};
   const Rgb listing =
