@@ -22,7 +22,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
-from prime_checks import Checks  # noqa: E402
+from prime_checks import Checks
 
 PRIME, ROOT = sys.argv[1], sys.argv[2]
 TABLE = "--table" in sys.argv
