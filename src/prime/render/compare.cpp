@@ -1,9 +1,12 @@
 #include "src/prime/render/compare.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <stdexcept>
+#include <tuple>
 
 namespace prime {
 
@@ -51,12 +54,95 @@ RenderComparison compareRenders(const RenderResult& a, const RenderResult& b, in
   return c;
 }
 
+namespace {
+
+std::vector<const ProbeEvent*> eventsOf(const std::vector<ProbeEvent>& all, const char* kind) {
+  std::vector<const ProbeEvent*> out;
+  for (const ProbeEvent& e : all)
+    if (e.kind == kind) out.push_back(&e);
+  return out;
+}
+
+// The value of "key": in a probe event's JSON (a word or a number), or "".
+std::string field(const ProbeEvent* e, const std::string& key) {
+  if (e == nullptr) return "";
+  const std::string k = "\"" + key + "\":";
+  const auto at = e->json.find(k);
+  if (at == std::string::npos) return "";
+  std::size_t b = at + k.size(), end = b;
+  if (b < e->json.size() && e->json[b] == '"')
+    end = e->json.find('"', ++b);
+  else
+    while (end < e->json.size() && e->json[end] != ',' && e->json[end] != '}') ++end;
+  return e->json.substr(b, end - b);
+}
+
+// The steps (TIR loops + 1) of the walk out that made a transmitted ray: the
+// last transmit event before it one level up (the reflected ray's subtree,
+// traced in between, is deeper), or "".
+std::string stepsBefore(const std::vector<ProbeEvent>& all, const ProbeEvent* ray) {
+  const ProbeEvent* last = nullptr;
+  for (const ProbeEvent& e : all) {
+    if (&e == ray) return field(last, "steps");
+    if (e.kind == "transmit" && e.depth == ray->depth - 1) last = &e;
+  }
+  return "";
+}
+
+bool sameEvents(const std::vector<const ProbeEvent*>& x, const std::vector<const ProbeEvent*>& y) {
+  if (x.size() != y.size()) return false;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i]->depth != y[i]->depth || x[i]->text != y[i]->text) return false;
+  return true;
+}
+
+// The class of a differing ray pair (either may be missing).
+std::string classOf(const std::vector<ProbeEvent>& a, const std::vector<ProbeEvent>& b,
+                    const ProbeEvent* x, const ProbeEvent* y) {
+  std::string kind = field(x ? x : y, "kind");
+  if (kind == "transmitted" && x && y && stepsBefore(a, x) != stepsBefore(b, y)) kind = "tir";
+  return kind;
+}
+
+void differingKinds(const std::vector<ProbeEvent>& a, const std::vector<ProbeEvent>& b,
+                    const std::vector<const ProbeEvent*>& ra,
+                    const std::vector<const ProbeEvent*>& rb, RayDivergence& d) {
+  // Rays keyed by (depth, kind, their order among that depth and kind).
+  auto keyed = [](const std::vector<const ProbeEvent*>& rays) {
+    std::map<std::tuple<int, std::string, int>, const ProbeEvent*> out;
+    std::map<std::pair<int, std::string>, int> seen;
+    for (const ProbeEvent* e : rays) {
+      const std::string kind = field(e, "kind");
+      out[{e->depth, kind, seen[{e->depth, kind}]++}] = e;
+    }
+    return out;
+  };
+  const auto ka = keyed(ra), kb = keyed(rb);
+  int shallowest = INT_MAX;
+  std::map<std::string, std::pair<std::string, std::string>> kinds;
+  auto consider = [&](const auto& key, const ProbeEvent* x, const ProbeEvent* y) {
+    if (x && y && x->text == y->text) return;
+    const int depth = std::get<0>(key);
+    if (depth > shallowest) return;
+    if (depth < shallowest) kinds.clear();
+    shallowest = depth;
+    kinds.emplace(classOf(a, b, x, y), std::pair{x ? x->text : "", y ? y->text : ""});
+  };
+  for (const auto& [key, x] : ka) {
+    const auto it = kb.find(key);
+    consider(key, x, it == kb.end() ? nullptr : it->second);
+  }
+  for (const auto& [key, y] : kb)
+    if (!ka.count(key)) consider(key, nullptr, y);
+  for (const char* k : kDivergenceClasses)
+    if (kinds.count(k)) d.kinds.push_back(k);
+  d.rays = std::move(kinds);
+}
+
+}  // namespace
+
 RayDivergence firstDivergence(const std::vector<ProbeEvent>& a, const std::vector<ProbeEvent>& b) {
-  std::vector<const ProbeEvent*> ra, rb;
-  for (const ProbeEvent& e : a)
-    if (e.kind == "ray") ra.push_back(&e);
-  for (const ProbeEvent& e : b)
-    if (e.kind == "ray") rb.push_back(&e);
+  const std::vector<const ProbeEvent*> ra = eventsOf(a, "ray"), rb = eventsOf(b, "ray");
   RayDivergence d;
   d.raysA = static_cast<int>(ra.size());
   d.raysB = static_cast<int>(rb.size());
@@ -68,8 +154,12 @@ RayDivergence firstDivergence(const std::vector<ProbeEvent>& a, const std::vecto
     d.firstDiffering = static_cast<int>(i);
     d.rayA = x ? x->text : "";
     d.rayB = y ? y->text : "";
-    break;
+    d.kind = classOf(a, b, x, y);
+    differingKinds(a, b, ra, rb, d);
+    return d;
   }
+  d.kind = sameEvents(eventsOf(a, "shadow"), eventsOf(b, "shadow")) ? "shading" : "shadow";
+  d.kinds = {d.kind};
   return d;
 }
 

@@ -2,6 +2,7 @@
 // differ, pixel by pixel, and where two probed ray trees part.
 #pragma once
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,23 @@ struct RayDivergence {
   int raysA = 0, raysB = 0;
   int firstDiffering = -1;  // index of the first ray that differs; -1: the rays agree
   std::string rayA, rayB;   // that ray's line in each ("" when the tree has no such ray)
+  // Where the trees part, by kind (kDivergenceClasses): the first differing
+  // ray's kind (primary, reflected, transmitted; "tir" when it is a
+  // transmitted ray whose walk out reflected internally a different number
+  // of times), else "shadow" when only the shadow rays' verdicts differ,
+  // else "shading" (the same rays, other colours).
+  std::string kind;
+  // Every kind whose rays differ at the shallowest depth where any differ,
+  // rays matched by kind, depth and their order among those (so a tree that
+  // casts a reflected ray first does not hide a transmitted one that differs
+  // too), in kDivergenceClasses' order; {kind} when no ray differs.
+  std::vector<std::string> kinds;
+  // For each of `kinds`, its first differing pair of rays (lines as rayA,
+  // rayB; "" for a ray the tree lacks).
+  std::map<std::string, std::pair<std::string, std::string>> rays;
 };
+inline constexpr const char* kDivergenceClasses[] = {"primary", "reflected", "transmitted",
+                                                     "tir",     "shadow",    "shading"};
 RayDivergence firstDivergence(const std::vector<ProbeEvent>& a, const std::vector<ProbeEvent>& b);
 
 }  // namespace prime

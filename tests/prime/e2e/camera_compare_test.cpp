@@ -76,25 +76,54 @@ TEST(Compare, ReportsDifferencesAndWritesThreePicturesSideBySide_T36) {
                     " --divergence-samples 3 --frame-listing-window --size 80 60");
   // --frame-listing-window is not compare's own option: settings go in --a / --b.
   EXPECT_EQ(r.status, 2) << r.output;
-  r = runPrime("compare " + dir + " --a=\"--profile 1991 --size 80 60\" --b=\"--profile modern " +
-               "--size 80 60\" --png " + png + " --divergence-samples 3");
+  // The shipped default scene (the sphere scene has no light), B the 1991
+  // profile with Hall's l and v turned round (--fix in compare's settings).
+  prime::test::TempScene lit;
+  std::filesystem::copy(std::filesystem::path(PRIME_SCENES) / "default", lit.path(),
+                        std::filesystem::copy_options::recursive);
+  r = runPrime(
+      "compare " + lit.path().string() +
+      " --model --a=\"--profile 1991 --size 80 60\" --b=\"--fix K10 --size 80 60\" --png " + png +
+      " --divergence-samples 3");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr(": 80 x 60 pixels"));
   EXPECT_THAT(r.output, HasSubstr("pixels differing: "));
   EXPECT_THAT(r.output, HasSubstr("wrote " + png));
+  // Each ray tree sampled says where it parts, by class (T37).
+  EXPECT_THAT(r.output,
+              testing::ContainsRegex(
+                  R"(pixel [0-9]+ [0-9]+ \[(primary|reflected|transmitted|tir|shadow|shading))"));
+  EXPECT_THAT(r.output, HasSubstr("pixels by where their trees part"));
+  EXPECT_THAT(r.output, testing::Not(HasSubstr("pixels differing: 0 ")));
   const prime::Image8 img = prime::readPng(png);
   EXPECT_EQ(img.width, 3 * 80 + 2 * 4);
-  EXPECT_EQ(img.height, 60);
+  EXPECT_EQ(img.height, 48 + 60);  // three caption lines over the panels (T36)
+  // Captions are drawn over every panel: light text on the dark strip.
+  for (int panel = 0; panel < 3; ++panel) {
+    int ink = 0;
+    for (int y = 0; y < 48; ++y)
+      for (int x = panel * 84; x < panel * 84 + 80; ++x)
+        ink += img.rgb[(static_cast<std::size_t>(y) * img.width + x) * 3] == 235;
+    EXPECT_GT(ink, 20) << "panel " << panel << " has no caption";
+  }
+  // A differing pixel is not grey in the difference panel: a heat colour.
+  int coloured = 0;
+  for (int y = 48; y < 48 + 60; ++y)
+    for (int x = 2 * 84; x < 2 * 84 + 80; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * img.width + x) * 3;
+      coloured += img.rgb[i] != img.rgb[i + 1] || img.rgb[i] != img.rgb[i + 2];
+    }
+  EXPECT_GT(coloured, 0);
   // The same settings twice: nothing differs, and the difference panel is grey.
   r = runPrime("compare " + dir + " --a=\"--size 40 30\" --b=\"--size 40 30\" --png " + png);
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output,
               HasSubstr("pixels differing: 0 of 1200 (0.00%); palette indices differing: 0"));
   const prime::Image8 same = prime::readPng(png);
-  for (int y = 0; y < 30; ++y)
+  for (int y = 48; y < 48 + 30; ++y)
     for (int x = 2 * 44; x < 2 * 44 + 40; ++x) {
       const std::size_t i = (static_cast<std::size_t>(y) * same.width + x) * 3;
-      EXPECT_EQ(same.rgb[i], same.rgb[i + 2]);  // grey: no magenta anywhere
+      EXPECT_EQ(same.rgb[i], same.rgb[i + 2]);  // grey: no heat colour anywhere
       EXPECT_EQ(same.rgb[i], same.rgb[i + 1]);
     }
   r = runPrime("compare " + dir + " --a=\"--size 40 30\" --b=\"--size 41 30\"");

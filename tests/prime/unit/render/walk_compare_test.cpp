@@ -157,5 +157,39 @@ TEST(FirstDivergence, FirstRayWhoseLineDiffers) {
   EXPECT_EQ(firstDivergence(a, a).firstDiffering, -1);
 }
 
+// A ray event as the probe writes it, with its kind in the JSON.
+ProbeEvent kindRay(int depth, const std::string& kind, const std::string& where) {
+  return {depth, "ray", kind + " ray from " + where, R"({"kind":")" + kind + R"(","depth":1})"};
+}
+
+// The classes of T37: a tree that casts its reflected ray first does not
+// hide a transmitted ray that differs; a transmitted ray after a different
+// number of internal reflections is "tir"; equal rays with other shadow
+// verdicts are "shadow", else "shading".
+TEST(FirstDivergence, ClassifiesWhereTheTreesPart) {
+  const std::vector<ProbeEvent> a{kindRay(0, "primary", "eye"),
+                                  kindRay(1, "reflected", "p1"),
+                                  {0, "transmit", "", R"({"steps":1})"},
+                                  kindRay(1, "transmitted", "q1")};
+  std::vector<ProbeEvent> b{kindRay(0, "primary", "eye"),
+                            kindRay(1, "reflected", "p2"),
+                            {0, "transmit", "", R"({"steps":1})"},
+                            kindRay(1, "transmitted", "q2")};
+  RayDivergence d = firstDivergence(a, b);
+  EXPECT_EQ(d.kind, "reflected");  // the first ray that differs
+  EXPECT_EQ(d.kinds, (std::vector<std::string>{"reflected", "transmitted"}));
+  EXPECT_EQ(d.rays.at("transmitted").second, "transmitted ray from q2");
+  b[1] = a[1];  // only the transmitted ray differs
+  d = firstDivergence(a, b);
+  EXPECT_EQ(d.kinds, (std::vector<std::string>{"transmitted"}));
+  b[2] = {0, "transmit", "", R"({"steps":3})"};  // after two internal reflections
+  EXPECT_EQ(firstDivergence(a, b).kind, "tir");
+  std::vector<ProbeEvent> c = a, e = a;
+  c.push_back({1, "shadow", "light 1 lit", "{}"});
+  e.push_back({1, "shadow", "light 1 in shadow", "{}"});
+  EXPECT_EQ(firstDivergence(c, e).kind, "shadow");
+  EXPECT_EQ(firstDivergence(a, a).kind, "shading");
+}
+
 }  // namespace
 }  // namespace prime
