@@ -79,6 +79,7 @@ using TraceFactory = std::function<std::unique_ptr<TraceJob>()>;
 struct ProbeFlags {
   std::vector<int> pixel;  // --pixel X Y: column X, row Y from the top of what `trace` writes
   bool json = false;       // --json
+  std::string overlay;     // --overlay OUT.png: the ray tree drawn over the picture
 };
 
 // One pixel explained: the human-readable text and the same as one JSON
@@ -89,6 +90,7 @@ struct ProbeFlags {
 struct ProbeReport {
   std::string text;
   std::string json;
+  std::string written;  // the overlay written (--overlay), "" for none
 };
 
 using ProbeFactory = std::function<ProbeReport()>;

@@ -186,14 +186,24 @@ void addProbeVerb(CLI::App& app, Action& action, const System& system) {
       ->allow_extra_args(false);
   cmd->add_flag("--json", flags->json,
                 "Print JSON: one object with an events array (docs/user-guide.md, probe)");
+  cmd->add_option("--overlay", flags->overlay,
+                  "Also write the picture with this pixel's ray tree drawn over it, as PNG "
+                  "(needs --pixel)")
+      ->type_name("OUT.png");
   const ProbeFactory make = system.probe(cmd, flags);
   cmd->callback([flags, make, &action] {
     action = [flags, make] {
+      if (!flags->overlay.empty()) {
+        if (flags->pixel.size() != 2)
+          throw CLI::ValidationError("--overlay", "draws a pixel's tree: give --pixel X Y");
+        io::checkOutputPath(flags->overlay);
+      }
       const ProbeReport r = make();
       if (flags->json)
         std::cout << r.json << "\n";
       else
         std::cout << r.text;
+      if (!r.written.empty() && !flags->json) std::cout << "wrote " << r.written << "\n";
       return 0;
     };
   });

@@ -100,4 +100,30 @@ std::string ProbeLog::jsonEvents() const {
   return s + "]";
 }
 
+std::string jsonField(std::string_view json, std::string_view key) {
+  const std::string k = "\"" + std::string(key) + "\":";
+  const auto at = json.find(k);
+  if (at == std::string_view::npos) return "";
+  std::size_t b = at + k.size(), end = b;
+  if (b < json.size() && json[b] == '"') {
+    end = json.find('"', ++b);
+  } else if (b < json.size() && json[b] == '[') {
+    end = json.find(']', b);
+    if (end != std::string_view::npos) ++end;
+  } else {
+    while (end < json.size() && json[end] != ',' && json[end] != '}') ++end;
+  }
+  if (end == std::string_view::npos) return "";
+  return std::string(json.substr(b, end - b));
+}
+
+std::optional<Vec3> jsonVec3(std::string_view json, std::string_view key) {
+  const std::string v = jsonField(json, key);
+  Vec3 out{};
+  if (v.size() < 2 || v.front() != '[' ||
+      std::sscanf(v.c_str(), "[%lf,%lf,%lf]", &out[0], &out[1], &out[2]) != 3)
+    return std::nullopt;
+  return out;
+}
+
 }  // namespace prime

@@ -5,6 +5,7 @@
 // and in each system's probe printer, never by a shading function's strings.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,8 +38,14 @@ class JsonObject {
 std::string jsonString(std::string_view s);  // "s", escaped
 std::string json(double v);                  // %.17g; NaN and Inf as strings
 std::string json(const Vec3& v);             // [x,y,z]
-std::string fmt(double v);                   // %.6g
-std::string fmt(const Vec3& v);              // (x, y, z) at %.6g
+// Reading back what JsonObject wrote (flat objects of this file's own
+// making): the text of `key`'s value (a string without its quotes, a
+// number, an array with its brackets), or "" when absent; an array of three
+// numbers as a Vec3, or nullopt.
+std::string jsonField(std::string_view json, std::string_view key);
+std::optional<Vec3> jsonVec3(std::string_view json, std::string_view key);
+std::string fmt(double v);       // %.6g
+std::string fmt(const Vec3& v);  // (x, y, z) at %.6g
 
 struct ProbeEvent {
   int depth = 0;

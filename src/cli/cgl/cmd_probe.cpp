@@ -5,12 +5,14 @@
 // texture indices, each light's terms (Cook-Torrance: D, G, the
 // Fresnel row and S, and the reflected and transmitted rays as lights) and why a light was skipped,
 // the colour-vector, XYZ and the RGB ToRGB made of it.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/overlay.h"
 #include "src/cli/system.h"
 #include "src/render/probe_log.h"
 
@@ -254,6 +256,41 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
                          .add("background", report.background)
                          .str())
             .str();
+    if (!flags->overlay.empty()) {
+      // The frame trace writes, the tree over it. Each ray of the report
+      // runs from its origin to its hit, or on out of the scene.
+      const prime::cgl::RenderResult picture = prime::cgl::render(scene, renderSettings(*o, file));
+      const RgbImage frame = prime::cgl::toRgbImage(picture.frame);
+      Image8 img;
+      img.width = frame.width;
+      img.height = frame.height;
+      for (const Rgb& p : frame.pixels)
+        for (int k = 0; k < 3; ++k)
+          img.rgb.push_back(static_cast<std::uint8_t>(std::lround(p[k] * 255.0)));
+      std::vector<OverlaySegment> segments;
+      for (const auto& r : report.rays) {
+        OverlaySegment seg;
+        seg.from = r.origin;
+        seg.kind = r.kind == RayKind::Reflected     ? OverlayKind::Reflected
+                   : r.kind == RayKind::Transmitted ? OverlayKind::Transmitted
+                   : r.kind == RayKind::Shadow      ? OverlayKind::Shadow
+                                                    : OverlayKind::Primary;
+        seg.hit = r.hit;
+        seg.to = r.hit ? r.point : r.origin + r.direction * kMissLength;
+        segments.push_back(seg);
+      }
+      // Section 8.2: the ray through the screen point (x, y) has the
+      // direction start + (x - 256) X + (y - 256) Y; image column c is x
+      // and row r is scanline 511 - r, whose corner (c, 511 - r) lies at
+      // the picture point (c, r + 1).
+      const prime::cgl::Camera& cam = scene.camera;
+      const PictureProjection projection{
+          cam.eye,   cam.start - cam.xpath * 256.0 + cam.ypath * 255.0,
+          cam.xpath, cam.ypath * -1.0,
+          0.0,       1.0};
+      out.written =
+          writeOverlay(flags->overlay, img, segments, projection, flags->pixel[0], flags->pixel[1]);
+    }
     return out;
   };
 }

@@ -3,11 +3,59 @@
 #include <sstream>
 
 #include "palette/prime/color_num.h"
+#include "src/cli/overlay.h"
 #include "src/cli/prime/render_options.h"
 #include "src/cli/system.h"
 #include "src/prime/render/tracer_modern.h"
 
 namespace prime::cli {
+
+namespace {
+
+// The rays of a PRIME probe log: each "ray" event (origin, unit direction,
+// kind) ends at the next "hit" or "miss" event of its depth; a "shadow"
+// event (the thesis profile) runs from the last hit of its depth to the
+// point of the light it aimed at.
+std::vector<OverlaySegment> primeSegments(const std::vector<ProbeEvent>& events) {
+  std::vector<OverlaySegment> out;
+  struct Open {
+    OverlaySegment seg;
+    Vec3 dir{};
+    int depth = 0;
+  };
+  std::vector<Open> open;
+  std::vector<std::pair<int, Vec3>> hits;  // (depth, point), latest last
+  for (const ProbeEvent& e : events) {
+    if (e.kind == "ray") {
+      const auto o = jsonVec3(e.json, "origin"), d = jsonVec3(e.json, "dir");
+      const auto kind = overlayKind(jsonField(e.json, "kind"));
+      if (!o || !d || !kind) continue;
+      Open r;
+      r.seg.from = *o;
+      r.seg.kind = *kind;
+      r.dir = *d;
+      r.depth = e.depth;
+      open.push_back(r);
+    } else if ((e.kind == "hit" || e.kind == "miss") && !open.empty()) {
+      for (auto it = open.rbegin(); it != open.rend(); ++it) {
+        if (it->depth != e.depth) continue;
+        const auto point = jsonVec3(e.json, "point");
+        it->seg.hit = e.kind == "hit" && point.has_value();
+        it->seg.to = it->seg.hit ? *point : it->seg.from + it->dir * kMissLength;
+        if (it->seg.hit) hits.emplace_back(e.depth, *point);
+        out.push_back(it->seg);
+        open.erase(std::next(it).base());
+        break;
+      }
+    } else if (e.kind == "shadow" && !hits.empty()) {
+      if (const auto target = jsonVec3(e.json, "target"))
+        out.push_back({hits.back().second, *target, OverlayKind::Shadow, false});
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto dir = std::make_shared<std::string>();
@@ -92,6 +140,24 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
       text << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r << ", "
            << shown.g << ", " << shown.b << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
       report.text = text.str();
+      if (!flags->overlay.empty()) {
+        // The picture trace writes in true colour, the tree over it.
+        RenderSettings settings = options->settings;
+        settings.keepColours = true;
+        const RenderResult picture = render(scene, settings);
+        Image8 img;
+        img.width = picture.rgb.width;
+        img.height = picture.rgb.height;
+        for (const Rgb& c : picture.rgb.pixels) {
+          const Rgb8 t = trueColour(c);
+          img.rgb.insert(img.rgb.end(), {t.r, t.g, t.b});
+        }
+        const LinearView v = camera.linearView();
+        const PictureProjection projection{v.eye, v.toFirst, v.stepAcross, v.stepDown, 0.5, 0.5};
+        const std::vector<OverlaySegment> segments = primeSegments(probe.events);
+        report.written =
+            writeOverlay(flags->overlay, img, segments, projection, (*pixel)[0], (*pixel)[1]);
+      }
       return report;
     }
   };

@@ -65,16 +65,7 @@ std::vector<const ProbeEvent*> eventsOf(const std::vector<ProbeEvent>& all, cons
 
 // The value of "key": in a probe event's JSON (a word or a number), or "".
 std::string field(const ProbeEvent* e, const std::string& key) {
-  if (e == nullptr) return "";
-  const std::string k = "\"" + key + "\":";
-  const auto at = e->json.find(k);
-  if (at == std::string::npos) return "";
-  std::size_t b = at + k.size(), end = b;
-  if (b < e->json.size() && e->json[b] == '"')
-    end = e->json.find('"', ++b);
-  else
-    while (end < e->json.size() && e->json[end] != ',' && e->json[end] != '}') ++end;
-  return e->json.substr(b, end - b);
+  return e == nullptr ? "" : jsonField(e->json, key);
 }
 
 // The steps (TIR loops + 1) of the walk out that made a transmitted ray: the

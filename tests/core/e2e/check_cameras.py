@@ -18,13 +18,11 @@ Run: check_cameras.py PRIME_EXE REPO_ROOT
 """
 import os
 import shutil
-import struct
 import sys
 import tempfile
-import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
-from prime_checks import Checks
+from prime_checks import Checks, png_rows, png_size
 
 PRIME, ROOT = sys.argv[1], sys.argv[2]
 SCENES = {
@@ -42,45 +40,6 @@ OLDER = "--eye 1 2 3 --look-at 0 0 0 --up 0 1 0 --fov 50 --size 32 32"
 
 CHECKS = Checks(PRIME)
 run, check, failures = CHECKS.run, CHECKS.check, CHECKS.failures
-
-
-def png_size(path):
-    with open(path, "rb") as f:
-        head = f.read(24)
-    return struct.unpack(">II", head[16:24])
-
-
-def png_rows(path):
-    """The RGB rows of an 8-bit RGB, non-interlaced PNG (what prime writes)."""
-    data = open(path, "rb").read()
-    pos, idat, width, height = 8, b"", 0, 0
-    while pos < len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + n]
-        if kind == b"IHDR":
-            width, height = struct.unpack(">II", body[:8])
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    raw, stride, rows, prev = zlib.decompress(idat), width * 3, [], bytearray(width * 3)
-    for y in range(height):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - 3] if i >= 3 else 0
-            b, c = prev[i], prev[i - 3] if i >= 3 else 0
-            if f == 1:
-                line[i] = (line[i] + a) & 255
-            elif f == 2:
-                line[i] = (line[i] + b) & 255
-            elif f == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        prev = line
-    return rows
 
 
 with tempfile.TemporaryDirectory() as tmp:
