@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <string_view>
@@ -238,6 +239,23 @@ void appendCamera(const std::string& path, const FreeCameraSettings& camera,
   io::OutputFile out(path);
   out.write(text);
   out.commit();
+}
+
+void cameraKey(const std::optional<FreeCameraSettings>& camera, const std::string& comment,
+               const std::string& file, const std::string& withoutCamera) {
+  if (!camera) {
+    std::fprintf(stderr, "prime: camera: %s\n", withoutCamera.c_str());
+    return;
+  }
+  std::printf("%s\n", cameraFlagsText(*camera).c_str());
+  std::fflush(stdout);
+  try {
+    appendCamera(file, *camera, comment);
+    std::fprintf(stderr, "prime: camera appended to %s (--camera %s renders this frame)\n",
+                 file.c_str(), file.c_str());
+  } catch (const std::exception& err) {
+    std::fprintf(stderr, "prime: camera not saved: %s\n", err.what());
+  }
 }
 
 }  // namespace prime::cli

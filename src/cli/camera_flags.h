@@ -66,6 +66,13 @@ std::string cameraFlagsText(const FreeCameraSettings& camera);
 void appendCamera(const std::string& path, const FreeCameraSettings& camera,
                   const std::string& comment);
 
+// The C key of a window: prints the camera as flags on stdout and appends it
+// (after `# comment`) to `file`, saying so on stderr; a failure to write is
+// said, not thrown (the window stays). Without a camera (the system's own,
+// which no flag reproduces, or needs none) it says how to get the frame.
+void cameraKey(const std::optional<FreeCameraSettings>& camera, const std::string& comment,
+               const std::string& file, const std::string& withoutCamera);
+
 // The name the windows' C key appends to (the current directory, beside the
 // screenshots): prime-cameras.txt.
 inline constexpr const char* kDefaultCameraFile = "prime-cameras.txt";

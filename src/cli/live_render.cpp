@@ -125,6 +125,12 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     }
   }
   if (!window_ && !options_.quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
+  if (window_ && options_.cameraKey)
+    window_->setInputHandler([key = options_.cameraKey](const display::module::Event& e) {
+      if (e.type != display::module::Event::Type::Key || e.letter != 'c') return false;
+      key();
+      return true;
+    });
   // InitGraph before the render: the window mapped and its first full
   // picture sent (up to 1 s), so that cost does not fall inside it.
   for (int i = 0; window_ && i < 100 && !window_->upToDate(); ++i) window_->poll(10);
@@ -132,7 +138,8 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     std::cerr << (std::ostringstream()
                   << "prime: drawing in window 0x" << std::hex << window_->nativeId()
                   << "; Esc aborts (keys: + - zoom, "
-                  << (options_.keys.empty() ? "" : options_.keys + ", ") << "S screenshot)\n")
+                  << (options_.keys.empty() ? "" : options_.keys + ", ")
+                  << (options_.cameraKey ? "C camera, " : "") << "S screenshot)\n")
                      .str()
               << std::flush;
 }

@@ -82,20 +82,11 @@ int runBench(const WalkJob& job, const OrbitView& start, const WalkFlags& flags)
 void saveCamera(const WalkJob& job, const WalkFlags& flags, const WalkController& ctl,
                 const std::vector<Vec3>& startLights) {
   const WalkScene& scene = *job.scene;
-  const FreeCameraSettings camera = ctl.view().camera();
-  std::printf("%s\n", cameraFlagsText(camera).c_str());
-  std::fflush(stdout);
   std::string comment = "prime walk " + job.name + ", profile " +
                         scene.profiles()[static_cast<std::size_t>(ctl.profile())];
   if (ctl.lights() != startLights) comment += " (lights moved: not part of the camera)";
   if (!scene.cameraNote().empty()) comment += " (" + scene.cameraNote() + ")";
-  try {
-    appendCamera(flags.cameraFile, camera, comment);
-    std::fprintf(stderr, "prime: walk: camera appended to %s (prime trace %s --camera %s)\n",
-                 flags.cameraFile.c_str(), job.name.c_str(), flags.cameraFile.c_str());
-  } catch (const std::exception& err) {
-    std::fprintf(stderr, "prime: walk: camera not saved: %s\n", err.what());
-  }
+  cameraKey(ctl.view().camera(), comment, flags.cameraFile, "");
 }
 
 int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags) {

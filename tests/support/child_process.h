@@ -25,8 +25,9 @@ class ChildProcess {
  public:
   // Starts argv[0] (looked up in PATH) with `env` added to (or, for an empty
   // value, removed from) this process's environment. Throws on failure.
+  // `cwd`: the child's working directory ("" = the test's).
   ChildProcess(const std::vector<std::string>& argv,
-               const std::map<std::string, std::string>& env = {}) {
+               const std::map<std::string, std::string>& env = {}, const std::string& cwd = "") {
     int out[2], err[2];
     if (pipe(out) != 0 || pipe(err) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
@@ -45,6 +46,7 @@ class ChildProcess {
         else
           setenv(k.c_str(), v.c_str(), 1);
       }
+      if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
       std::vector<char*> args;
       for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
       args.push_back(nullptr);

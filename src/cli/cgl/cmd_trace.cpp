@@ -131,7 +131,14 @@ class CglTrace : public TraceJob {
   // The quiet parameter: the command line's -q, or the scene file's own.
   bool quiet() const override { return file_->program.quiet; }
   display::LiveFrame& frame() override { return frame_; }
-  void configure(LiveOptions& options) const override { options.caption = o_->file; }
+  void configure(LiveOptions& options) const override {
+    options.caption = o_->file;
+    options.cameraKey = [camera = o_->applied, file = o_->file] {
+      cameraKey(camera, "prime trace " + file, kDefaultCameraFile,
+                "the scene's own display parameters: prime trace " + file +
+                    " renders this frame with no camera flag");
+    };
+  }
   void render(LiveRender& live) override {
     const prime::cgl::RenderSettings settings = renderSettings(*o_, *file_);
     prime::cgl::RenderCallbacks cb;

@@ -4,7 +4,6 @@
 // ray per pixel through the pixel's corner (aalevel 0, Figure 41) in the
 // W x H window in the middle of the 512 x 512 screen, by CGL's own tracer.
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -95,20 +94,9 @@ WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
     }
     WalkJob job;
     job.name = o->file;
-    job.camera = prime::cgl::freeCamera(file.display);
-    // The picture the flags' --size asked for (the window they set), else
-    // the whole screen.
-    const CameraFlags given = withCameraFile(o->camera);
-    if (given.size.size() == 2) {
-      job.camera.width = given.size[0];
-      job.camera.height = given.size[1];
-      // freeCamera reads the field of view over 512 scanlines; the flags'
-      // display parameters span it over H.
-      job.camera.fovY = 2.0 *
-                        std::atan(0.5 * file.display.viewportHeight * job.camera.height / 512.0 /
-                                  file.display.dist) *
-                        180.0 / std::numbers::pi;
-    }
+    // The camera the flags made (exactly, with its size), else the scene's own
+    // over the whole screen.
+    job.camera = o->applied ? *o->applied : prime::cgl::freeCamera(file.display);
     job.centre = box.empty() ? job.camera.lookAt : box.centre();
     job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings);
     return job;

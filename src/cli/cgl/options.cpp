@@ -73,27 +73,62 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
 
 namespace {
 
-void applyCamera(const CameraFlags& flags, prime::cgl::SceneFile& file) {
+// The window --size W H makes: the W x H pixels in the middle of the screen.
+struct Window {
+  int xleft, xright, ylow, yhigh;
+};
+Window centredWindow(int width, int height) {
+  const int xleft = 256 - width / 2, ylow = 256 - height / 2;
+  return {xleft, xleft + width - 1, ylow, ylow + height - 1};
+}
+
+// The scene's own camera as the flags see it: its display parameters, over
+// its window when that is the centred one some --size makes (its field of
+// view then spans the window's scanlines), else over the whole screen.
+FreeCameraSettings ownCamera(const prime::cgl::SceneFile& file) {
+  FreeCameraSettings c = prime::cgl::freeCamera(file.display);
+  const auto& p = file.program;
+  const int w = p.xright - p.xleft + 1, h = p.yhigh - p.ylow + 1;
+  const Window centred = centredWindow(w, h);
+  if (w >= 1 && h >= 1 && p.xleft == centred.xleft && p.ylow == centred.ylow) {
+    c.width = w;
+    c.height = h;
+    c.fovY = 2.0 * std::atan(0.5 * file.display.viewportHeight * h / 512.0 / file.display.dist) *
+             180.0 / std::numbers::pi;
+  }
+  return c;
+}
+
+FreeCameraSettings applyCamera(const CameraFlags& flags, prime::cgl::SceneFile& file) {
   const CameraFlags given = withCameraFile(flags);
-  const FreeCameraSettings c = applyCameraFlags(given, prime::cgl::freeCamera(file.display));
+  const FreeCameraSettings own = ownCamera(file);
+  const FreeCameraSettings c = applyCameraFlags(given, own);
   if (c.width > 512 || c.height > 512)
     throw CLI::ValidationError("--size",
                                "the CGL package's screen is 512 x 512 (section 8.2); got " +
                                    std::to_string(c.width) + " x " + std::to_string(c.height));
   file.display = prime::cgl::displayOf(c);
-  if (!given.size.empty()) {
-    auto& p = file.program;
-    p.xleft = 256 - c.width / 2;
-    p.xright = p.xleft + c.width - 1;
-    p.ylow = 256 - c.height / 2;
-    p.yhigh = p.ylow + c.height - 1;
+  // The window follows the camera's size (the scene's own centred window
+  // stays as it was); a window that is not centred stays unless --size.
+  auto& p = file.program;
+  const Window ownWindow{p.xleft, p.xright, p.ylow, p.yhigh};
+  const Window w = centredWindow(c.width, c.height);
+  const bool ownCentred = ownWindow.xleft == centredWindow(own.width, own.height).xleft &&
+                          ownWindow.ylow == centredWindow(own.width, own.height).ylow &&
+                          own.width == p.xright - p.xleft + 1;
+  if (!given.size.empty() || ownCentred) {
+    p.xleft = w.xleft;
+    p.xright = w.xright;
+    p.ylow = w.ylow;
+    p.yhigh = w.yhigh;
     p.given.xleft = p.given.xright = p.given.ylow = p.given.yhigh = true;
   }
+  return c;
 }
 
 }  // namespace
 
-prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
+prime::cgl::SceneFile readCgl(CglOptions& o, bool quiet) {
   prime::cgl::ReadOptions read;
   read.lenient = o.lenient;
   prime::cgl::SceneFile file = prime::cgl::readSceneFile(o.file, read);
@@ -135,7 +170,7 @@ prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet) {
     p.given.shadows = true;
   }
   if (o.quiet) p.quiet = p.given.quiet = true;
-  if (o.camera.given()) applyCamera(o.camera, file);
+  if (o.camera.given()) o.applied = applyCamera(o.camera, file);
   return file;
 }
 

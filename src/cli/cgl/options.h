@@ -29,6 +29,7 @@ struct CglOptions {
   // --eye --look-at --up --fov --size --camera: replace the display
   // parameters (and, with --size, the window; see readCgl).
   CameraFlags camera;
+  std::optional<FreeCameraSettings> applied;  // the camera they made (readCgl)
 };
 
 // `withParameters`: also the program-parameter overrides (trace, probe, bench).
@@ -43,7 +44,7 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters = true);
 // frame buffer, section 8.2). The scene's own camera, as the flags see it, is
 // its eye, eye + sight, up, the field of view of the whole screen's height
 // and 512 x 512 (CGL-D61). Throws io::InputError.
-prime::cgl::SceneFile readCgl(const CglOptions& o, bool quiet);
+prime::cgl::SceneFile readCgl(CglOptions& o, bool quiet);
 
 // Preprocess: the scene with its textures (the scene's directory, then
 // --textures), under the chosen phosphors.

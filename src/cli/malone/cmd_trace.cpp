@@ -68,7 +68,14 @@ class MaloneTrace : public TraceJob {
   }
   bool quiet() const override { return flags_->quiet; }
   display::LiveFrame& frame() override { return *frame_; }
-  void configure(LiveOptions& options) const override { options.caption = o_->file; }
+  void configure(LiveOptions& options) const override {
+    options.caption = o_->file;
+    options.cameraKey = [camera = o_->applied, file = o_->file] {
+      cameraKey(camera, "prime trace " + file, kDefaultCameraFile,
+                "the scene's own viewer: prime trace " + file +
+                    " renders this frame with no camera flag");
+    };
+  }
   void render(LiveRender& live) override {
     prime::malone::RenderSettings settings;
     settings.trace = o_->trace;

@@ -83,7 +83,7 @@ WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
     }
     WalkJob job;
     job.name = o->file;
-    job.camera = prime::malone::freeCamera(scene.viewer);
+    job.camera = o->applied ? *o->applied : prime::malone::freeCamera(scene.viewer);
     job.centre = box.empty() ? job.camera.lookAt : box.centre();
     job.scene = std::make_unique<MaloneWalkScene>(std::move(scene), o->trace);
     return job;

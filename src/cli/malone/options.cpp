@@ -54,9 +54,10 @@ prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {
   const auto file = prime::malone::readSceneFile(o.file, read);
   const auto readDone = Clock::now();
   auto scene = prime::malone::buildScene(file, o.file);
-  if (o.camera.given())
-    scene.viewer = prime::malone::viewerOf(
-        applyCameraFlags(withCameraFile(o.camera), prime::malone::freeCamera(scene.viewer)));
+  if (o.camera.given()) {
+    o.applied = applyCameraFlags(withCameraFile(o.camera), prime::malone::freeCamera(scene.viewer));
+    scene.viewer = prime::malone::viewerOf(*o.applied);
+  }
   if (timings) {
     timings->read = std::chrono::duration<double>(readDone - start).count();
     timings->build = std::chrono::duration<double>(Clock::now() - readDone).count();

@@ -1,6 +1,7 @@
 // The options every Malone command shares: how the scene is read and traced.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 #include "src/cli/camera_flags.h"
@@ -17,6 +18,7 @@ struct MaloneOptions {
   prime::malone::TraceSettings trace;
   int threads = 0;     // trace's shared --threads
   CameraFlags camera;  // --eye --look-at --up --fov --size --camera: replace the viewer's
+  std::optional<FreeCameraSettings> applied;  // the camera they made (loadMalone)
 };
 
 void addMaloneOptions(CLI::App* cmd, MaloneOptions& o);

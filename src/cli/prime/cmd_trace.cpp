@@ -287,6 +287,14 @@ class PrimeTrace : public TraceJob {
     options.caption = *dir_;
     options.keys = "P palette, D DAC";
     options.firstRow = at_.top;  // the image's row 0 on the screen
+    const auto& s = options_->settings;
+    options.cameraKey = [free = s.camera.free, dir = *dir_,
+                         profile = options_->profile +
+                                   (s.trace.fixes.any() ? " --fix " + fixIds(s.trace.fixes) : "")] {
+      cameraKey(free, "prime trace " + dir + ", profile " + profile, kDefaultCameraFile,
+                "the listing's camera: prime trace " + dir +
+                    " renders this frame with no camera flag (any of them makes a free camera)");
+    };
   }
   void render(LiveRender& live) override {
     const RenderSettings& settings = options_->settings;

@@ -590,6 +590,73 @@ TEST_F(XvfbTest, MaloneAndCglWalksHandTheirCameraToTrace) {
   }
 }
 
+// The C key of trace's window, for every system: the camera the render used,
+// as flags on stdout and appended to prime-cameras.txt in the current
+// directory; trace --camera FILE then gives the same picture. With the
+// system's own camera it says that no flag is needed.
+TEST_F(XvfbTest, TraceWindowCameraKeyForEverySystem) {
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  const fs::path scenes = fs::path(PRIME_SCENES).parent_path();
+  prime::test::TempScene plate;
+  fs::copy(scenes / "prime" / "default", plate.path(), fs::copy_options::recursive);
+  ASSERT_EQ(run({PRIME_EXE, "model", plate.path().string()}), 0);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {plate.path().string(),
+       {"--eye", "900", "700", "-1200", "--look-at", "500", "450", "200", "--fov", "42", "--size",
+        "96", "64"}},
+      {(scenes / "malone" / "primitives.mal").string(),
+       {"--eye", "1.5", "1", "4", "--fov", "35", "--size", "80", "60"}},
+      {(scenes / "cgl" / "ball.cgl").string(), {"--eye", "0.8", "0.5", "3", "--fov", "12"}}};
+  for (const auto& [scene, camera] : cases) {
+    SCOPED_TRACE(scene);
+    prime::test::TempScene out;
+    std::vector<std::string> argv = {PRIME_EXE, "trace", scene, "--true-color-png",
+                                     out.path("first.png").string()};
+    if (scene == plate.path().string())
+      argv.insert(argv.end(), {"--out", out.path("first.graph").string()});
+    argv.insert(argv.end(), camera.begin(), camera.end());
+    ChildProcess trace(argv, env(), out.path().string());
+    ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+    const std::string id = windowId(trace.err());
+    ASSERT_FALSE(id.empty()) << trace.err();
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
+    ASSERT_TRUE(trace.waitForErr("camera appended to prime-cameras.txt", 20000)) << trace.err();
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+    EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+    EXPECT_THAT(trace.out(), HasSubstr("--eye "));
+    const std::string cameras = out.path("prime-cameras.txt").string();
+    std::vector<std::string> again = {PRIME_EXE,
+                                      "trace",
+                                      scene,
+                                      "--camera",
+                                      cameras,
+                                      "--true-color-png",
+                                      out.path("again.png").string(),
+                                      "-q",
+                                      "--no-window"};
+    if (scene == plate.path().string())
+      again.insert(again.end(), {"--out", out.path("again.graph").string()});
+    ASSERT_EQ(run(again), 0);
+    std::ifstream a(out.path("first.png"), std::ios::binary),
+        b(out.path("again.png"), std::ios::binary);
+    const std::string pa((std::istreambuf_iterator<char>(a)), std::istreambuf_iterator<char>());
+    const std::string pb((std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(!pa.empty() && pa == pb) << "--camera did not give the window's picture";
+  }
+  // The listing's own camera: no flags to give, and it says so.
+  prime::test::TempScene out;
+  ChildProcess trace(
+      {PRIME_EXE, "trace", plate.path().string(), "--out", out.path("listing.graph").string()},
+      env(), out.path().string());
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+  const std::string id = windowId(trace.err());
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
+  EXPECT_TRUE(trace.waitForErr("renders this frame with no camera flag", 20000)) << trace.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+  EXPECT_FALSE(fs::exists(out.path("prime-cameras.txt")));
+}
+
 // An 800 x 600 screen (G23): the window never grows past it, and fullscreen
 // fills it with the picture at the largest whole factor, centred.
 class SmallXvfbTest : public XvfbTest {
