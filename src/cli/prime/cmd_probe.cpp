@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "palette/prime/color_num.h"
+#include "palette/prime/export.h"
 #include "src/cli/overlay.h"
 #include "src/cli/prime/render_options.h"
 #include "src/cli/system.h"
