@@ -28,6 +28,13 @@ gen plate2/map/Map2.txt stripes --map 2 --size 8 --width 2 --a 0.05 0.05 0.05 --
 gen plate2/map/Map4.txt text --map 4 --line "D.C.U." --line "'91" --fg 0.05 0.05 0.05 --bg 0.05 0 0 \
   --margin 2 --line-gap 21
 gen plate2/map/Map5.txt stripes --map 5 --size 16 --width 2 --a 0 0.05 0.05 --b 0.05 0 0.05
+# Colour Plate 2 tuned for the thesis profile (scenes/prime/plate2-thesis/README.md): the same
+# maps with every "on" texel 0.05 at 1, the colour the texture stands for.
+gen plate2-thesis/map/Map1.txt checker --map 1 --cells 4 --a 1 1 0 --b 1 0 0
+gen plate2-thesis/map/Map2.txt stripes --map 2 --size 8 --width 2 --a 1 1 1 --b 0 1 0
+gen plate2-thesis/map/Map4.txt text --map 4 --line "D.C.U." --line "'91" --fg 1 1 1 --bg 1 0 0 \
+  --margin 2 --line-gap 21
+gen plate2-thesis/map/Map5.txt stripes --map 5 --size 16 --width 2 --a 0 1 1 --b 1 0 1
 # Colour Plate 3: the chessboard.
 gen plate3/map/Map1.txt checker --map 1 --cells 8 --a 0.01 1 0 --b 1 0.01 0
 gen primitives/map/Map1.txt checker --map 1 --cells 4 --a 0.02 0.02 0 --b 0.02 0 0.02

@@ -23,7 +23,7 @@ constexpr ListingQuirk kQuirks[] = {
      nullptr, kModelled, ""},
     {"K4", "Rays.c: CastRay", "normals by the forward matrix: wrong under non-uniform scale",
      "normals by the inverse transpose of the primitive's matrix", nullptr,
-     "copies, inside-maps, map-edge, plate2, primitives"},
+     "copies, inside-maps, map-edge, plate2, plate2-thesis, primitives"},
     {"K5", "Rays.c: TransmittedRay", "the exit normal is used in local coordinates, unnormalised",
      "the exit normal in world coordinates, normalised (its direction stays K6's)", nullptr,
      "default, glass"},
@@ -37,8 +37,8 @@ constexpr ListingQuirk kQuirks[] = {
      "the thesis profile casts them (--profile thesis)", ""},
     {"K10", "Hall.c: ProcessWavelength", "l and v point the wrong way: lit faces get darker",
      "l from the surface to the light, v from the surface to the eye", nullptr,
-     "copies, csg-operators, default, glass, inside-maps, lights, map-edge, plate2, plate3, "
-     "primitives"},
+     "copies, csg-operators, default, glass, inside-maps, lights, map-edge, plate2, "
+     "plate2-thesis, plate3, primitives"},
     {"K11", "Hall.c: ProcessWavelength", "the texture colour enters only through FSR and FST",
      nullptr, "the thesis' own formula (Table 4.1): no single correction", ""},
     {"K12", "Hall.c: FSR, FST", "f90 = 0 makes tmp = 1 - cos; FST = 1 - FSR may be negative",
@@ -49,7 +49,7 @@ constexpr ListingQuirk kQuirks[] = {
      "the thesis' own formula", ""},
     {"K15", "Hall.c: ProcessColor", "negative colours are not clamped (only >= 1 is)",
      "negative colours clamped to 0", nullptr,
-     "copies, csg-operators, default, inside-maps, lights, plate2, primitives"},
+     "copies, csg-operators, default, inside-maps, lights, plate2, plate2-thesis, primitives"},
     {"K16", "Graph.c: ColorNum", "levels 0..6, 0..6, 0..2 and black drawn as index 1", nullptr,
      "the palette's, not the tracer's: prime export --palette shows others", ""},
     {"K17", "Graph.c: InitPalette", "entries 0-9 and 20 overwritten: the background is green",
