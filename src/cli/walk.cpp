@@ -5,12 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <string>
 #include <vector>
 
 #include "palette/window/live_rgb_frame.h"
 #include "palette/window/screen_window.h"
+#include "src/bench/measure.h"
 #include "src/cli/system.h"
 #include "src/render/progressive.h"
 #include "src/render/walk_controller.h"
@@ -23,19 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
-
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 int runBench(const WalkJob& job, const OrbitView& start, const WalkFlags& flags) {
@@ -52,29 +39,29 @@ int runBench(const WalkJob& job, const OrbitView& start, const WalkFlags& flags)
     state.view.orbit(360.0 / std::max(frames, 1) * 0.25, 0.0);  // a quarter turn over the run
     const FreeCamera camera(state.view.camera());
     const Clock::time_point t0 = Clock::now();
-    const double c0 = cpuSeconds();
+    const double c0 = bench::processCpuSeconds();
     for (const int block : kProgressiveBlocks) {
       renderer->pass(camera, block, kProgressiveBlocks[0], image, flags.threads, nullptr, {}, rays);
       if (block == kProgressiveBlocks[0]) coarse.push_back(msSince(t0));
     }
     full.push_back(msSince(t0));
-    cpuFull.push_back(1000.0 * (cpuSeconds() - c0));
+    cpuFull.push_back(1000.0 * (bench::processCpuSeconds() - c0));
     const Clock::time_point t1 = Clock::now();
-    const double c1 = cpuSeconds();
+    const double c1 = bench::processCpuSeconds();
     renderer->pass(camera, 1, 1, image, flags.threads, nullptr, {}, rays);
     single.push_back(msSince(t1));
-    cpuSingle.push_back(1000.0 * (cpuSeconds() - c1));
+    cpuSingle.push_back(1000.0 * (bench::processCpuSeconds() - c1));
   }
-  const double f = median(full), s = median(single);
+  const double f = bench::median(full), s = bench::median(single);
   std::printf("walk bench: %s, %d x %d, profile %s, %d frames, %d thread(s) asked (0: all)\n",
               job.name.c_str(), first.columns(), first.rows(),
               scene.profiles()[static_cast<std::size_t>(state.profile)].c_str(), frames,
               flags.threads);
-  std::printf("first coarse pass (8 x 8 blocks): median %.1f ms\n", median(coarse));
+  std::printf("first coarse pass (8 x 8 blocks): median %.1f ms\n", bench::median(coarse));
   std::printf("progressive frame (8, 4, 2, 1): median %.1f ms wall, %.1f ms CPU = %.2f fps\n", f,
-              median(cpuFull), f > 0 ? 1000.0 / f : 0.0);
+              bench::median(cpuFull), f > 0 ? 1000.0 / f : 0.0);
   std::printf("full-resolution pass alone:     median %.1f ms wall, %.1f ms CPU = %.2f fps\n", s,
-              median(cpuSingle), s > 0 ? 1000.0 / s : 0.0);
+              bench::median(cpuSingle), s > 0 ? 1000.0 / s : 0.0);
   return 0;
 }
 

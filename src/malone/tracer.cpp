@@ -15,8 +15,21 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   return *this;
 }
 
-Tracer::Tracer(const Scene& scene, TraceSettings settings) : scene_(scene), settings_(settings) {
-  forward_ = normalized(scene.viewer.lookAt - scene.viewer.eye);
+ViewerRays::ViewerRays(const Viewer& viewer)
+    : v_(viewer), forward_(normalized(viewer.lookAt - viewer.eye)) {}
+
+MRay ViewerRays::operator()(int X, int Y) const {
+  const double alpha = (2.0 * X - v_.xRes) / v_.xRes;
+  const double beta = -(2.0 * Y - v_.yRes) / v_.yRes;
+  // v(alpha, beta) - e = (l - e)/|l - e| + alpha x + beta y.
+  MRay ray;
+  ray.o = v_.eye;
+  ray.d = normalized(forward_ + v_.x * alpha + v_.y * beta);
+  return ray;
+}
+
+Tracer::Tracer(const Scene& scene, TraceSettings settings)
+    : scene_(scene), settings_(settings), rays_(scene.viewer) {
   std::vector<Aabb> boxes;
   for (int i = 0; i < static_cast<int>(scene.primitives.size()); ++i) {
     Aabb box = bounds(scene, scene.primitives[i]);
@@ -29,25 +42,11 @@ Tracer::Tracer(const Scene& scene, TraceSettings settings) : scene_(scene), sett
   bvh_ = Bvh(std::move(boxes));
 }
 
-namespace {
-// Section 1.6: the ray through v(alpha, beta), `forward` = (l - e)/|l - e|.
-MRay rayThrough(const Viewer& v, const Vec3& forward, int X, int Y) {
-  const double alpha = (2.0 * X - v.xRes) / v.xRes;
-  const double beta = -(2.0 * Y - v.yRes) / v.yRes;
-  // v(alpha, beta) - e = (l - e)/|l - e| + alpha x + beta y.
-  MRay ray;
-  ray.o = v.eye;
-  ray.d = normalized(forward + v.x * alpha + v.y * beta);
-  return ray;
-}
-}  // namespace
-
 MRay Tracer::primaryRay(int X, int Y) const {
-  return rayThrough(scene_.viewer, forward_, X, Y);
+  return rays_(X, Y);
 }
 
-Rgb Tracer::pixel(const Viewer& viewer, int X, int Y, TraceStats& stats) const {
-  const MRay ray = rayThrough(viewer, normalized(viewer.lookAt - viewer.eye), X, Y);
+Rgb Tracer::pixel(const MRay& ray, TraceStats& stats) const {
   ++stats.primaryRays;
   if (settings_.debug != TraceSettings::Debug::None) return debugValue(ray, stats);
   return trace(ray, 1, 1.0, 1.0, stats, nullptr);

@@ -39,6 +39,18 @@ struct TraceStats : RayCounts {
   TraceStats& operator+=(const TraceStats& o);
 };
 
+// The primary rays of a viewer (section 1.6): through v((2X - X_RES)/X_RES,
+// -(2Y - Y_RES)/Y_RES), no half-pixel offset (MAL-Q23); (l - e)/|l - e| once.
+class ViewerRays {
+ public:
+  explicit ViewerRays(const Viewer& viewer);
+  MRay operator()(int X, int Y) const;
+
+ private:
+  Viewer v_;
+  Vec3 forward_{};
+};
+
 class Tracer {
  public:
   Tracer(const Scene& scene, TraceSettings settings);
@@ -50,9 +62,9 @@ class Tracer {
   // With `probe`, every ray, hit, light and returned colour is recorded
   // (src/cli/malone/cmd_probe.cpp prints them).
   Rgb pixel(int X, int Y, TraceStats& stats, Probe* probe = nullptr) const;
-  // The same through another viewer (`prime walk`'s camera of the moment):
-  // the colour pixel(X, Y) gives when the scene's viewer is `viewer`.
-  Rgb pixel(const Viewer& viewer, int X, int Y, TraceStats& stats) const;
+  // The colour of a primary ray made elsewhere (`prime walk`'s camera of the
+  // moment, ViewerRays): what pixel(X, Y) gives for the same ray.
+  Rgb pixel(const MRay& primary, TraceStats& stats) const;
   // trace(ray, depth, weight, index): the primary ray has depth 1, weight 1
   // and index 1.
   Rgb trace(const MRay& ray, int depth, double weight, double index, TraceStats& stats,
@@ -74,7 +86,7 @@ class Tracer {
 
   const Scene& scene_;
   TraceSettings settings_;
-  Vec3 forward_{};  // (l - e) / |l - e|
+  ViewerRays rays_;  // the scene's viewer's
   Bvh bvh_;
   std::vector<int> unbounded_;  // planes: tested on every ray
 };

@@ -111,11 +111,9 @@ FreeCameraSettings applyCamera(const CameraFlags& flags, prime::cgl::SceneFile& 
   // The window follows the camera's size (the scene's own centred window
   // stays as it was); a window that is not centred stays unless --size.
   auto& p = file.program;
-  const Window ownWindow{p.xleft, p.xright, p.ylow, p.yhigh};
+  // ownCamera took the window's size exactly when the window is centred.
+  const bool ownCentred = own.width == p.xright - p.xleft + 1 && own.height == p.yhigh - p.ylow + 1;
   const Window w = centredWindow(c.width, c.height);
-  const bool ownCentred = ownWindow.xleft == centredWindow(own.width, own.height).xleft &&
-                          ownWindow.ylow == centredWindow(own.width, own.height).ylow &&
-                          own.width == p.xright - p.xleft + 1;
   if (!given.size.empty() || ownCentred) {
     p.xleft = w.xleft;
     p.xright = w.xright;

@@ -24,13 +24,13 @@ class MaloneWalkFrame : public WalkFrame {
   bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
             const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
             std::uint64_t& rays) override {
-    const prime::malone::Viewer viewer = prime::malone::viewerOf(camera.settings());
+    const prime::malone::ViewerRays primary(prime::malone::viewerOf(camera.settings()));
     std::vector<TraceStats> perThread(
         static_cast<std::size_t>(threadCount(threads, (camera.rows() + block - 1) / block)));
     const bool done = progressivePass(
         camera.columns(), camera.rows(), block, firstBlock, threads, abandon, rowsDone,
         [&](int row, int column, int thread) {
-          return tracer_.pixel(viewer, column, row, perThread[static_cast<std::size_t>(thread)]);
+          return tracer_.pixel(primary(column, row), perThread[static_cast<std::size_t>(thread)]);
         },
         out);
     for (const TraceStats& s : perThread) rays += s.rays();

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <stdexcept>
+#include <utility>
 
 namespace prime {
 
@@ -103,6 +104,13 @@ constexpr ListingQuirk kQuirks[] = {
     {"K44", "User_IO.c: Error", "waits for Esc, then exit(1)", nullptr, kNoPixels, ""},
 };
 
+// Each switch's id and flag, in K order: what parse, "all" and fixIds walk.
+constexpr std::pair<const char*, bool ListingFixes::*> kSwitches[] = {{"K4", &ListingFixes::k4},
+                                                                      {"K5", &ListingFixes::k5},
+                                                                      {"K10", &ListingFixes::k10},
+                                                                      {"K15", &ListingFixes::k15},
+                                                                      {"K18", &ListingFixes::k18}};
+
 std::string upper(std::string_view s) {
   std::string out;
   for (const char c : s) out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -124,7 +132,7 @@ ListingFixes parseListingFixes(std::string_view text) {
     const std::string id = upper(text.substr(start, end - start));
     start = end + 1;
     if (id == "ALL") {
-      f.k4 = f.k5 = f.k10 = f.k15 = f.k18 = true;
+      for (const auto& [name, flag] : kSwitches) f.*flag = true;
       continue;
     }
     const ListingQuirk* q = nullptr;
@@ -134,25 +142,16 @@ ListingFixes parseListingFixes(std::string_view text) {
       throw std::invalid_argument("'" + id + "' is no listing quirk (K1 .. K44; prime errata)");
     if (q->fix == nullptr)
       throw std::invalid_argument(id + " has no switch: " + q->noSwitch + " (prime errata)");
-    if (id == "K4") f.k4 = true;
-    if (id == "K5") f.k5 = true;
-    if (id == "K10") f.k10 = true;
-    if (id == "K15") f.k15 = true;
-    if (id == "K18") f.k18 = true;
+    for (const auto& [name, flag] : kSwitches)
+      if (id == name) f.*flag = true;
   }
   return f;
 }
 
 std::string fixIds(const ListingFixes& f) {
   std::string s;
-  auto add = [&](bool on, const char* id) {
-    if (on) s += (s.empty() ? "" : ",") + std::string(id);
-  };
-  add(f.k4, "K4");
-  add(f.k5, "K5");
-  add(f.k10, "K10");
-  add(f.k15, "K15");
-  add(f.k18, "K18");
+  for (const auto& [name, flag] : kSwitches)
+    if (f.*flag) s += (s.empty() ? "" : ",") + std::string(name);
   return s;
 }
 
