@@ -37,6 +37,9 @@ gen plate2-thesis/map/Map4.txt text --map 4 --line "D.C.U." --line "'91" --fg 1 
 gen plate2-thesis/map/Map5.txt stripes --map 5 --size 16 --width 2 --a 0 1 1 --b 1 0 1
 # Colour Plate 3: the chessboard.
 gen plate3/map/Map1.txt checker --map 1 --cells 8 --a 0.01 1 0 --b 1 0.01 0
+# Colour Plate 3 tuned for the thesis profile (scenes/prime/plate3-thesis/README.md): each square
+# the colour the 1991 program showed it in (a small texel gave more light there), brightest channel 1.
+gen plate3-thesis/map/Map1.txt checker --map 1 --cells 8 --a 1 0.66 0 --b 0.66 1 0
 gen primitives/map/Map1.txt checker --map 1 --cells 4 --a 0.02 0.02 0 --b 0.02 0 0.02
 gen glass/map/Map1.txt stripes --map 1 --size 16 --width 2 --a 0.02 0.02 0 --b 0.02 0 0.02
 gen inside-maps/map/Map1.txt checker --map 1 --cells 4 --a 0.02 0.02 0 --b 0.02 0 0

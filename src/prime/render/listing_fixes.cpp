@@ -39,7 +39,7 @@ constexpr ListingQuirk kQuirks[] = {
     {"K10", "Hall.c: ProcessWavelength", "l and v point the wrong way: lit faces get darker",
      "l from the surface to the light, v from the surface to the eye", nullptr,
      "copies, csg-operators, default, glass, inside-maps, lights, map-edge, plate2, "
-     "plate2-thesis, plate3, primitives"},
+     "plate2-thesis, plate3, plate3-thesis, primitives"},
     {"K11", "Hall.c: ProcessWavelength", "the texture colour enters only through FSR and FST",
      nullptr, "the thesis' own formula (Table 4.1): no single correction", ""},
     {"K12", "Hall.c: FSR, FST", "f90 = 0 makes tmp = 1 - cos; FST = 1 - FSR may be negative",
@@ -57,7 +57,8 @@ constexpr ListingQuirk kQuirks[] = {
      nullptr, "the palette's, not the tracer's: prime export --palette shows others", ""},
     {"K18", "Rays.c: ReflectedRay", "the reflected ray starts one world unit along it",
      "the reflected ray starts at the hit point", nullptr,
-     "copies, csg-operators, default, inside-maps, map-edge, plate2, plate3, primitives"},
+     "copies, csg-operators, default, inside-maps, map-edge, plate2, plate3, plate3-thesis, "
+     "primitives"},
     {"K19", "Rays.c: TransmittedRay", "transmitted rays step one unit back, then one on", nullptr,
      kTangled, ""},
     {"K20", "Rays.c: CastRay", "depth++ < MaxDepth: six levels, reflected and transmitted rays",
