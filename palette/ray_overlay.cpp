@@ -130,6 +130,12 @@ Image8 drawRayOverlay(const Image8& picture, std::span<const OverlaySegment> seg
                       const PictureProjection& camera, int column, int row) {
   Image8 img = picture;
   for (std::uint8_t& v : img.rgb) v = static_cast<std::uint8_t>(v / 2);
+  drawRays(img, segments, camera, column, row);
+  return img;
+}
+
+void drawRays(Image8& img, std::span<const OverlaySegment> segments,
+              const PictureProjection& camera, int column, int row) {
   // Shadow rays first, so the tree's own rays stay on top.
   for (const bool shadows : {true, false})
     for (const OverlaySegment& seg : segments) {
@@ -143,7 +149,6 @@ Image8 drawRayOverlay(const Image8& picture, std::span<const OverlaySegment> seg
                static_cast<int>(std::floor((*ends)[1].y)), 2, c);
     }
   square(img, column, row, 3, {255, 0, 255});  // the probed pixel
-  return img;
 }
 
 }  // namespace prime

@@ -55,6 +55,11 @@ std::array<std::uint8_t, 3> overlayColour(OverlayKind kind);
 Image8 drawRayOverlay(const Image8& picture, std::span<const OverlaySegment> segments,
                       const PictureProjection& camera, int column, int row);
 
+// The same onto `img` as it is (not dimmed): what goes on top of anything
+// else drawn over the dimmed picture (the probe's text panel).
+void drawRays(Image8& img, std::span<const OverlaySegment> segments,
+              const PictureProjection& camera, int column, int row);
+
 // The picture-space points of a segment as drawn (after clipping at the
 // eye), for tests: nullopt when nothing of it is in front of the eye.
 std::optional<std::array<PictureProjection::Point, 2>> projectSegment(

@@ -124,6 +124,9 @@ struct ScreenWindow::Impl {
   // The picture as the frame last gave it, unscaled, XRGB8888: what --pace
   // holds back and what a new window size is scaled from.
   std::vector<std::uint32_t> latest;
+  // A drawing shown instead of `latest` (a probed pixel's ray tree), the
+  // picture's size; empty: none. It goes when the frame changes.
+  std::vector<std::uint32_t> overlay;
   DirtyRegion unshown;  // the part of `latest` not yet in `frame`
   int rowLimit = INT_MAX;
   // The window's pixels as sent to the display: XRGB8888 (0x00RRGGBB),
@@ -244,7 +247,8 @@ struct ScreenWindow::Impl {
         continue;
       }
       previous = sy;
-      const std::uint32_t* src = latest.data() + static_cast<std::size_t>(sy) * pw;
+      const std::uint32_t* src =
+          (overlay.empty() ? latest : overlay).data() + static_cast<std::size_t>(sy) * pw;
       for (int dx = x0; dx < x1; ++dx) out[dx] = src[sourceColumn[static_cast<std::size_t>(dx)]];
     }
     return {fit.x + x0, fit.y + y0, x1 - x0, y1 - y0};
@@ -261,6 +265,10 @@ struct ScreenWindow::Impl {
             changedPixels.data() + static_cast<std::size_t>(y) * changed.w, changed.w,
             latest.data() + static_cast<std::size_t>(changed.y + y) * screen.width() + changed.x);
       unshown.mark(changed);
+      if (!overlay.empty()) {
+        overlay.clear();
+        unshown.mark({0, 0, screen.width(), screen.height()});
+      }
     }
     Rect sent;
     if (unshown.any()) {
@@ -416,6 +424,52 @@ void ScreenWindow::setStatus(const std::string& status) {
 
 bool ScreenWindow::upToDate() const {
   return impl_->exposed && !impl_->screen.dirty();
+}
+
+std::optional<std::array<int, 2>> ScreenWindow::pictureAt(int x, int y) const {
+  const Impl& w = *impl_;
+  if (w.fit.empty() || x < w.fit.x || y < w.fit.y || x >= w.fit.x + w.fit.w ||
+      y >= w.fit.y + w.fit.h)
+    return std::nullopt;
+  return std::array<int, 2>{
+      static_cast<int>(static_cast<long long>(x - w.fit.x) * w.screen.width() / w.fit.w),
+      static_cast<int>(static_cast<long long>(y - w.fit.y) * w.screen.height() / w.fit.h)};
+}
+
+Image8 ScreenWindow::picture() const {
+  const Impl& w = *impl_;
+  Image8 img{w.screen.width(), w.screen.height(), {}};
+  img.rgb.resize(w.latest.size() * 3);
+  for (std::size_t i = 0; i < w.latest.size(); ++i) {
+    img.rgb[3 * i] = static_cast<std::uint8_t>(w.latest[i] >> 16);
+    img.rgb[3 * i + 1] = static_cast<std::uint8_t>(w.latest[i] >> 8);
+    img.rgb[3 * i + 2] = static_cast<std::uint8_t>(w.latest[i]);
+  }
+  return img;
+}
+
+void ScreenWindow::showOverlay(const Image8& drawing) {
+  Impl& w = *impl_;
+  if (drawing.width != w.screen.width() || drawing.height != w.screen.height())
+    throw WindowError("an overlay of " + std::to_string(drawing.width) + " x " +
+                      std::to_string(drawing.height) + " on a picture of " +
+                      std::to_string(w.screen.width()) + " x " + std::to_string(w.screen.height()));
+  w.overlay.resize(w.latest.size());
+  for (std::size_t i = 0; i < w.overlay.size(); ++i)
+    w.overlay[i] = static_cast<std::uint32_t>(drawing.rgb[3 * i]) << 16 |
+                   static_cast<std::uint32_t>(drawing.rgb[3 * i + 1]) << 8 | drawing.rgb[3 * i + 2];
+  w.unshown.mark({0, 0, w.screen.width(), w.screen.height()});
+}
+
+void ScreenWindow::clearOverlay() {
+  Impl& w = *impl_;
+  if (w.overlay.empty()) return;
+  w.overlay.clear();
+  w.unshown.mark({0, 0, w.screen.width(), w.screen.height()});
+}
+
+bool ScreenWindow::overlayShown() const {
+  return !impl_->overlay.empty();
 }
 
 unsigned long ScreenWindow::nativeId() const {

@@ -17,6 +17,7 @@
 // that the first ScreenWindow loads with dlopen(): `prime` does not link
 // libSDL2, and a headless run (headlessReason() needs no SDL) never loads it.
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "palette/png_image.h"
 #include "palette/window/live_frame.h"
 #include "palette/window/window_fit.h"
 
@@ -75,6 +77,17 @@ class ScreenWindow {
   // Only rows [0, rows) of the frame reach the display; the others wait
   // (--pace, G24). Any thread but the window's is wrong: call it from there.
   void setRowLimit(int rows);
+  // The picture pixel (column, row of the frame) under window pixel (x, y),
+  // wherever zoom, fullscreen or a resize put the picture; nullopt off it.
+  std::optional<std::array<int, 2>> pictureAt(int x, int y) const;
+  // The frame's picture as the window has it (before any overlay), unscaled.
+  Image8 picture() const;
+  // Shows `drawing` (the frame's size: a probed pixel's ray tree over
+  // picture()) instead of the frame, until clearOverlay() or until the frame
+  // changes (a new render, another palette). Throws WindowError for another size.
+  void showOverlay(const Image8& drawing);
+  void clearOverlay();
+  bool overlayShown() const;
   // Saves the window's pixels, as sent to the display, as a PNG in the
   // screenshot directory; returns the path.
   std::string saveScreenshot();

@@ -125,10 +125,12 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     }
   }
   if (!window_ && !options_.quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
-  if (window_ && options_.cameraKey)
-    window_->setInputHandler([key = options_.cameraKey](const display::module::Event& e) {
-      if (e.type != display::module::Event::Type::Key || e.letter != 'c') return false;
-      key();
+  if (window_)
+    window_->setInputHandler([this](const display::module::Event& e) {
+      if (inspector_ && inspector_->handle(e)) return true;
+      if (!options_.cameraKey || e.type != display::module::Event::Type::Key || e.letter != 'c')
+        return false;
+      options_.cameraKey();
       return true;
     });
   // InitGraph before the render: the window mapped and its first full
@@ -139,7 +141,8 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
                   << "prime: drawing in window 0x" << std::hex << window_->nativeId()
                   << "; Esc aborts (keys: + - zoom, "
                   << (options_.keys.empty() ? "" : options_.keys + ", ")
-                  << (options_.cameraKey ? "C camera, " : "") << "S screenshot)\n")
+                  << (options_.cameraKey ? "C camera, " : "") << "S screenshot"
+                  << (options_.probe ? "; when done, click a pixel: its rays" : "") << ")\n")
                      .str()
               << std::flush;
 }
@@ -227,9 +230,12 @@ void LiveRender::waitForEsc(const std::string& status) {
   // WaitForEsc already.
   if (!window_ || options_.noWait || abort_.load()) return;
   window_->setStatus(status);
+  if (options_.probe) inspector_ = std::make_unique<PixelInspector>(*window_, options_.probe);
   if (!options_.quiet)
     std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); "
-                 "--no-wait or --no-window to skip this\n";
+                 "--no-wait or --no-window to skip this"
+              << (options_.probe ? "; click a pixel to draw its rays (right click: away)" : "")
+              << "\n";
   while (!window_->poll(100)) {
   }
 }

@@ -16,6 +16,7 @@
 #include "palette/window/live_frame.h"
 #include "palette/window/screen_window.h"
 #include "palette/window/window_fit.h"
+#include "src/cli/pixel_inspector.h"
 
 namespace CLI {
 class App;
@@ -41,6 +42,9 @@ struct LiveOptions {
   // The C key: print and save the render's camera (src/cli/camera_flags.h,
   // cameraKey); unset: C does nothing.
   std::function<void()> cameraKey;
+  // A click on a pixel once the render is done: its ray tree and the probe's
+  // text (src/cli/pixel_inspector.h); unset: clicks do nothing.
+  PixelProbe probe;
 };
 
 // The window flags of a command that renders live, for every system:
@@ -84,7 +88,10 @@ class LiveRender {
   void run(const std::function<void()>& render);
 
   // The window goes at once (an aborted render: the 1991 ExitOnEsc).
-  void closeWindow() { window_.reset(); }
+  void closeWindow() {
+    inspector_.reset();
+    window_.reset();
+  }
   // After a finished render: the window shows `status` and stays until Esc
   // or close, unless --no-wait, no window, or Esc was already pressed.
   void waitForEsc(const std::string& status);
@@ -95,6 +102,7 @@ class LiveRender {
 
   LiveOptions options_;
   std::unique_ptr<display::ScreenWindow> window_;
+  std::unique_ptr<PixelInspector> inspector_;  // from waitForEsc on
   std::atomic<bool> abort_{false};
   std::atomic<int> rowsDone_{0}, rows_{0};
   std::atomic<std::uint64_t> rays_{0};

@@ -11,6 +11,7 @@
 #include "palette/window/live_rgb_frame.h"
 #include "palette/window/screen_window.h"
 #include "src/bench/measure.h"
+#include "src/cli/pixel_inspector.h"
 #include "src/cli/system.h"
 #include "src/render/progressive.h"
 #include "src/render/walk_controller.h"
@@ -122,20 +123,26 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
 
   display::ScreenWindow window(
       frame, {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale});
-  std::fprintf(stderr,
-               "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
-               "right-drag pan, I O wheel dolly, Home R reset,%s%s%s C camera; as in every "
-               "window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc quits\n",
-               window.nativeId(), start.width, start.height,
-               startLights.empty() ? "" : " L lights,", profiles.size() > 1 ? " P profile," : "",
-               scene.paletteView() ? " V palette view," : "");
+  std::fprintf(
+      stderr,
+      "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
+      "right-drag pan, I O wheel dolly, Home R reset,%s%s%s C camera, click a pixel: its rays; "
+      "as in every "
+      "window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc quits\n",
+      window.nativeId(), start.width, start.height, startLights.empty() ? "" : " L lights,",
+      profiles.size() > 1 ? " P profile," : "", scene.paletteView() ? " V palette view," : "");
   auto stateOf = [&] {
     return WalkView{ctl.view(), ctl.lights(), ctl.profile(),
                     scene.paletteView() && ctl.paletteView()};
   };
+  PixelInspector inspector(window, [&](int x, int y) -> std::optional<ProbedPixel> {
+    if (x < 0 || y < 0 || x >= start.width || y >= start.height) return std::nullopt;
+    return scene.probe(stateOf(), x, y);
+  });
   window.setInputHandler([&](const display::module::Event& e) -> bool {
     using display::module::Event;
     using display::module::Key;
+    if (inspector.handle(e)) return true;
     switch (e.type) {
       case Event::Type::MouseMotion:
         if (e.buttons & 1u)

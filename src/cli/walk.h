@@ -15,19 +15,22 @@
 // wheel dolly, Home or R resets, L cycles camera / light 1 / light 2 ... (a
 // selected light moves with the same keys and drags instead of the camera),
 // P switches the profile, V the palette view, C prints the camera as flags
-// and appends it to the camera file; as in every window: S F12 screenshot,
+// and appends it to the camera file, a click on a pixel draws its rays
+// (src/cli/pixel_inspector.h; right click: away); as in every window: S F12 screenshot,
 // + - 1..8 zoom, F11 fullscreen, Esc quits.
 #pragma once
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "src/cli/camera_flags.h"
 #include "src/cli/live_render.h"
+#include "src/cli/overlay.h"
 #include "src/geom/orbit_view.h"
 #include "src/render/rgb_image.h"
 
@@ -72,6 +75,10 @@ class WalkScene {
   // A row of the picture as the window shows it (0x00RRGGBB).
   virtual void paint(const WalkView& view, const RgbImage& image, int row,
                      std::span<std::uint32_t> out) const = 0;
+  // A click on pixel (x, y) of the frame `view` shows: the system's probe of
+  // it with that camera, profile and lights (src/cli/overlay.h); nullopt when
+  // the system has none.
+  virtual std::optional<ProbedPixel> probe(const WalkView& view, int x, int y) const = 0;
   // What the camera file's comment adds after the scene and the profile
   // (CGL: the anti-aliasing a trace of the camera should turn off).
   virtual std::string cameraNote() const { return ""; }

@@ -12,6 +12,7 @@
 
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/cgl/probe_pixel.h"
 #include "src/cli/overlay.h"
 #include "src/cli/system.h"
 #include "src/render/probe_log.h"
@@ -198,6 +199,58 @@ std::string eventsJson(const prime::cgl::ProbeReport& r) {
 
 }  // namespace
 
+ProbedPixel probePoint(const prime::cgl::Scene& scene, const prime::cgl::RenderSettings& settings,
+                       const std::string& file, const std::string& where, double x, double y) {
+  const prime::cgl::ProbeReport report = prime::cgl::probe(scene, settings, x, y);
+  ProbedPixel out;
+  out.text = text(report, scene);
+  const Vec3 rgb{report.rgb.r / 255.0, report.rgb.g / 255.0, report.rgb.b / 255.0};
+  out.json =
+      JsonObject()
+          .add("scene", file)
+          .add("where", where)
+          .addJson("events", eventsJson(report))
+          .add("color", rgb)
+          .add("rays", static_cast<std::uint64_t>(report.rays.size()))
+          .addJson("cgl",
+                   JsonObject()
+                       .add("system", "Waterloo CGL (1985)")
+                       .addJson("screenPoint", "[" + json(report.x) + "," + json(report.y) + "]")
+                       .addJson("spectrum", spectrumJson(report.colour))
+                       .addJson("xyz", "[" + json(report.xyz.x) + "," + json(report.xyz.y) + "," +
+                                           json(report.xyz.z) + "]")
+                       .addJson("rgb", "[" + std::to_string(report.rgb.r) + "," +
+                                           std::to_string(report.rgb.g) + "," +
+                                           std::to_string(report.rgb.b) + "]")
+                       .add("background", report.background)
+                       .str())
+          .str();
+  // Each ray of the report runs from its origin to its hit, or on out of
+  // the scene.
+  for (const auto& r : report.rays) {
+    OverlaySegment seg;
+    seg.from = r.origin;
+    seg.kind = r.kind == RayKind::Reflected     ? OverlayKind::Reflected
+               : r.kind == RayKind::Transmitted ? OverlayKind::Transmitted
+               : r.kind == RayKind::Shadow      ? OverlayKind::Shadow
+                                                : OverlayKind::Primary;
+    seg.hit = r.hit;
+    seg.to = r.hit ? r.point : r.origin + r.direction * kMissLength;
+    out.segments.push_back(seg);
+  }
+  // Section 8.2: the ray through the screen point (x, y) has the direction
+  // start + (x - 256) X + (y - 256) Y; image column c is x and row r is
+  // scanline 511 - r, whose corner (c, 511 - r) lies at the picture point
+  // (c, r + 1).
+  const prime::cgl::Camera& cam = scene.camera;
+  out.camera = {cam.eye,   cam.start - cam.xpath * 256.0 + cam.ypath * 255.0,
+                cam.xpath, cam.ypath * -1.0,
+                0.0,       1.0};
+  out.column = static_cast<int>(std::floor(x));
+  out.row = prime::cgl::Frame::kSize - 1 - static_cast<int>(std::floor(y));
+  return out;
+}
+
 ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto o = std::make_shared<CglOptions>();
   auto point = std::make_shared<std::vector<double>>();
@@ -232,33 +285,10 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
     }
     const prime::cgl::SceneFile file = readCgl(*o, false);
     const prime::cgl::Scene scene = buildCgl(*o, file);
-    const prime::cgl::ProbeReport report = prime::cgl::probe(scene, renderSettings(*o, file), x, y);
-    ProbeReport out;
-    out.text = text(report, scene);
-    const Vec3 rgb{report.rgb.r / 255.0, report.rgb.g / 255.0, report.rgb.b / 255.0};
-    out.json =
-        JsonObject()
-            .add("scene", o->file)
-            .add("where", where)
-            .addJson("events", eventsJson(report))
-            .add("color", rgb)
-            .add("rays", static_cast<std::uint64_t>(report.rays.size()))
-            .addJson("cgl",
-                     JsonObject()
-                         .add("system", "Waterloo CGL (1985)")
-                         .addJson("screenPoint", "[" + json(report.x) + "," + json(report.y) + "]")
-                         .addJson("spectrum", spectrumJson(report.colour))
-                         .addJson("xyz", "[" + json(report.xyz.x) + "," + json(report.xyz.y) + "," +
-                                             json(report.xyz.z) + "]")
-                         .addJson("rgb", "[" + std::to_string(report.rgb.r) + "," +
-                                             std::to_string(report.rgb.g) + "," +
-                                             std::to_string(report.rgb.b) + "]")
-                         .add("background", report.background)
-                         .str())
-            .str();
+    const ProbedPixel probed = probePoint(scene, renderSettings(*o, file), o->file, where, x, y);
+    ProbeReport out{probed.text, probed.json, ""};
     if (!flags->overlay.empty()) {
-      // The frame trace writes, the tree over it. Each ray of the report
-      // runs from its origin to its hit, or on out of the scene.
+      // The frame trace writes, the tree over it.
       const prime::cgl::RenderResult picture = prime::cgl::render(scene, renderSettings(*o, file));
       const RgbImage frame = prime::cgl::toRgbImage(picture.frame);
       Image8 img;
@@ -267,29 +297,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
       for (const Rgb& p : frame.pixels)
         for (int k = 0; k < 3; ++k)
           img.rgb.push_back(static_cast<std::uint8_t>(std::lround(p[k] * 255.0)));
-      std::vector<OverlaySegment> segments;
-      for (const auto& r : report.rays) {
-        OverlaySegment seg;
-        seg.from = r.origin;
-        seg.kind = r.kind == RayKind::Reflected     ? OverlayKind::Reflected
-                   : r.kind == RayKind::Transmitted ? OverlayKind::Transmitted
-                   : r.kind == RayKind::Shadow      ? OverlayKind::Shadow
-                                                    : OverlayKind::Primary;
-        seg.hit = r.hit;
-        seg.to = r.hit ? r.point : r.origin + r.direction * kMissLength;
-        segments.push_back(seg);
-      }
-      // Section 8.2: the ray through the screen point (x, y) has the
-      // direction start + (x - 256) X + (y - 256) Y; image column c is x
-      // and row r is scanline 511 - r, whose corner (c, 511 - r) lies at
-      // the picture point (c, r + 1).
-      const prime::cgl::Camera& cam = scene.camera;
-      const PictureProjection projection{
-          cam.eye,   cam.start - cam.xpath * 256.0 + cam.ypath * 255.0,
-          cam.xpath, cam.ypath * -1.0,
-          0.0,       1.0};
-      out.written =
-          writeOverlay(flags->overlay, img, segments, projection, flags->pixel[0], flags->pixel[1]);
+      out.written = writeOverlay(flags->overlay, img, probed);
     }
     return out;
   };

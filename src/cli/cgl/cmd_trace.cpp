@@ -20,6 +20,7 @@
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
 #include "src/cli/cgl/picture.h"
+#include "src/cli/cgl/probe_pixel.h"
 #include "src/cli/live_render.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
@@ -137,6 +138,14 @@ class CglTrace : public TraceJob {
       cameraKey(camera, "prime trace " + file, kDefaultCameraFile,
                 "the scene's own display parameters: prime trace " + file +
                     " renders this frame with no camera flag");
+    };
+    // A click: the probe of the pixel's corner (Figure 41), row r being
+    // scanline 511 - r, as `prime probe --pixel` takes it.
+    options.probe = [this](int x, int y) -> std::optional<ProbedPixel> {
+      const int n = prime::cgl::Frame::kSize;
+      if (x < 0 || y < 0 || x >= n || y >= n) return std::nullopt;
+      return probePoint(*scene_, renderSettings(*o_, *file_), o_->file,
+                        "pixel " + std::to_string(x) + " " + std::to_string(y), x, n - 1 - y);
     };
   }
   void render(LiveRender& live) override {

@@ -9,6 +9,7 @@
 
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/cgl/probe_pixel.h"
 #include "src/render/render_rows.h"
 
 namespace prime::cli::cgl {
@@ -51,8 +52,27 @@ class CglWalkFrame : public WalkFrame {
 
 class CglWalkScene : public WalkScene {
  public:
-  CglWalkScene(prime::cgl::Scene scene, const prime::cgl::RenderSettings& settings)
-      : scene_(std::move(scene)), tracer_(scene_, prime::cgl::traceSettings(settings)) {}
+  CglWalkScene(prime::cgl::Scene scene, const prime::cgl::RenderSettings& settings,
+               std::string file)
+      : scene_(std::move(scene)),
+        tracer_(scene_, prime::cgl::traceSettings(settings)),
+        settings_(settings),
+        file_(std::move(file)) {}
+  // The probe through the display parameters of the moment (CGL-D61): pixel
+  // (x, y) of the W x H window is the screen point (xleft + x, yhigh - y).
+  std::optional<ProbedPixel> probe(const WalkView& view, int x, int y) const override {
+    const FreeCamera camera(view.view.camera());
+    prime::cgl::Scene moved = scene_;
+    moved.camera = prime::cgl::cameraOf(prime::cgl::displayOf(camera.settings()), scene_.path);
+    const int xleft = 256 - camera.columns() / 2;
+    const int yhigh = 256 - camera.rows() / 2 + camera.rows() - 1;
+    return probePoint(moved, settings_, file_,
+                      "pixel " + std::to_string(x) + " " + std::to_string(y) + " of the " +
+                          std::to_string(camera.columns()) + " x " + std::to_string(camera.rows()) +
+                          " window",
+                      xleft + x, yhigh - y)
+        .placedAt(-xleft, -(prime::cgl::Frame::kSize - 1 - yhigh));
+  }
   std::vector<std::string> profiles() const override { return {"document"}; }
   std::unique_ptr<WalkFrame> frame(const WalkView&) const override {
     return std::make_unique<CglWalkFrame>(tracer_, scene_.path);
@@ -73,6 +93,8 @@ class CglWalkScene : public WalkScene {
  private:
   prime::cgl::Scene scene_;
   Tracer tracer_;  // over scene_: built once
+  prime::cgl::RenderSettings settings_;
+  std::string file_;
 };
 
 }  // namespace
@@ -98,7 +120,7 @@ WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
     // over the whole screen.
     job.camera = o->applied ? *o->applied : prime::cgl::freeCamera(file.display);
     job.centre = box.empty() ? job.camera.lookAt : box.centre();
-    job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings);
+    job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings, o->file);
     return job;
   };
 }

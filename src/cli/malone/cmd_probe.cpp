@@ -9,6 +9,7 @@
 #include "legacy_io/malone/ppm.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
+#include "src/cli/malone/probe_pixel.h"
 #include "src/cli/overlay.h"
 #include "src/cli/system.h"
 
@@ -57,6 +58,46 @@ std::vector<OverlaySegment> maloneSegments(const std::vector<ProbeEvent>& events
 
 }  // namespace
 
+ProbedPixel probePixel(const prime::malone::Scene& scene, const prime::malone::TraceSettings& trace,
+                       const std::string& file, int x, int y) {
+  const prime::malone::Tracer tracer(scene, trace);
+  prime::malone::TraceStats stats;
+  prime::malone::Probe log;
+  const Rgb c = tracer.pixel(x, y, stats, &log);
+  const int r = prime::malone::toByte(c[0]), g = prime::malone::toByte(c[1]),
+            b = prime::malone::toByte(c[2]);
+  ProbedPixel out;
+  out.text = file + ": Malone (1995)\n";
+  for (const ProbeEvent& e : log.events) out.text += std::string(indentOf(e), ' ') + e.text + "\n";
+  char last[200];
+  std::snprintf(last, sizeof last,
+                "pixel (%d, %d) = (%.6g, %.6g, %.6g) -> bytes %d %d %d; %llu rays\n", x, y, c[0],
+                c[1], c[2], r, g, b, static_cast<unsigned long long>(stats.rays()));
+  out.text += last;
+  out.json = JsonObject()
+                 .add("scene", file)
+                 .add("where", "pixel " + std::to_string(x) + " " + std::to_string(y))
+                 .addJson("events", log.jsonEvents())
+                 .add("color", c)
+                 .add("rays", stats.rays())
+                 .addJson("malone",
+                          JsonObject()
+                              .add("system", "Malone (1995)")
+                              .addJson("bytes", "[" + std::to_string(r) + "," + std::to_string(g) +
+                                                    "," + std::to_string(b) + "]")
+                              .str())
+                 .str();
+  // The ray of pixel (X, Y) goes through its corner (MAL-Q23):
+  // forward + x (2X - W)/W - y (2Y - H)/H.
+  const prime::malone::Viewer& v = scene.viewer;
+  const Vec3 forward = normalized(v.lookAt - v.eye);
+  out.camera = {v.eye, forward - v.x + v.y, v.x * (2.0 / v.xRes), v.y * (-2.0 / v.yRes), 0.0, 0.0};
+  out.segments = maloneSegments(log.events);
+  out.column = x;
+  out.row = y;
+  return out;
+}
+
 ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto o = std::make_shared<MaloneOptions>();
   addMaloneOptions(cmd, *o);
@@ -69,34 +110,8 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
                                                 std::to_string(y) + " is outside the " +
                                                 std::to_string(scene.viewer.xRes) + " x " +
                                                 std::to_string(scene.viewer.yRes) + " picture");
-    const prime::malone::Tracer tracer(scene, o->trace);
-    prime::malone::TraceStats stats;
-    prime::malone::Probe log;
-    const Rgb c = tracer.pixel(x, y, stats, &log);
-    const int r = prime::malone::toByte(c[0]), g = prime::malone::toByte(c[1]),
-              b = prime::malone::toByte(c[2]);
-    ProbeReport report;
-    report.text = o->file + ": Malone (1995)\n";
-    for (const ProbeEvent& e : log.events)
-      report.text += std::string(indentOf(e), ' ') + e.text + "\n";
-    char last[200];
-    std::snprintf(last, sizeof last,
-                  "pixel (%d, %d) = (%.6g, %.6g, %.6g) -> bytes %d %d %d; %llu rays\n", x, y, c[0],
-                  c[1], c[2], r, g, b, static_cast<unsigned long long>(stats.rays()));
-    report.text += last;
-    report.json = JsonObject()
-                      .add("scene", o->file)
-                      .add("where", "pixel " + std::to_string(x) + " " + std::to_string(y))
-                      .addJson("events", log.jsonEvents())
-                      .add("color", c)
-                      .add("rays", stats.rays())
-                      .addJson("malone", JsonObject()
-                                             .add("system", "Malone (1995)")
-                                             .addJson("bytes", "[" + std::to_string(r) + "," +
-                                                                   std::to_string(g) + "," +
-                                                                   std::to_string(b) + "]")
-                                             .str())
-                      .str();
+    const ProbedPixel probed = probePixel(scene, o->trace, o->file, x, y);
+    ProbeReport report{probed.text, probed.json, ""};
     if (!flags->overlay.empty()) {
       // The picture trace writes (its PPM's bytes), the tree over it.
       prime::malone::RenderSettings settings;
@@ -107,14 +122,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
       img.height = picture.raster.height;
       for (const Rgb& p : picture.raster.pixels)
         for (int k = 0; k < 3; ++k) img.rgb.push_back(prime::malone::toByte(p[k]));
-      // The ray of pixel (X, Y) goes through its corner (MAL-Q23):
-      // forward + x (2X - W)/W - y (2Y - H)/H.
-      const prime::malone::Viewer& v = scene.viewer;
-      const Vec3 forward = normalized(v.lookAt - v.eye);
-      const PictureProjection projection{
-          v.eye, forward - v.x + v.y, v.x * (2.0 / v.xRes), v.y * (-2.0 / v.yRes), 0.0, 0.0};
-      report.written =
-          writeOverlay(flags->overlay, img, maloneSegments(log.events), projection, x, y);
+      report.written = writeOverlay(flags->overlay, img, probed);
     }
     return report;
   };

@@ -14,6 +14,7 @@
 #include "src/cli/live_render.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
+#include "src/cli/malone/probe_pixel.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
 #include "src/cli/view_8514.h"
@@ -74,6 +75,11 @@ class MaloneTrace : public TraceJob {
       cameraKey(camera, "prime trace " + file, kDefaultCameraFile,
                 "the scene's own viewer: prime trace " + file +
                     " renders this frame with no camera flag");
+    };
+    options.probe = [this](int x, int y) -> std::optional<ProbedPixel> {
+      if (x < 0 || y < 0 || x >= scene_->viewer.xRes || y >= scene_->viewer.yRes)
+        return std::nullopt;
+      return probePixel(*scene_, o_->trace, o_->file, x, y);
     };
   }
   void render(LiveRender& live) override {

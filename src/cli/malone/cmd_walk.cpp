@@ -8,6 +8,7 @@
 #include "legacy_io/malone/ppm.h"
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
+#include "src/cli/malone/probe_pixel.h"
 #include "src/malone/primitives.h"
 #include "src/render/render_rows.h"
 
@@ -43,8 +44,16 @@ class MaloneWalkFrame : public WalkFrame {
 
 class MaloneWalkScene : public WalkScene {
  public:
-  MaloneWalkScene(prime::malone::Scene scene, prime::malone::TraceSettings settings)
-      : scene_(std::move(scene)), tracer_(scene_, settings) {}
+  MaloneWalkScene(prime::malone::Scene scene, prime::malone::TraceSettings settings,
+                  std::string file)
+      : scene_(std::move(scene)), tracer_(scene_, settings), file_(std::move(file)) {}
+  // The probe through the viewer of the moment (MAL-D7), as `prime probe
+  // --camera` gives it.
+  std::optional<ProbedPixel> probe(const WalkView& view, int x, int y) const override {
+    prime::malone::Scene moved = scene_;
+    moved.viewer = prime::malone::viewerOf(view.view.camera());
+    return probePixel(moved, tracer_.settings(), file_, x, y);
+  }
   std::vector<std::string> profiles() const override { return {"document"}; }
   std::unique_ptr<WalkFrame> frame(const WalkView&) const override {
     return std::make_unique<MaloneWalkFrame>(tracer_);
@@ -64,6 +73,7 @@ class MaloneWalkScene : public WalkScene {
  private:
   prime::malone::Scene scene_;
   Tracer tracer_;  // over scene_: built once, lights and primitives fixed
+  std::string file_;
 };
 
 }  // namespace
@@ -85,7 +95,7 @@ WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
     job.name = o->file;
     job.camera = o->applied ? *o->applied : prime::malone::freeCamera(scene.viewer);
     job.centre = box.empty() ? job.camera.lookAt : box.centre();
-    job.scene = std::make_unique<MaloneWalkScene>(std::move(scene), o->trace);
+    job.scene = std::make_unique<MaloneWalkScene>(std::move(scene), o->trace, o->file);
     return job;
   };
 }

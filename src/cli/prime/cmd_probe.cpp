@@ -5,6 +5,7 @@
 #include "palette/prime/color_num.h"
 #include "palette/prime/export.h"
 #include "src/cli/overlay.h"
+#include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
 #include "src/cli/system.h"
 #include "src/prime/render/tracer_modern.h"
@@ -58,6 +59,65 @@ std::vector<OverlaySegment> primeSegments(const std::vector<ProbeEvent>& events)
 
 }  // namespace
 
+ProbedPixel probePixel(const Scene& scene, const RenderSettings& settings, const Ray& r,
+                       const std::string& where, int column, int row) {
+  // The tracer of the chosen profile; only the modern one says so (the
+  // 1991 output is what it always was).
+  const Profile profile = settings.profile;
+  const bool modern = profile == Profile::Modern;
+  const char* profileName = modern ? "modern" : profile == Profile::Thesis ? "thesis" : nullptr;
+  TraceStats stats;
+  Probe probe;
+  Rgb color;
+  if (profile == Profile::Thesis) {
+    // Sample 0 of the pixel (its soft-shadow points are those of the
+    // render's first sample; a --ray is pixel (0, 0)'s).
+    const SampleId sample{
+        PixelKey{settings.sampling.seed, static_cast<std::uint32_t>(std::max(row, 0)),
+                 static_cast<std::uint32_t>(std::max(column, 0))},
+        0};
+    color =
+        TracerThesis(scene, settings.trace, settings.thesis).castRay(r, 0, stats, sample, &probe);
+  } else {
+    color = modern ? TracerModern(scene, settings.trace).castRay(r, 0, stats, &probe)
+                   : Tracer1991(scene, settings.trace).castRay(r, 0, stats, &probe);
+  }
+  const int index = paletteIndex(color, settings, stats);
+  const PaletteTable table =
+      settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
+  const PaletteRgb shown = table[static_cast<std::size_t>(index & 0xFF)];
+  ProbedPixel out;
+  JsonObject doc;
+  doc.add("scene", scene.name).add("where", where);
+  if (profileName) doc.add("profile", profileName);
+  doc.addJson("events", probe.jsonEvents())
+      .add("color", color)
+      .add("index", index)
+      .addJson("paletteRgb", "[" + std::to_string(shown.r) + "," + std::to_string(shown.g) + "," +
+                                 std::to_string(shown.b) + "]")
+      .add("rays", stats.rays());
+  out.json = doc.str();
+  std::ostringstream text;
+  text << scene.name << ": " << where
+       << (profileName ? std::string(" (") + profileName + " profile)" : "") << "\n";
+  for (const auto& e : probe.events)
+    text << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
+  text << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r << ", "
+       << shown.g << ", " << shown.b << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
+  out.text = text.str();
+  const LinearView v = PrimeCamera(settings.camera).linearView();
+  out.camera = {v.eye, v.toFirst, v.stepAcross, v.stepDown, 0.5, 0.5};
+  out.segments = primeSegments(probe.events);
+  out.column = column;
+  out.row = row;
+  return out;
+}
+
+std::string pixelWhere(const PrimeCamera& camera, int x, int y) {
+  return "pixel " + std::to_string(x) + " " + std::to_string(y) + " (screen " +
+         std::to_string(camera.screenX(x)) + ", " + std::to_string(camera.screenY(y)) + ")";
+}
+
 ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& flags) {
   auto dir = std::make_shared<std::string>();
   auto ray = std::make_shared<std::vector<double>>();
@@ -87,8 +147,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
                                                     std::to_string(camera.columns()) + " x " +
                                                     std::to_string(camera.rows()) + ")");
         r = camera.primaryRay(y, x);
-        where = "pixel " + std::to_string(x) + " " + std::to_string(y) + " (screen " +
-                std::to_string(camera.screenX(x)) + ", " + std::to_string(camera.screenY(y)) + ")";
+        where = pixelWhere(camera, x, y);
       } else {
         r.o = {(*ray)[0], (*ray)[1], (*ray)[2]};
         r.d = {(*ray)[3], (*ray)[4], (*ray)[5]};
@@ -96,51 +155,9 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
           throw CLI::ValidationError("--ray", "the direction is 0 0 0; give a non-zero direction");
         where = "ray from " + fmt(r.o) + " towards " + fmt(r.d);
       }
-      // The tracer of the chosen profile; only the modern one says so (the
-      // 1991 output is what it always was).
-      const Profile profile = options->settings.profile;
-      const bool modern = profile == Profile::Modern;
-      const char* profileName = modern ? "modern" : profile == Profile::Thesis ? "thesis" : nullptr;
-      TraceStats stats;
-      Probe probe;
-      Rgb color;
-      if (profile == Profile::Thesis) {
-        // Sample 0 of the pixel (its soft-shadow points are those of the
-        // render's first sample; a --ray is pixel (0, 0)'s).
-        const SampleId sample{
-            PixelKey{options->settings.sampling.seed,
-                     static_cast<std::uint32_t>(pixel->empty() ? 0 : (*pixel)[1]),
-                     static_cast<std::uint32_t>(pixel->empty() ? 0 : (*pixel)[0])},
-            0};
-        color = TracerThesis(scene, options->settings.trace, options->settings.thesis)
-                    .castRay(r, 0, stats, sample, &probe);
-      } else {
-        color = modern ? TracerModern(scene, options->settings.trace).castRay(r, 0, stats, &probe)
-                       : Tracer1991(scene, options->settings.trace).castRay(r, 0, stats, &probe);
-      }
-      const int index = paletteIndex(color, options->settings, stats);
-      const PaletteTable table =
-          options->settings.mapping == ColorMapping::Plate3 ? plate3Palette() : initPalette();
-      const PaletteRgb shown = table[static_cast<std::size_t>(index & 0xFF)];
-      ProbeReport report;
-      JsonObject doc;
-      doc.add("scene", scene.name).add("where", where);
-      if (profileName) doc.add("profile", profileName);
-      doc.addJson("events", probe.jsonEvents())
-          .add("color", color)
-          .add("index", index)
-          .addJson("paletteRgb", "[" + std::to_string(shown.r) + "," + std::to_string(shown.g) +
-                                     "," + std::to_string(shown.b) + "]")
-          .add("rays", stats.rays());
-      report.json = doc.str();
-      std::ostringstream text;
-      text << scene.name << ": " << where
-           << (profileName ? std::string(" (") + profileName + " profile)" : "") << "\n";
-      for (const auto& e : probe.events)
-        text << std::string(2 * e.depth + 2, ' ') << e.kind << ": " << e.text << "\n";
-      text << "colour " << fmt(color) << " -> palette index " << index << " = (" << shown.r << ", "
-           << shown.g << ", " << shown.b << ") of 255; " << stats.rays() << " ray(s) in the tree\n";
-      report.text = text.str();
+      const int column = pixel->empty() ? -1 : (*pixel)[0], row = pixel->empty() ? -1 : (*pixel)[1];
+      const ProbedPixel probed = probePixel(scene, options->settings, r, where, column, row);
+      ProbeReport report{probed.text, probed.json, ""};
       if (!flags->overlay.empty()) {
         // The picture trace writes in true colour, the tree over it.
         RenderSettings settings = options->settings;
@@ -153,11 +170,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
           const Rgb8 t = trueColour(c);
           img.rgb.insert(img.rgb.end(), {t.r, t.g, t.b});
         }
-        const LinearView v = camera.linearView();
-        const PictureProjection projection{v.eye, v.toFirst, v.stepAcross, v.stepDown, 0.5, 0.5};
-        const std::vector<OverlaySegment> segments = primeSegments(probe.events);
-        report.written =
-            writeOverlay(flags->overlay, img, segments, projection, (*pixel)[0], (*pixel)[1]);
+        report.written = writeOverlay(flags->overlay, img, probed);
       }
       return report;
     }

@@ -26,6 +26,7 @@
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
 #include "src/cli/prime/display_options.h"
+#include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
@@ -294,6 +295,15 @@ class PrimeTrace : public TraceJob {
       cameraKey(free, "prime trace " + dir + ", profile " + profile, kDefaultCameraFile,
                 "the listing's camera: prime trace " + dir +
                     " renders this frame with no camera flag (any of them makes a free camera)");
+    };
+    // A click: the pixel's probe, with the render's scene and settings; the
+    // picture sits at at_ of the screen.
+    options.probe = [this](int column, int row) -> std::optional<ProbedPixel> {
+      const int x = column - at_.left, y = row - at_.top;
+      if (x < 0 || y < 0 || x >= camera_->columns() || y >= camera_->rows()) return std::nullopt;
+      return probePixel(*scene_, options_->settings, camera_->primaryRay(y, x),
+                        pixelWhere(*camera_, x, y), x, y)
+          .placedAt(at_.left, at_.top);
     };
   }
   void render(LiveRender& live) override {

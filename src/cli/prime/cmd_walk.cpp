@@ -13,6 +13,7 @@
 #include "palette/prime/color_num.h"
 #include "palette/prime/export.h"
 #include "src/cli/prime/commands.h"
+#include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
 #include "src/prime/render/walk_render.h"
 #include "src/prime/scene/object_bvh.h"
@@ -77,6 +78,16 @@ class PrimeWalkScene : public WalkScene {
       lit.lights[i].pt = view.lights[i];
     return std::make_unique<PrimeWalkFrame>(
         std::move(lit), walkProfiles()[static_cast<std::size_t>(view.profile)], settings_);
+  }
+  std::optional<ProbedPixel> probe(const WalkView& view, int x, int y) const override {
+    Scene lit = scene_;
+    for (std::size_t i = 0; i < view.lights.size() && i < lit.lights.size(); ++i)
+      lit.lights[i].pt = view.lights[i];
+    RenderSettings settings = settings_;
+    settings.profile = walkProfiles()[static_cast<std::size_t>(view.profile)];
+    settings.camera.free = view.view.camera();
+    const PrimeCamera camera(settings.camera);
+    return probePixel(lit, settings, camera.primaryRay(y, x), pixelWhere(camera, x, y), x, y);
   }
   // True colour, or each colour's palette index (ColorNum / X1 as the
   // settings map it) through the palette's 8-bit table (the 8514/A view

@@ -8,10 +8,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 #include "legacy_io/prime/graph_file.h"
 #include "palette/png_image.h"
@@ -481,9 +483,47 @@ TEST_F(XvfbTest, WalkOrbitsWithKeysAndDragAndResetsWithHome) {
   EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
 }
 
+namespace {
+
+// What `prime ARGS...` prints on stdout (its exit status must be 0).
+std::string stdoutOf(const std::vector<std::string>& argv) {
+  ChildProcess p(argv);
+  EXPECT_EQ(p.wait(120000).value_or(-1), 0) << p.err();
+  return p.out();
+}
+
+bool waitForOut(ChildProcess& p, const std::string& text, int ms) {
+  return p.readUntil(
+      [&](const std::string& o, const std::string&) { return o.find(text) != std::string::npos; },
+      ms);
+}
+
+// Clicks pixel (48, 36) of a walk's window and returns what the click printed
+// (the probe's text); C must come after it (its flags end the text).
+void clickTheMiddle(const std::function<int(const std::vector<std::string>&)>& run,
+                    ChildProcess& walk, const std::string& id) {
+  EXPECT_EQ(run({"xdotool", "mousemove", "--window", id, "--sync", "48", "36", "click", "1"}), 0);
+  EXPECT_TRUE(waitForOut(walk, " ray", 20000)) << walk.out();
+}
+
+// A click on a walk's pixel printed the probe of that pixel through the
+// camera of the moment: `prime probe --camera FILE --pixel` (the walk's
+// picture at (left, top) of probe's) says the same.
+void expectClickIsProbe(const std::string& scene, const std::string& cameras,
+                        const std::string& walkOut, int left, int top) {
+  const std::string probe = stdoutOf({PRIME_EXE, "probe", scene, "--camera", cameras, "--pixel",
+                                      std::to_string(left + 48), std::to_string(top + 36)});
+  EXPECT_FALSE(probe.empty());
+  EXPECT_EQ(walkOut.substr(0, walkOut.find("--eye")), probe)
+      << "the click's text is not probe --camera's";
+}
+
+}  // namespace
+
 // prime walk's C key: the camera the window shows, as flags on stdout and
 // appended to the camera file; `trace --camera FILE` then renders exactly
-// the frame the window showed, pixel for pixel.
+// the frame the window showed, pixel for pixel. A click on a pixel before it
+// printed what `probe --camera FILE` says of that pixel.
 TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
   prime::test::TempScene s;
   sphere(s);
@@ -505,12 +545,16 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
     ASSERT_TRUE(walk.waitForErr(done, 60000)) << walk.err();
   }
   const prime::Image8 shown = stableCapture(run, id, s.path("walk.xwd"));
+  clickTheMiddle(run, walk, id);
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
   ASSERT_TRUE(walk.waitForErr("camera appended to", 20000)) << walk.err();
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
-  // stdout holds the flags; the file holds them too, after a comment.
-  const std::string flags = walk.out().substr(0, walk.out().find('\n'));
+  // stdout holds the click's probe, then the flags; the file holds them too,
+  // after a comment.
+  expectClickIsProbe(s.path().string(), cameras, walk.out(), 0, 0);
+  const std::string flagsOut = walk.out().substr(walk.out().find("--eye"));
+  const std::string flags = flagsOut.substr(0, flagsOut.find('\n'));
   EXPECT_THAT(flags, HasSubstr("--eye "));
   EXPECT_THAT(flags, HasSubstr(" --size 96 72"));
   std::ifstream in(cameras);
@@ -529,7 +573,8 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
 // Malone's and CGL's walks: the same keys, and C's camera given to `trace
 // --camera` renders the frame the window showed (CGL: with --aalevel 0, the
 // walk's one ray per pixel, in the --size window in the middle of its
-// 512 x 512 frame).
+// 512 x 512 frame). A click on a pixel printed what `probe --camera FILE`
+// says of it.
 TEST_F(XvfbTest, MaloneAndCglWalksHandTheirCameraToTrace) {
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
   const fs::path scenes = fs::path(PRIME_SCENES).parent_path();
@@ -560,6 +605,7 @@ TEST_F(XvfbTest, MaloneAndCglWalksHandTheirCameraToTrace) {
     }
     const prime::Image8 shown = stableCapture(run, id, out.path("walk.xwd"));
     EXPECT_GT(differingPixels(first, shown), 50u) << "the keys changed nothing";
+    clickTheMiddle(run, walk, id);
     EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
     ASSERT_TRUE(walk.waitForErr("camera appended to", 20000)) << walk.err();
     EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
@@ -587,6 +633,7 @@ TEST_F(XvfbTest, MaloneAndCglWalksHandTheirCameraToTrace) {
                                            3 +
                                        static_cast<std::size_t>(k)]);
     EXPECT_EQ(differingPixels(shown, want), 0u) << "the camera file did not give the walk's frame";
+    expectClickIsProbe(c.scene, cameras, walk.out(), c.left, c.top);
   }
 }
 
@@ -759,4 +806,77 @@ TEST_F(SmallXvfbTest, CglTraceFullscreenFillsTheScreen) {
   EXPECT_EQ(g, "800x600+0+0");
   EXPECT_EQ(toolOrSay({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+}
+
+// A click on a pixel of trace's finished window, for every system: stdout gets
+// the probe's text for that pixel, and the window shows the drawing `prime
+// probe --pixel X Y --overlay` writes headless, pixel for pixel (Malone's
+// and CGL's windows show their picture as written; PRIME's shows the 8514/A
+// screen, whose colours are the palette's: there the probed pixel is
+// outlined). A right click gives back the picture.
+TEST_F(XvfbTest, ClickOnAPixelOfTraceDrawsItsRaysAsProbeOverlayDoes) {
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  const fs::path scenes = fs::path(PRIME_SCENES).parent_path();
+  prime::test::TempScene plate;
+  fs::copy(scenes / "prime" / "plate3", plate.path(), fs::copy_options::recursive);
+  ASSERT_EQ(run({PRIME_EXE, "model", plate.path().string()}), 0);
+  struct Case {
+    std::string scene;
+    int x, y;
+    bool sameAsOverlay;
+  };
+  const std::vector<Case> cases = {{(scenes / "malone" / "glass.mal").string(), 200, 150, true},
+                                   {(scenes / "cgl" / "glass.cgl").string(), 330, 280, true},
+                                   {plate.path().string(), 200, 400, false}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.scene);
+    prime::test::TempScene out;
+    std::vector<std::string> argv = {PRIME_EXE, "trace", c.scene, "--png",
+                                     out.path("picture.png").string()};
+    if (!c.sameAsOverlay)  // PRIME: not into the scene's own graph file
+      argv.insert(argv.end(), {"--out", out.path("picture.graph").string()});
+    ChildProcess trace(argv, env(), out.path().string());
+    ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 60000)) << trace.err();
+    const std::string id = windowId(trace.err());
+    ASSERT_FALSE(id.empty()) << trace.err();
+    const prime::Image8 before = stableCapture(run, id, out.path("before.xwd"));
+    // PRIME's picture sits at its placement on the 8514/A screen, as the
+    // graph file's companion records it ("at LEFT TOP").
+    int left = 0, top = 0;
+    if (!c.sameAsOverlay) {
+      std::ifstream info(out.path("picture.graph.info"));
+      for (std::string line; std::getline(info, line);)
+        if (line.rfind("at ", 0) == 0) std::istringstream(line.substr(3)) >> left >> top;
+    }
+    const int wx = left + c.x, wy = top + c.y;
+    const std::string probe =
+        stdoutOf({PRIME_EXE, "probe", c.scene, "--pixel", std::to_string(c.x), std::to_string(c.y),
+                  "--overlay", out.path("overlay.png").string()});
+    const std::string text = probe.substr(0, probe.rfind("wrote "));
+    ASSERT_FALSE(text.empty());
+    EXPECT_EQ(run({"xdotool", "mousemove", "--window", id, "--sync", std::to_string(wx),
+                   std::to_string(wy), "click", "1"}),
+              0);
+    ASSERT_TRUE(waitForOut(trace, text, 20000)) << "stdout: " << trace.out();
+    const prime::Image8 shown = stableCapture(run, id, out.path("shown.xwd"));
+    if (c.sameAsOverlay) {
+      EXPECT_EQ(differingPixels(shown, prime::readPng(out.path("overlay.png").string())), 0u)
+          << "the window's drawing is not probe --overlay's";
+    } else {
+      const auto at = [&](int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * shown.width + x) * 3;
+        return std::array<int, 3>{shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]};
+      };
+      EXPECT_EQ(at(wx + 3, wy), (std::array<int, 3>{255, 0, 255})) << "the pixel is outlined";
+      EXPECT_EQ(at(wx - 3, wy), (std::array<int, 3>{255, 0, 255}));
+    }
+    EXPECT_GT(differingPixels(before, shown), 1000u);
+    EXPECT_EQ(run({"xdotool", "mousemove", "--window", id, "--sync", std::to_string(wx),
+                   std::to_string(wy), "click", "3"}),
+              0);
+    EXPECT_EQ(differingPixels(before, stableCapture(run, id, out.path("after.xwd"))), 0u)
+        << "a right click did not give back the picture";
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+    EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+  }
 }
