@@ -311,6 +311,13 @@ using detail::Reader;
 
 SceneFile readScene(const std::string& text, const std::string& display,
                     const ReadOptions& options) {
+  // A ^Z ends the text (M41, every system's rule; readInputText has cut a
+  // file's already).
+  if (text.find(io::kDosEof) != std::string::npos) {
+    std::string cut = text;
+    io::endAtDosEof(cut);
+    return readScene(cut, display, options);
+  }
   if (text.size() > kMaxBytes)
     throw io::InputError(io::InputLocation{display, 1},
                          "larger than 64 MiB: not read as a CGL scene file (CGL-D2)");

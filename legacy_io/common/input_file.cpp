@@ -99,7 +99,13 @@ std::vector<std::uint8_t> readInputFile(const std::string& path, const InputFile
 }
 
 std::string readInputText(const std::string& path, const InputFileOptions& options) {
-  return readWhole<std::string>(path, options);
+  std::string text = readWhole<std::string>(path, options);
+  endAtDosEof(text);
+  return text;
+}
+
+void endAtDosEof(std::string& text) {
+  if (const std::size_t end = text.find(kDosEof); end != std::string::npos) text.resize(end);
 }
 
 }  // namespace prime::io

@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace prime::io {
@@ -28,6 +29,21 @@ struct InputFileOptions {
 
 std::vector<std::uint8_t> readInputFile(const std::string& path,
                                         const InputFileOptions& options = {});
+// A text input, by the rule every text input of every system is read by
+// (M41): a ^Z (0x1A, the end of file DOS's COPY and the editors of the time
+// wrote, which Turbo C's text mode stops at) ends the text; nothing after it
+// is read. (A leading UTF-8 byte order mark stays, for the reader to skip
+// with kUtf8Bom: byte offsets in messages count from the file's first byte.)
 std::string readInputText(const std::string& path, const InputFileOptions& options = {});
+
+// The same rule for text that did not come from a file (standard input, a
+// fuzzer): `text` cut at its first ^Z.
+void endAtDosEof(std::string& text);
+inline constexpr char kDosEof = '\x1A';
+inline constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+// The length of a leading byte order mark of `text` (3 or 0).
+inline std::size_t bomLength(std::string_view text) {
+  return text.substr(0, 3) == kUtf8Bom ? 3 : 0;
+}
 
 }  // namespace prime::io

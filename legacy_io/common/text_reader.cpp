@@ -29,9 +29,11 @@ std::string normalizeLineBreaks(std::string text) {
 
 TextReader::TextReader(std::string text, std::string display)
     : text_(normalizeLineBreaks(std::move(text))), display_(std::move(display)) {
-  // M35: a UTF-8 byte order mark (an editor's, never the listing's) is
-  // skipped, as the Malone and CGL readers skip it.
-  if (text_.size() >= 3 && text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;
+  // M41: a ^Z ends the text (also of a text that came from no file); M35: a
+  // UTF-8 byte order mark (an editor's, never the listing's) is skipped, as
+  // every system's readers skip it.
+  endAtDosEof(text_);
+  pos_ = bomLength(text_);
 }
 
 TextReader TextReader::open(const std::string& path, const std::string& display) {

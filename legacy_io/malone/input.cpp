@@ -433,6 +433,13 @@ bool isPrimitive(ObjectId id) {
 
 SceneFile readScene(const std::string& text, const std::string& display,
                     const ReadOptions& options) {
+  // A ^Z ends the text (M41, every system's rule; readInputText has cut a
+  // file's already).
+  if (text.find(io::kDosEof) != std::string::npos) {
+    std::string cut = text;
+    io::endAtDosEof(cut);
+    return Reader(cut, display, options).read();
+  }
   return Reader(text, display, options).read();
 }
 

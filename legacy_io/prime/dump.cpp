@@ -1,6 +1,7 @@
 #include "legacy_io/prime/dump.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -16,12 +17,14 @@
 namespace prime::io {
 
 std::optional<DatabaseKind> kindFromFileName(const std::string& path) {
-  const std::string name = std::filesystem::path(path).filename().string();
-  if (name == "PrimFile") return DatabaseKind::PrimFile;
-  if (name == "List") return DatabaseKind::ObjList;
+  // Without regard to case (M40): a DOS disk's PRIMFILE, LIST, O1, MAP1_R.MAP.
+  std::string name = std::filesystem::path(path).filename().string();
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (name == "primfile") return DatabaseKind::PrimFile;
+  if (name == "list") return DatabaseKind::ObjList;
   if (name == "graph_scr") return DatabaseKind::GraphFile;
-  if (std::regex_match(name, std::regex("O[0-9]+"))) return DatabaseKind::ObjFile;
-  if (std::regex_match(name, std::regex("Map[0-9]+_[RGB]\\.map"))) return DatabaseKind::MapFile;
+  if (std::regex_match(name, std::regex("o[0-9]+"))) return DatabaseKind::ObjFile;
+  if (std::regex_match(name, std::regex("map[0-9]+_[rgb]\\.map"))) return DatabaseKind::MapFile;
   return std::nullopt;
 }
 

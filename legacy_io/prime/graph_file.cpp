@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
+#include <string_view>
 
 #include "legacy_io/common/bytes.h"
 #include "legacy_io/common/output_file.h"
@@ -18,7 +20,38 @@ std::vector<std::uint8_t> toBytes(const GraphFile& f) {
   return w.take();
 }
 
+std::optional<std::string> pictureKindOf(std::span<const std::uint8_t> bytes) {
+  const auto starts = [&](std::string_view magic) {
+    return bytes.size() >= magic.size() &&
+           std::equal(magic.begin(), magic.end(), bytes.begin(),
+                      [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; });
+  };
+  if (starts("\x89PNG\r\n\x1a\n")) return "a PNG picture";
+  if (starts("GIF87a") || starts("GIF89a")) return "a GIF picture";
+  if (starts("\xFF\xD8\xFF")) return "a JPEG picture";
+  if (starts("P6") || starts("P3")) return "a PPM picture";
+  if (starts("BM")) return "a BMP picture";
+  return std::nullopt;
+}
+
+namespace {
+
+// A picture of another kind (a PNG given to `prime view`) is said to be one,
+// not read as a graph file and called truncated: a graph file has no magic
+// of its own, but its header (graphType, then two sizes below 8192) never
+// begins with one of these signatures.
+void refuseOtherPictures(std::span<const std::uint8_t> bytes, const std::string& name) {
+  if (const auto kind = pictureKindOf(bytes))
+    throw InputError({name, std::nullopt, 0}, "file",
+                     "a PRIME graph file (graph_scr, or the .partial of an aborted trace: a "
+                     "header of three Turbo C ints and a palette index per pixel)",
+                     *kind);
+}
+
+}  // namespace
+
 GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::string& name) {
+  refuseOtherPictures(bytes, name);
   ByteReader r(bytes, name);
   GraphFile f;
   f.graphType = r.getInt16("graphType");
@@ -55,6 +88,7 @@ GraphFile readGraphFile(const std::string& path) {
 
 GraphFilePrefix graphFilePrefixFromBytes(std::span<const std::uint8_t> bytes,
                                          const std::string& name) {
+  refuseOtherPictures(bytes, name);
   ByteReader r(bytes, name);
   GraphFile f;
   f.graphType = r.getInt16("graphType");

@@ -7,6 +7,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct GraphFile {
 };
 
 std::vector<std::uint8_t> toBytes(const GraphFile& f);
+// What kind of picture `bytes` begin like ("a PNG picture"), or nullopt: the
+// graph-file readers refuse such a file naming it, rather than reading its
+// bytes as a header and pixels.
+std::optional<std::string> pictureKindOf(std::span<const std::uint8_t> bytes);
 GraphFile graphFileFromBytes(std::span<const std::uint8_t> bytes, const std::string& name);
 GraphFile readGraphFile(const std::string& path);
 

@@ -9,6 +9,7 @@
 
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
+#include "legacy_io/prime/model_c.h"
 #include "legacy_io/prime/model_commit.h"
 #include "legacy_io/prime/turbo_c.h"
 #include "src/prime/math/listing_matrix.h"
@@ -317,9 +318,9 @@ class Modeller {
 }  // namespace
 
 Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
-                 const ModelOptions& options) {
+                 const ModelOptions& options, const std::string& from) {
   Modeller m(scene, options);
-  const std::string origin = scene.display(scene.root() / "Model.txt");
+  const std::string origin = from.empty() ? scene.display(scene.root() / "Model.txt") : from;
   m.run(calls, origin);
   Model model = m.take();
   if (model.objects.empty() && !options.allowEmpty)  // M22
@@ -333,13 +334,32 @@ Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
   return model;
 }
 
+fs::path modelSource(const SceneDir& scene) {
+  std::error_code ec;
+  const fs::path text = scene.find(".", "Model.txt");
+  if (fs::exists(fs::symlink_status(text, ec)))
+    return scene.existingInput(".", "Model.txt", "prime model");
+  const fs::path c = scene.find(".", "Model.c");
+  if (fs::exists(fs::symlink_status(c, ec)))
+    return scene.existingInput(".", "Model.c", "prime model");
+  throw InputError({scene.display(text), std::nullopt, std::nullopt},
+                   "file does not exist, nor does a 1991 disk's Model.c (" +
+                       scene.display(scene.root() / "Model.c") +
+                       "): one of them names the scene's objects and maps");
+}
+
 Model buildModel(const SceneDir& scene, const ModelOptions& options) {
-  const fs::path p = scene.existingInput(".", "Model.txt", "prime model");
+  const fs::path p = modelSource(scene);
+  std::string name = p.filename().string();
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const bool c = name == "model.c";  // however the scene spells it
   io::InputFileOptions input;
-  input.what = "a Model.txt";
+  input.what = c ? "a Model.c" : "a Model.txt";
   input.display = scene.display(p);
-  return buildModel(scene, parseModelText(io::readInputText(p.string(), input), scene.display(p)),
-                    options);
+  const std::string text = io::readInputText(p.string(), input);
+  return buildModel(
+      scene, c ? parseModelC(text, scene.display(p)) : parseModelText(text, scene.display(p)),
+      options, scene.display(p));
 }
 
 void writeModel(const SceneDir& scene, const Model& model, const DirLock* held) {

@@ -47,10 +47,16 @@ struct Model {
   std::vector<std::string> warnings;    // listing quirks the scene runs into
 };
 
-// Runs the calls of `calls` against the text inputs of `scene`.
+// Runs the calls of `calls` against the text inputs of `scene`; `origin`
+// names the file the calls came from in messages ("" : the scene's
+// Model.txt).
 Model buildModel(const SceneDir& scene, const std::vector<ModelCall>& calls,
-                 const ModelOptions& options = {});
-// Reads <scene>/Model.txt and builds from it.
+                 const ModelOptions& options = {}, const std::string& origin = "");
+// The file the scene's calls are read from (M42): Model.txt (as the scene
+// spells it, M40), else a 1991 disk's Model.c (model_c.h); Model.txt when
+// both exist. Throws InputError naming both when neither does.
+std::filesystem::path modelSource(const SceneDir& scene);
+// Reads the scene's calls (modelSource) and builds from them.
 Model buildModel(const SceneDir& scene, const ModelOptions& options = {});
 // Writes every database of `model` into `scene` as one switch (M19). `held`:
 // the scene's lock, taken by the caller with lockForModel; null: taken here

@@ -88,7 +88,10 @@ fs::path databasePath(const SceneDir& scene, const std::string& rel, const std::
   if (sub != "prim" && sub != "obj" && sub != "map")
     throw InputError({origin, std::nullopt, std::nullopt}, "database path",
                      "prim/, obj/ or map/ and a file name", "\"" + rel + "\"");
-  return scene.file(sub, name, origin);
+  scene.file(sub, name, origin);  // the name checks
+  // Where the scene has it (M40): a DOS copy's OBJ/O1 is written over as
+  // OBJ/O1, into the directories it has, never beside them as obj/O1.
+  return scene.find(sub, name);
 }
 
 std::vector<Entry> readEntries(const SceneDir& scene, const fs::path& file) {
@@ -137,8 +140,8 @@ bool hasDigest(const fs::path& p, const Entry& e) {
 void removeDeadTemporaries(const SceneDir& scene) {
   for (const char* sub : {".", "prim", "obj", "map"}) {
     std::error_code ec;
-    if (fs::is_directory(scene.root() / sub, ec))
-      removeStaleTemporariesIn((scene.root() / sub).string());
+    const fs::path dir = scene.find(".", sub);  // PRIM/ of a DOS copy too (M40)
+    if (fs::is_directory(dir, ec)) removeStaleTemporariesIn(dir.string());
   }
 }
 
@@ -166,7 +169,8 @@ std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene) {
   // the directory is left as it was.
   std::error_code ec;
   bool prime = false;
-  for (const char* name : {"Model.txt", kModelStamp, kModelJournal, kModelLock, "prim", "obj"})
+  for (const char* name :
+       {"Model.txt", "Model.c", kModelStamp, kModelJournal, kModelLock, "prim", "obj"})
     prime = prime || fs::exists(scene.find(".", name), ec);
   if (!prime) {
     verifyModel(scene);

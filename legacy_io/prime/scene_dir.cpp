@@ -113,12 +113,36 @@ fs::path SceneDir::existingInput(const std::string& sub, const std::string& name
   return p;
 }
 
+fs::path findIgnoringCase(const fs::path& typed) {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(typed, ec))) return typed;
+  fs::path at = typed.root_path();
+  for (const auto& part : typed.relative_path()) {
+    const fs::path next = at / part;
+    if (part == "." || part == ".." || fs::exists(fs::symlink_status(next, ec))) {
+      at = next;
+      continue;
+    }
+    const fs::path found = SceneDir(at.empty() ? fs::path(".") : at).find(".", part.string());
+    if (!fs::exists(fs::symlink_status(found, ec))) return typed;
+    at /= found.filename();
+  }
+  return at;
+}
+
 std::vector<fs::path> SceneDir::inputFiles() const {
   std::vector<fs::path> files;
   std::error_code ec;
-  if (fs::is_regular_file(root_ / "Model.txt", ec)) files.push_back(root_ / "Model.txt");
-  for (const char* sub : {"prim", "bound", "obj", "obj/Copy", "map", "light"}) {
-    const fs::path d = root_ / sub;
+  // The names as the scene has them (M40: MODEL.TXT, OBJ/COPY of a DOS copy).
+  for (const char* name : {"Model.txt", "Model.c"})
+    if (const fs::path m = find(".", name); fs::is_regular_file(m, ec)) files.push_back(m);
+  for (const auto& [parent, sub] : {std::pair{".", "prim"},
+                                    {".", "bound"},
+                                    {".", "obj"},
+                                    {"obj", "Copy"},
+                                    {".", "map"},
+                                    {".", "light"}}) {
+    const fs::path d = find(parent, sub);
     if (fs::is_symlink(fs::symlink_status(d, ec)) || !fs::is_directory(d, ec)) continue;
     for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
       if (it->is_regular_file(ec)) files.push_back(it->path());

@@ -39,7 +39,7 @@ class SceneDir {
   // How a path inside the scene is shown in messages: "<scene>/prim/S1.txt".
   std::string display(const std::filesystem::path& p) const;
   const std::filesystem::path& root() const { return root_; }
-  // Every regular file a scene is made of: Model.txt and the files of prim/,
+  // Every regular file a scene is made of: Model.txt, Model.c and the files of prim/,
   // bound/, obj/, obj/Copy/, map/ and light/ (text inputs and databases), the
   // files no output of a run may replace (run_inputs.h). Not graph_scr.
   std::vector<std::filesystem::path> inputFiles() const;
@@ -54,6 +54,12 @@ class SceneDir {
   std::filesystem::path root_;
   std::shared_ptr<Listing> listing_ = std::make_shared<Listing>();
 };
+
+// A path a user typed, as it is on disk (M40): each part that does not exist
+// as written is matched in its directory without regard to case
+// (`prime dump D/PRIM/PRIMFILE` finds D/PRIM/PrimFile and a DOS disk's
+// D/PRIM/PRIMFILE alike); the path as written when nothing matches.
+std::filesystem::path findIgnoringCase(const std::filesystem::path& typed);
 
 // Longest file name SceneDir::file accepts (NAME_MAX on Linux).
 inline constexpr std::size_t kMaxFileName = 255;

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <sstream>
 
+#include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/prime/map_file.h"
 
 namespace prime::io {
@@ -208,6 +210,13 @@ LightText parseLightText(TextReader& in) {
   return l;
 }
 
+std::string doubleQuoted(std::string_view word) {
+  // As PRIME's readers show words: in double quotes, control bytes escaped.
+  std::string q = quotedWord(word, 40);
+  q.front() = q.back() = '"';
+  return q;
+}
+
 std::vector<ModelCall> parseModelText(const std::string& text, const std::string& display) {
   // Model.txt is line oriented: one call of Model.c's main() per line.
   static const struct {
@@ -220,7 +229,11 @@ std::vector<ModelCall> parseModelText(const std::string& text, const std::string
       {"CopyObj", 3, "CopyObj <source object file> <destination object file> <copy file>"},
       {"AddMap", 1, "AddMap <map text file>"}};
   std::vector<ModelCall> calls;
-  std::istringstream lines(normalizeLineBreaks(text));  // CR-only is lines too (M21)
+  // CR-only is lines too (M21); a ^Z ends the text (M41), a leading byte
+  // order mark is skipped (M35).
+  std::string body = normalizeLineBreaks(text);
+  endAtDosEof(body);
+  std::istringstream lines(body.substr(bomLength(body)));
   std::string raw;
   int lineNo = 0;
   while (std::getline(lines, raw)) {
@@ -242,7 +255,7 @@ std::vector<ModelCall> parseModelText(const std::string& text, const std::string
     }
     if (!known)
       throw InputError({display, lineNo, std::nullopt}, "call",
-                       "one of AddObj, AddToObjList, CopyObj, AddMap", "\"" + call.name + "\"");
+                       "one of AddObj, AddToObjList, CopyObj, AddMap", doubleQuoted(call.name));
     calls.push_back(std::move(call));
   }
   return calls;

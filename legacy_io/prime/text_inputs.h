@@ -14,6 +14,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "legacy_io/common/text_reader.h"
@@ -84,6 +85,9 @@ Hue parseHueText(TextReader& in);
 ObjText parseObjText(TextReader& in);  // also checks child indices and cycles
 MapText parseMapText(TextReader& in);
 LightText parseLightText(TextReader& in);
+// A word of an input as PRIME's messages show it: "word", control bytes
+// escaped (\x1A), cut after 40 characters.
+std::string doubleQuoted(std::string_view word);
 // One call per line; '#' starts a comment; blank lines are ignored.
 std::vector<ModelCall> parseModelText(const std::string& text, const std::string& display);
 

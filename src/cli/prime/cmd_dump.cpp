@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "legacy_io/prime/dump.h"
+#include "legacy_io/prime/scene_dir.h"
 #include "src/cli/commands.h"
 
 namespace prime::cli {
@@ -12,7 +13,18 @@ void addDumpCommand(CLI::App& app, Action& action) {
   auto file = std::make_shared<std::string>();
   auto as = std::make_shared<std::string>();
   auto rows = std::make_shared<int>(8);
-  cmd->add_option("FILE", *file, "The binary file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("FILE", *file,
+                  "The binary file (its name matched without regard to case, as a scene's)")
+      ->required()
+      // As every reader of a scene finds its files (M40): D/PRIM/PRIMFILE is
+      // D/PRIM/PrimFile on a case-sensitive disk.
+      ->transform(CLI::Validator(
+          [](std::string& path) {
+            path = io::findIgnoringCase(path).string();
+            return std::string();
+          },
+          "", "case"))
+      ->check(CLI::ExistingFile);
   cmd->add_option("--as", *as, "Read it as this kind instead of guessing from its name")
       ->check(CLI::IsMember({"prim", "obj", "list", "map", "graph"}));
   cmd->add_option("--rows", *rows, "Rows of map/graph data to print")

@@ -1,4 +1,6 @@
-// prime model DIR: build the scene's databases from its text inputs (Model.c).
+// prime model DIR: build the scene's databases from its text inputs: the
+// calls of Model.txt, or of a 1991 disk's Model.c (M42).
+#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/prime/model_builder.h"
@@ -9,6 +11,8 @@
 
 namespace prime::cli {
 
+namespace fs = std::filesystem;
+
 void addModelCommand(CLI::App& app, Action& action) {
   auto* cmd =
       app.add_subcommand("model", "Build a scene's databases from its text inputs, as Model.c did");
@@ -17,7 +21,8 @@ void addModelCommand(CLI::App& app, Action& action) {
   auto quiet = std::make_shared<bool>(false);
   auto wait = std::make_shared<bool>(false);
   auto verify = std::make_shared<bool>(false);
-  cmd->add_option("DIR", *dir, "Scene directory (holds Model.txt, prim/, obj/, map/ ...)")
+  cmd->add_option("DIR", *dir,
+                  "Scene directory (holds Model.txt or a 1991 Model.c, prim/, obj/, map/ ...)")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--copy-type-from-source", options->copyTypeFromSource,
@@ -49,6 +54,13 @@ void addModelCommand(CLI::App& app, Action& action) {
       }
       const io::Model model = io::buildModel(scene, *options);
       io::writeModel(scene, model, lock.get());
+      // M42: Model.txt wins over a 1991 disk's Model.c; said, not silent.
+      if (std::error_code ec; fs::exists(scene.find(".", "Model.txt"), ec) &&
+                              fs::exists(scene.find(".", "Model.c"), ec))
+        std::cerr << "prime: " << scene.display(scene.find(".", "Model.c"))
+                  << " left alone: the calls were read from "
+                  << scene.display(scene.find(".", "Model.txt"))
+                  << " (Model.txt wins when a scene has both)\n";
       for (const auto& w : model.warnings) std::cerr << "prime: warning: " << w << "\n";
       // The values the listing turns into NaN or invisible objects (prime check).
       for (const auto& p : checkHues(scene)) std::cerr << "prime: warning: " << p.message << "\n";

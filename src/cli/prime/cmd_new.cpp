@@ -44,6 +44,7 @@ std::vector<std::pair<std::string, std::string>> sceneFiles() {
        "# one per line. Build the databases with `prime model DIR`, render with\n"
        "# `prime trace DIR --png out.png`, check values with `prime check DIR`.\n"
        "# Writing scenes: docs/prime/scene-authoring.md; every file: docs/prime/file-formats.md.\n"
+       "# (A 1991 disk's Model.c is read when there is no Model.txt; with both, this file wins.)\n"
        "AddObj d1.txt       # object 1: obj/D1.txt (its CSG tree) and obj/H1.txt (its hue)\n"
        "AddToObjList 1\n"
        "AddObj d2.txt       # object 2: the cube\n"

@@ -21,7 +21,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 CORPUS = os.path.join(HERE, "corpus")
 MARKER = b"%%prime:"
 SCENES = {"default": os.path.join(ROOT, "scenes", "prime", "default"),
-          "sphere": os.path.join(ROOT, "tests", "data", "prime", "sphere")}
+          "sphere": os.path.join(ROOT, "tests", "prime", "data", "sphere")}
 TEXT_SUBDIRS = ["", "prim", "bound", "obj", "obj/Copy", "map", "light"]
 
 
@@ -52,6 +52,8 @@ def model(prime, src, dst):
     for sub in TEXT_SUBDIRS:
         os.makedirs(os.path.join(dst, sub), exist_ok=True)
         d = os.path.join(src, sub)
+        if not os.path.isdir(d):  # a scene needs no bound/ or obj/Copy/
+            continue
         for name in sorted(os.listdir(d)):
             p = os.path.join(d, name)
             if os.path.isfile(p) and (name.endswith(".txt") or sub == "obj/Copy"):
@@ -193,6 +195,12 @@ def write_all(built):
     add("text_inputs", "edge-obj-cycle", b"d4\n- 1 2\n+ 0 3\nS 1\nB 1\nNULL\n")
     add("text_inputs", "edge-obj-ocopy", b"d3\n+ 1 2\nO 1 1\nO 1 2\nNULL\n")
     add("text_inputs", "edge-light-crlf", b"l0.1 0.1 0.1\r\n1\r\n+1e3 -2.5E2 0\r\n1 1 1\r\n")
+    add("text_inputs", "edge-model-c",
+        b'C/* Module: Model */\n#include <stdio.h>\nvoid main(void);\nvoid main(void)\n{\n'
+        b'  Message("Building model of scene");\n  InitFiles();\n  OpenFiles();\n'
+        b'  AddObj("d1.txt");\n  AddToObjList(0x1);\n  CopyObj("O1", "O2", "c1.txt"); // copy\n'
+        b'  AddMap("Map1.txt");\n  CloseFiles();\n  if (!MemoryEmpty())\n  {\n    FreeAll();\n'
+        b'    Error("main(): Number of Mallocs != Number of Frees");\n  }\n}\n\x1a')
     add("text_inputs", "edge-reader-words", b"r+150 1.5e2 -32768 32768 nan inf 0x10 word\t\n1.5x")
 
     # The inputs of tests/prime/unit/legacy_io/fuzz_regressions_test.cpp that are small.

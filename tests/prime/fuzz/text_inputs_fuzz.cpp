@@ -4,12 +4,14 @@
 //   'a' parsePlacement (prim/A<n>.txt, obj/Copy/<f>)
 //   'h' parseHueText (obj/H<n>.txt)       'd' parseObjText (obj/D<n>.txt)
 //   'm' parseMapText (map/<file>)         'l' parseLightText (light/light.txt)
-//   'M' parseModelText (Model.txt)        'r' TextReader alone, word by word
-// (any other byte: its value mod 9). Errors must name the file and a line of
+//   'M' parseModelText (Model.txt)        'C' parseModelC (a 1991 Model.c)
+//   'r' TextReader alone, word by word
+// (any other byte: its value mod 10). Errors must name the file and a line of
 // it; what a parser returns must keep the limits it promises.
 #include <cmath>
 
 #include "legacy_io/prime/map_file.h"
+#include "legacy_io/prime/model_c.h"
 #include "legacy_io/prime/text_inputs.h"
 #include "tests/prime/fuzz/fuzz_support.h"
 
@@ -102,6 +104,17 @@ void parse(char which, io::TextReader& in, const std::string& text) {
         fuzz::check(!call.name.empty() && call.line >= 1, "bad model call");
       break;
     }
+    case 'C': {
+      for (const auto& call : io::parseModelC(text, kName)) {
+        fuzz::check(call.line >= 1, "a Model.c call without a line");
+        const std::size_t n = call.name == "CopyObj" ? 3 : 1;
+        fuzz::check((call.name == "AddObj" || call.name == "AddToObjList" ||
+                     call.name == "CopyObj" || call.name == "AddMap") &&
+                        call.args.size() == n,
+                    "a Model.c call that is not one of the scene's four, with its arguments");
+      }
+      break;
+    }
     default:
       readWords(in);
       break;
@@ -112,9 +125,9 @@ void parse(char which, io::TextReader& in, const std::string& text) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  static const char kReaders[] = {'p', 'b', 'a', 'h', 'd', 'm', 'l', 'M', 'r'};
+  static const char kReaders[] = {'p', 'b', 'a', 'h', 'd', 'm', 'l', 'M', 'C', 'r'};
   char which = static_cast<char>(data[0]);
-  if (std::string_view("pbahdmlMr").find(which) == std::string_view::npos)
+  if (std::string_view("pbahdmlMCr").find(which) == std::string_view::npos)
     which = kReaders[data[0] % sizeof kReaders];
   const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
   io::TextReader in(text, kName);
