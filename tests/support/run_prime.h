@@ -14,9 +14,11 @@ struct CommandResult {
   std::string output;  // stdout and stderr
 };
 
-inline CommandResult runPrime(const std::string& args) {
+// `cwd`: the directory it runs in ("" = the test's).
+inline CommandResult runPrime(const std::string& args, const std::string& cwd = "") {
   std::string out;
-  FILE* p = popen((std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
+  const std::string in = cwd.empty() ? "" : "cd '" + cwd + "' && ";
+  FILE* p = popen((in + std::string(PRIME_EXE) + " " + args + " 2>&1").c_str(), "r");
   std::array<char, 4096> buf;
   while (std::size_t n = std::fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
   const int status = pclose(p);

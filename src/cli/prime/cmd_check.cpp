@@ -24,9 +24,20 @@ void addCheckCommand(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=] {
       const io::SceneDir scene(*dir);
+      // A directory with nothing of a PRIME scene in it is not a clean scene.
+      bool any = false;
+      for (const char* name : {"Model.txt", "Model.c", "prim", "obj"})
+        any = any || std::filesystem::exists(scene.find(".", name));
+      if (!any)
+        throw io::InputError({*dir, std::nullopt, std::nullopt}, "DIR",
+                             "a PRIME scene directory (Model.txt or a 1991 Model.c, prim/, obj/; "
+                             "prime new DIR writes one)",
+                             "none of them");
       std::vector<SceneProblem> problems;
-      // What `prime model` would refuse (the first error), and its warnings.
-      if (std::filesystem::exists(scene.find(".", "Model.txt"))) {
+      // What `prime model` would refuse (the first error), and its warnings;
+      // the calls of Model.txt, or of a 1991 Model.c (M42).
+      if (std::filesystem::exists(scene.find(".", "Model.txt")) ||
+          std::filesystem::exists(scene.find(".", "Model.c"))) {
         try {
           for (const auto& w : io::buildModel(scene).warnings) problems.push_back({w});
         } catch (const io::InputError& e) {

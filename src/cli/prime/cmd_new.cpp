@@ -3,6 +3,12 @@
 // the tutorial's (docs/prime/scene-authoring.md) values. `prime model DIR`
 // then `prime trace DIR` render it. The listing's readers stop after the
 // fields they read, so each file's comments follow its numbers.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -93,21 +99,49 @@ void addNewCommand(CLI::App& app, Action& action) {
   cmd->callback([=, &action] {
     action = [=] {
       std::error_code ec;
+      // An empty name would write the scene into the current directory.
+      if (dir->empty())
+        throw io::InputError({"prime new", std::nullopt, std::nullopt}, "DIR",
+                             "the name of a new or empty directory", "an empty name");
       if (fs::exists(*dir, ec) && !(fs::is_directory(*dir, ec) && fs::is_empty(*dir, ec)))
         throw io::InputError({*dir, std::nullopt, std::nullopt}, "DIR",
                              "a new or empty directory (prime new overwrites nothing)",
                              "an existing non-empty " +
                                  std::string(fs::is_directory(*dir, ec) ? "directory" : "file"));
-      for (const char* sub : {"prim", "obj", "map", "light"}) {
-        fs::create_directories(fs::path(*dir) / sub, ec);
-        if (ec)
-          throw io::InputError({(fs::path(*dir) / sub).string(), std::nullopt, std::nullopt},
-                               "cannot create the directory: " + ec.message());
-      }
-      for (const auto& [name, text] : sceneFiles()) {
-        io::OutputFile out((fs::path(*dir) / name).string());
-        out.write(text);
-        out.commit();
+      // The scene is written whole beside DIR and renamed into place: a full
+      // disk or a signal leaves nothing half-written to block a retry.
+      const fs::path target = fs::path(*dir).lexically_normal();
+      const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+      std::string pattern =
+          (parent / (".prime-new." + std::to_string(::getpid()) + ".XXXXXX")).string();
+      if (::mkdtemp(pattern.data()) == nullptr)
+        throw io::InputError(
+            {parent.string(), std::nullopt, std::nullopt},
+            std::string("cannot create the new scene beside it: ") + std::strerror(errno));
+      const fs::path temp = pattern;
+      try {
+        for (const char* sub : {"prim", "obj", "map", "light"}) {
+          fs::create_directories(temp / sub, ec);
+          if (ec)
+            throw io::InputError({(target / sub).string(), std::nullopt, std::nullopt},
+                                 "cannot create the directory: " + ec.message());
+        }
+        for (const auto& [name, text] : sceneFiles()) {
+          io::OutputFile out((temp / name).string());
+          out.write(text);
+          out.commit();
+        }
+        // mkdtemp makes it 0700; a scene directory is an ordinary one.
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        fs::permissions(temp, static_cast<fs::perms>(0777 & ~mask));
+        // rename(2) replaces an empty directory, and refuses one that is not.
+        fs::rename(temp, target);
+      } catch (const std::exception& e) {
+        fs::remove_all(temp, ec);
+        if (dynamic_cast<const io::InputError*>(&e)) throw;
+        throw io::InputError({*dir, std::nullopt, std::nullopt},
+                             std::string("cannot be written: ") + e.what());
       }
       if (!*quiet)
         std::cout << "wrote " << *dir << ": a sphere and a textured cube; next: prime model "

@@ -183,6 +183,38 @@ TEST(New, RefusesANonEmptyDirectory) {
   EXPECT_FALSE(s.exists("Model.txt"));
 }
 
+TEST(New, RefusesAnEmptyNameAndWritesNothingHere) {
+  TempScene s;
+  const fs::path here = s.path("here");
+  fs::create_directories(here);
+  const auto r = runPrime("new ''", here.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("DIR: expected the name of a new or empty directory"));
+  EXPECT_TRUE(fs::is_empty(here));
+}
+
+TEST(New, FillsAnEmptyDirectoryWholeAndLeavesNoTemporary) {
+  TempScene s;
+  const fs::path dir = s.path("empty");
+  fs::create_directories(dir);
+  const auto r = runPrime("new " + q(dir) + " -q");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "Model.txt"));
+  EXPECT_TRUE(fs::exists(dir / "light" / "light.txt"));
+  for (const auto& e : fs::directory_iterator(s.path()))
+    EXPECT_THAT(e.path().filename().string(), Not(HasSubstr(".prime-new."))) << "a temporary left";
+}
+
+TEST(Check, ADirectoryWithNothingOfASceneIsNotClean) {
+  TempScene s;
+  const fs::path dir = s.path("nothing");
+  fs::create_directories(dir);
+  const auto r = runPrime("check " + q(dir));
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("expected a PRIME scene directory"));
+  EXPECT_THAT(r.output, Not(HasSubstr("no problems found")));
+}
+
 // Every command that writes a file names it on a line "wrote PATH" (not with
 // -q): PRIME's trace and plate1, Malone's and CGL's trace.
 TEST(WroteLines, EveryWrittenFileIsNamedOnceUnlessQuiet) {
