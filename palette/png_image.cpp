@@ -2,10 +2,13 @@
 
 #include <png.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
 
 namespace prime {
@@ -32,10 +35,30 @@ void writePng(const std::string& path, const Image8& image) {
 }
 
 Image8 readPng(const std::string& path) {
+  // Read as every input is (legacy_io/common/input_file.h): a FIFO, a device
+  // or a directory is refused by type, an oversized file by size, and the
+  // file is an input of the run (no output may replace it).
+  io::InputFileOptions options;
+  options.what = "a PNG picture";
+  const std::vector<std::uint8_t> bytes = io::readInputFile(path, options);
   png_image img{};
   img.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&img, path.c_str()))
+  if (!png_image_begin_read_from_memory(&img, bytes.data(), bytes.size()))
     throw std::runtime_error(path + ": cannot read PNG: " + img.message);
+  // A PNG's pixels are deflated, and zlib never expands data more than
+  // 1032 times; one bit a pixel (a 2-colour palette) is 24 bits of RGB. A
+  // header that claims more pixels than the file can hold is refused before
+  // anything is allocated for them.
+  const std::uint64_t need = static_cast<std::uint64_t>(img.width) * img.height * 3;
+  const std::uint64_t most = 24ull * 1032ull * bytes.size();
+  if (need > most) {
+    png_image_free(&img);
+    throw std::runtime_error(path + ": cannot read PNG: its header says " +
+                             std::to_string(img.width) + " x " + std::to_string(img.height) +
+                             " pixels (" + std::to_string(need) + " bytes of RGB), more than a " +
+                             std::to_string(bytes.size()) + "-byte PNG can hold (at most " +
+                             std::to_string(most) + ")");
+  }
   img.format = PNG_FORMAT_RGB;
   Image8 out;
   out.width = static_cast<int>(img.width);

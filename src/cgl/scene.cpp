@@ -479,24 +479,55 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     return tex;
   };
   // CGL-D41: supplied maps, the path as written (relative to the scene's
-  // directory), then the base name in each texture directory.
+  // directory), then the base name in the scene's directory, its textures/
+  // and each texture directory the user names. CGL-D62: nothing outside
+  // those directories is opened (an absolute path, a "..", a symbolic link
+  // out of them): a scene cannot make prime read, render or quote any other
+  // file of the machine.
   for (const auto& [name, frame] : options.textures)
     if (name == base || name == rec.texture) return convert(frame, "(supplied) " + name);
-  std::vector<std::string> candidates;
-  const std::filesystem::path sceneDir = std::filesystem::path(scenePath).parent_path();
-  candidates.push_back((sceneDir / rec.texture).string());
-  for (const std::string& dir : options.textureDirs) {
-    candidates.push_back((std::filesystem::path(dir) / base).string());
-    candidates.push_back((std::filesystem::path(dir) / (base + ".rle")).string());
-  }
-  for (const std::string& c : candidates) {
+  namespace fs = std::filesystem;
+  const fs::path sceneDir = fs::path(scenePath).parent_path();
+  struct Candidate {
+    fs::path path, root;  // the file, and the directory it must stay in
+  };
+  std::vector<Candidate> candidates;
+  const fs::path written = fs::path(rec.texture).lexically_normal();
+  if (written.is_relative() && !written.empty() && *written.begin() != "..")
+    candidates.push_back({sceneDir / written, sceneDir});
+  const bool plain = !base.empty() && base != "." && base != "..";
+  const auto byBase = [&](const fs::path& dir) {
+    if (!plain) return;
+    candidates.push_back({dir / base, dir});
+    candidates.push_back({dir / (base + ".rle"), dir});
+  };
+  byBase(sceneDir);
+  byBase(sceneDir / "textures");
+  for (const std::string& dir : options.textureDirs) byBase(fs::path(dir));
+  for (const Candidate& c : candidates) {
     std::error_code ec;
-    if (std::filesystem::is_regular_file(c, ec)) return convert(readRleFile(c), c);
+    if (!fs::is_regular_file(c.path, ec)) continue;
+    // Through symbolic links too: the file itself must be inside its root.
+    const fs::path real = fs::weakly_canonical(c.path, ec);
+    const fs::path root = fs::weakly_canonical(c.root.empty() ? fs::path(".") : c.root, ec);
+    const fs::path rel = real.lexically_relative(root);
+    if (ec || rel.empty() || *rel.begin() == "..")
+      throw io::InputError(rec.where, "texture",
+                           "a texture map inside the scene's directory or a --textures "
+                           "directory (CGL-D62)",
+                           "'" + rec.texture + "', which " + c.path.string() +
+                               " leads outside it (a symbolic link)");
+    return convert(readRleFile(c.path.string()), c.path.string());
   }
   std::string looked;
-  for (const std::string& c : candidates) looked += (looked.empty() ? "" : ", ") + c;
+  for (const Candidate& c : candidates) looked += (looked.empty() ? "" : ", ") + c.path.string();
+  const bool outside = !(written.is_relative() && !written.empty() && *written.begin() != "..");
   throw io::InputError(rec.where, "texture", "a run-length-encoded texture map",
-                       "'" + rec.texture + "' not found; looked in: " + looked +
+                       "'" + rec.texture + "' not found; " +
+                           (outside ? "the path as written leads outside the scene's directory "
+                                      "and is not opened (CGL-D62); "
+                                    : "") +
+                           "looked in: " + looked +
                            (options.textureDirs.empty()
                                 ? " (prime's --textures DIR looks for the base name in DIR too)"
                                 : ""));

@@ -12,6 +12,7 @@
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/output_file.h"
+#include "legacy_io/common/run_inputs.h"
 #include "palette/png_image.h"
 #include "palette/quantize/colour_difference.h"
 #include "src/cli/commands.h"
@@ -64,10 +65,15 @@ void addQuantizeCommand(CLI::App& app, Action& action) {
                      "--help)\n";
         return 2;
       }
+      // IN is an input of the run before OUT is checked: `quantize IN IN`,
+      // `./IN` or a hard link to it are refused, not overwritten.
+      io::protectInput(*in);
       io::checkOutputPath(*out);
       Image8 image;
       try {
         image = readPng(*in);
+      } catch (const io::InputError&) {
+        throw;  // a FIFO, a directory, too large: already named and said
       } catch (const std::runtime_error& e) {
         throw io::InputError({*in, std::nullopt, std::nullopt},
                              std::string("not a PNG that can be read: ") + e.what());

@@ -188,10 +188,22 @@ TEST(CglReplay, AFifoOrADeviceIsRefusedAtOnce) {
   EXPECT_NE(z.output.find("/dev/zero: is a character device"), std::string::npos) << z.output;
 }
 
+// The document's lost absolute texture path is never opened (CGL-D62): its
+// base name finds the port's stand-in in the scene's textures/, as the scene's
+// comment promises; without one, the message names every place looked.
 TEST(CglReplay, AMissingTextureNamesEveryPlaceLooked) {
-  const auto r = runPrime("trace " + scenePath("doc-figure59") + " --lenient --no-window -q");
+  TempDir dir;
+  const auto found = runPrime("trace " + scenePath("doc-figure59") +
+                              " --lenient --no-window -q --rle " + (dir / "a.rle").string());
+  EXPECT_EQ(found.status, 0) << found.output;
+  const std::string copy = (dir / "figure59.cgl").string();
+  std::filesystem::copy_file(scenePath("doc-figure59"), copy);
+  const auto r = runPrime("trace " + copy + " --lenient --no-window -q");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("/u/majsweeney/textures/checkerboard"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("leads outside the scene's directory"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((dir / "textures" / "checkerboard.rle").string()), std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("--textures"), std::string::npos) << r.output;
 }
 

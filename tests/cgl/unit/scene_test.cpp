@@ -7,10 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <numbers>
+#include <string>
 
+#include "legacy_io/cgl/frame.h"
 #include "tests/cgl/unit/scene_text.h"
+#include "tests/support/temp_scene.h"
 
 namespace prime::cgl {
 namespace {
@@ -262,6 +266,45 @@ TEST(CglPreprocess, TexturesAreLookedUpAndLastReusesOne) {
   g.surfaces[0].texture.clear();
   g.surfaces[0].textureLast = true;
   EXPECT_THROW(buildScene(g, options), io::InputError);
+}
+
+// CGL-D62: a texture path that leads out of the scene's directory (an
+// absolute path, a "..", a symbolic link) is never opened; the base name is
+// looked up inside it instead.
+TEST(CglPreprocess, TexturesOutsideTheSceneAreNeverOpened) {
+  namespace fs = std::filesystem;
+  prime::test::TempScene t;
+  const fs::path scene = t.path("scene"), outside = t.path("outside");
+  fs::create_directories(scene / "textures");
+  fs::create_directories(outside);
+  writeRleFile((outside / "secret.rle").string(), test::checkerboardTexture());
+  SceneFile f = test::checkerboardScene();
+  f.path = (scene / "board.cgl").string();
+  const auto messageOf = [&](const std::string& texture) {
+    f.surfaces[0].texture = texture;
+    try {
+      buildScene(f, BuildOptions{});
+    } catch (const io::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(built)");
+  };
+  for (const std::string& path :
+       std::vector<std::string>{(outside / "secret.rle").string(), "../outside/secret.rle",
+                                "textures/../../outside/secret.rle"}) {
+    const std::string m = messageOf(path);
+    EXPECT_NE(m.find("not found"), std::string::npos) << path << ": " << m;
+    EXPECT_NE(m.find("(built)"), 0u) << path << " was opened";
+  }
+  EXPECT_NE(messageOf("/etc/passwd").find("leads outside the scene's directory"),
+            std::string::npos);
+  // A symbolic link inside the scene to a map outside it.
+  fs::create_symlink(outside / "secret.rle", scene / "textures" / "linked.rle");
+  EXPECT_NE(messageOf("textures/linked.rle").find("symbolic link"), std::string::npos);
+  // The base name of a lost absolute path, found in the scene's textures/.
+  writeRleFile((scene / "textures" / "secret.rle").string(), test::checkerboardTexture());
+  EXPECT_EQ(messageOf((outside / "secret.rle").string()), "(built)");
+  EXPECT_EQ(messageOf("/u/majsweeney/textures/secret"), "(built)");
 }
 
 TEST(CglCamera, DefaultView) {

@@ -2,7 +2,9 @@
 // file (G7-G11, T59) through the real executable.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -127,6 +129,62 @@ TEST(Quantize, UsageAndInputErrors) {
   EXPECT_EQ(r.status, 2) << r.output;
   r = runPrime("quantize " + sc.at("not.png").string() + " o.png --method kmeans");
   EXPECT_EQ(r.status, 2) << r.output;
+}
+
+// The PNG bytes of a W x H RGB picture whose data is a few bytes: what a
+// hostile file says in its header.
+std::string pngClaiming(std::uint32_t w, std::uint32_t h) {
+  const auto crc = [](const std::string& data) {
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (unsigned char b : data) {
+      c ^= b;
+      for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xFFFFFFFFu;
+  };
+  const auto be32 = [](std::uint32_t v) {
+    return std::string{static_cast<char>(v >> 24), static_cast<char>(v >> 16),
+                       static_cast<char>(v >> 8), static_cast<char>(v)};
+  };
+  const auto chunk = [&](const std::string& type, const std::string& data) {
+    return be32(static_cast<std::uint32_t>(data.size())) + type + data + be32(crc(type + data));
+  };
+  const std::string ihdr = be32(w) + be32(h) + std::string("\x08\x02\x00\x00\x00", 5);
+  const std::string idat("\x78\x9c\x63\x00\x00\x00\x01\x00\x01", 9);
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) +
+         chunk("IEND", "");
+}
+
+// quantize's input is an input of the run (never its own output, by any
+// name), and is read as every input is: a FIFO refused by type, a header
+// claiming more pixels than the file can hold refused before allocating.
+TEST(Quantize, NeverOverwritesItsInputAndRefusesHostileFiles) {
+  Sphere sc;
+  ASSERT_EQ(runPrime("trace --model --no-window -q --true-color-png " + sc.at("in.png").string() +
+                     " " + sc.dir())
+                .status,
+            0);
+  const std::string before = slurp(sc.at("in.png"));
+  fs::create_hard_link(sc.at("in.png"), sc.at("link.png"));
+  for (const std::string& out :
+       {sc.at("in.png").string(), sc.dir() + "/./in.png", sc.at("link.png").string()}) {
+    const CommandResult r = runPrime("quantize " + sc.at("in.png").string() + " " + out);
+    EXPECT_EQ(r.status, 1) << out << ": " << r.output;
+    EXPECT_THAT(r.output, HasSubstr("input")) << out;
+    EXPECT_EQ(slurp(sc.at("in.png")), before) << out << " replaced the input";
+  }
+  std::ofstream(sc.at("huge.png"), std::ios::binary) << pngClaiming(30000, 30000);
+  CommandResult r =
+      runPrime("quantize " + sc.at("huge.png").string() + " " + sc.at("o.png").string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("30000 x 30000 pixels"));
+  EXPECT_THAT(r.output, HasSubstr("more than a"));
+  EXPECT_FALSE(fs::exists(sc.at("o.png")));
+  ASSERT_EQ(::mkfifo(sc.at("pipe.png").c_str(), 0600), 0);
+  r = runPrime("quantize " + sc.at("pipe.png").string() + " " + sc.at("o.png").string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("pipe.png"));
+  EXPECT_FALSE(fs::exists(sc.at("o.png")));
 }
 
 }  // namespace
