@@ -282,7 +282,8 @@ class Parser {
       if (peekIs("{")) return;
       i_ = at;
     }
-    throw InputError({display_, std::nullopt, std::nullopt}, "main()",
+    // Blamed on the file's last line: where a main() was still expected.
+    throw InputError({display_, peek().line, std::nullopt}, "main()",
                      "the definition of main() whose calls make the scene (void main(void) { "
                      "AddObj(\"d1.txt\"); AddToObjList(1); ... })",
                      "none");

@@ -120,7 +120,10 @@ TEST(ModelC, RefusesAnythingElseInMainNamingTheLineAndWhatItFound) {
               HasSubstr("Model.c:3: statement of main()'s MemoryEmpty check"));
   // No definition of main(), only its prototype.
   EXPECT_THAT(messageOf([] { parseModelC("void main(void);\n", "Model.c"); }),
-              HasSubstr("Model.c: main(): expected the definition of main()"));
+              HasSubstr("Model.c:2: main(): expected the definition of main()"));
+  // Found by the fuzzer (text_inputs, reader C): an error without a line.
+  EXPECT_THAT(messageOf([] { parseModelC("0.5\n0,5\n0.\x15\n", "Model.c"); }),
+              HasSubstr("Model.c:4: main()"));
   EXPECT_THAT(
       messageOf([] { parseModelC("void main(void)\n{\n  AddObj(\"d1.txt\");\n", "Model.c"); }),
       HasSubstr("found the end of the file"));
