@@ -127,15 +127,11 @@ std::optional<std::array<PictureProjection::Point, 2>> projectSegment(
 }
 
 Image8 drawRayOverlay(const Image8& picture, std::span<const OverlaySegment> segments,
-                      const PictureProjection& camera, int column, int row) {
+                      const PictureProjection& camera, int column, int row,
+                      const std::function<void(Image8&)>& under) {
   Image8 img = picture;
   for (std::uint8_t& v : img.rgb) v = static_cast<std::uint8_t>(v / 2);
-  drawRays(img, segments, camera, column, row);
-  return img;
-}
-
-void drawRays(Image8& img, std::span<const OverlaySegment> segments,
-              const PictureProjection& camera, int column, int row) {
+  if (under) under(img);
   // Shadow rays first, so the tree's own rays stay on top.
   for (const bool shadows : {true, false})
     for (const OverlaySegment& seg : segments) {
@@ -149,6 +145,7 @@ void drawRays(Image8& img, std::span<const OverlaySegment> segments,
                static_cast<int>(std::floor((*ends)[1].y)), 2, c);
     }
   square(img, column, row, 3, {255, 0, 255});  // the probed pixel
+  return img;
 }
 
 }  // namespace prime

@@ -8,6 +8,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -51,14 +52,12 @@ std::optional<OverlayKind> overlayKind(std::string_view name);
 std::array<std::uint8_t, 3> overlayColour(OverlayKind kind);
 
 // Draws the segments over `picture` (dimmed to half), clipped at the eye
-// and to the picture, and outlines pixel (column, row).
+// and to the picture, and outlines pixel (column, row). `under`, if given,
+// draws onto the dimmed picture before the rays (the probe's text panel: a
+// ray may cross the text, the text never hides a ray).
 Image8 drawRayOverlay(const Image8& picture, std::span<const OverlaySegment> segments,
-                      const PictureProjection& camera, int column, int row);
-
-// The same onto `img` as it is (not dimmed): what goes on top of anything
-// else drawn over the dimmed picture (the probe's text panel).
-void drawRays(Image8& img, std::span<const OverlaySegment> segments,
-              const PictureProjection& camera, int column, int row);
+                      const PictureProjection& camera, int column, int row,
+                      const std::function<void(Image8&)>& under = {});
 
 // The picture-space points of a segment as drawn (after clipping at the
 // eye), for tests: nullopt when nothing of it is in front of the eye.

@@ -123,8 +123,11 @@ class Lexer {
         }
         case 'x': {
           int v = 0;
-          while (pos_ < text_.size() && std::isxdigit(static_cast<unsigned char>(text_[pos_])))
-            v = (v * 16 + std::stoi(std::string(1, text_[pos_++]), nullptr, 16)) & 0xFF;
+          while (pos_ < text_.size() && std::isxdigit(static_cast<unsigned char>(text_[pos_]))) {
+            const char h =
+                static_cast<char>(std::tolower(static_cast<unsigned char>(text_[pos_++])));
+            v = (v * 16 + (h <= '9' ? h - '0' : h - 'a' + 10)) & 0xFF;
+          }
           value.push_back(static_cast<char>(v));
           break;
         }

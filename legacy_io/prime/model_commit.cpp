@@ -163,16 +163,20 @@ std::unique_ptr<DirLock> lockForModel(const SceneDir& scene, bool wait) {
   return lock;
 }
 
+bool holdsPrimeScene(const SceneDir& scene) {
+  std::error_code ec;
+  for (const char* name :
+       {"Model.txt", "Model.c", kModelStamp, kModelJournal, kModelLock, "prim", "obj"})
+    if (fs::exists(scene.find(".", name), ec)) return true;
+  return false;
+}
+
 std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene) {
   // A directory with nothing of a PRIME scene in it (another system's scene,
   // an empty directory) gets no lock file: the reader's error follows, and
   // the directory is left as it was.
   std::error_code ec;
-  bool prime = false;
-  for (const char* name :
-       {"Model.txt", "Model.c", kModelStamp, kModelJournal, kModelLock, "prim", "obj"})
-    prime = prime || fs::exists(scene.find(".", name), ec);
-  if (!prime) {
+  if (!holdsPrimeScene(scene)) {
     verifyModel(scene);
     return nullptr;
   }

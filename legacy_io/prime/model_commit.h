@@ -45,6 +45,10 @@ struct DatabaseFile {
 // `wait`, throws "busy: another prime model (pid N) is writing DIR" if
 // another run holds it.
 std::unique_ptr<DirLock> lockForModel(const SceneDir& scene, bool wait);
+// Whether `scene` holds anything of a PRIME scene: Model.txt, a 1991
+// Model.c, prim/, obj/, or prime model's stamp, journal or lock (any case,
+// M40). Another system's scene or an empty directory holds none of them.
+bool holdsPrimeScene(const SceneDir& scene);
 // Takes the lock shared for a reader (waiting for a `prime model` run to
 // finish), finishes an interrupted run's journal, and checks the databases
 // against the stamp; throws InputError. Returns the held lock (release it

@@ -6,6 +6,7 @@
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/prime/model_builder.h"
+#include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
 #include "src/cli/prime/scene_check.h"
 
@@ -25,10 +26,7 @@ void addCheckCommand(CLI::App& app, Action& action) {
     action = [=] {
       const io::SceneDir scene(*dir);
       // A directory with nothing of a PRIME scene in it is not a clean scene.
-      bool any = false;
-      for (const char* name : {"Model.txt", "Model.c", "prim", "obj"})
-        any = any || std::filesystem::exists(scene.find(".", name));
-      if (!any)
+      if (!io::holdsPrimeScene(scene))
         throw io::InputError({*dir, std::nullopt, std::nullopt}, "DIR",
                              "a PRIME scene directory (Model.txt or a 1991 Model.c, prim/, obj/; "
                              "prime new DIR writes one)",
