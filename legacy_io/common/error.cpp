@@ -28,9 +28,28 @@ std::string describe(const InputLocation& where) {
   return s;
 }
 
+// Every message, whoever composed it, shows control bytes escaped: a NUL cut
+// the message short and an escape sequence drove the terminal (a CGL
+// record's name quoted its keyword as written). Line breaks and tabs that a
+// message lays out stay.
+static std::string visible(std::string text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const unsigned char c : text) {
+    if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 static std::string compose(const InputLocation& where, const std::string& field,
                            const std::string& expected, const std::string& found) {
-  return describe(where) + ": " + field + ": expected " + expected + ", found " + found;
+  return visible(describe(where) + ": " + field + ": expected " + expected + ", found " + found);
 }
 
 InputError::InputError(InputLocation where, std::string field, std::string expected,
@@ -42,6 +61,6 @@ InputError::InputError(InputLocation where, std::string field, std::string expec
       found_(std::move(found)) {}
 
 InputError::InputError(InputLocation where, std::string message)
-    : std::runtime_error(describe(where) + ": " + message), where_(std::move(where)) {}
+    : std::runtime_error(visible(describe(where) + ": " + message)), where_(std::move(where)) {}
 
 }  // namespace prime::io

@@ -18,6 +18,9 @@ struct InputLocation {
   std::optional<int> token = std::nullopt;           // 1-based token number, for token streams
 };
 
+// An input's fault, as the message names it: file, line or byte, field, what
+// was expected and what was found. what() shows control bytes escaped as
+// \xNN (line breaks and tabs excepted), whatever the parts held.
 class InputError : public std::runtime_error {
  public:
   InputError(InputLocation where, std::string field, std::string expected, std::string found);

@@ -163,6 +163,9 @@ int removeStaleTemporariesIn(const std::string& dir) {
 }
 
 void checkOutputPath(const std::string& path) {
+  if (path.empty())
+    throw InputError({path, std::nullopt, std::nullopt},
+                     "an empty file name cannot be written: name the file to write");
   struct stat st {};
   if (::lstat(path.c_str(), &st) == 0) {
     if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode))

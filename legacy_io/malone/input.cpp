@@ -464,9 +464,12 @@ bool looksLikeMalone(const std::string& text) {
   while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j]))) ++j;
   const std::string first = text.substr(i, j - i);
   if (first.empty()) return false;
+  // The whole word a number (a binary file's first "word" may hold a NUL,
+  // where strtod would stop at once and take "" for a whole number).
   char* end = nullptr;
   const double v = std::strtod(first.c_str(), &end);
-  return *end == '\0' && std::isfinite(v) && v == std::floor(v);
+  return end != first.c_str() && end == first.c_str() + first.size() && std::isfinite(v) &&
+         v == std::floor(v);
 }
 
 }  // namespace prime::malone

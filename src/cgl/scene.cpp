@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <numbers>
 #include <sstream>
@@ -131,53 +133,50 @@ class Preprocessor {
       : file_(file), options_(options), scene_(scene) {}
 
   // Appends the objects of the subgraph at `number` in processing order.
-  void process(int number, const Matrix4& m, std::vector<Item>& out, int depth) {
-    if (number == 0) return;
-    if (number < 1 || number > static_cast<int>(file_.nodes.size()))
-      throw io::InputError(fileOnly(file_.path), "node", "a node number of the file",
-                           std::to_string(number));
-    const NodeRecord& node = file_.nodes[static_cast<std::size_t>(number - 1)];
-    if (depth > static_cast<int>(file_.nodes.size()))
-      throw io::InputError(node.where, "down/right", "a DAG without cycles",
-                           "a cycle through node " + std::to_string(number));
-    // Appendix 1 section 9: right pointers before down pointers; a node's
-    // transformation applies to its down subgraph only (CGL-Q42).
-    process(node.right, m, out, depth + 1);
-    switch (node.kind) {
-      case NodeKind::Translate:
-        processDown(node, translation(node.xyz), m, out, depth);
-        break;
-      case NodeKind::Scale:
-        if (node.xyz[0] == 0.0 || node.xyz[1] == 0.0 || node.xyz[2] == 0.0) {
-          scene_.warnings.push_back(io::describe(node.where) + ": scale node " +
-                                    std::to_string(node.number) +
-                                    " has a 0.0 component and is ignored (Appendix 1)");
-          process(node.down, m, out, depth + 1);
-        } else {
-          processDown(node, scaling(node.xyz), m, out, depth);
-        }
-        break;
-      case NodeKind::Rotate:
-        processDown(node, rotation(node.axis, node.theta), m, out, depth);
-        break;
-      case NodeKind::Dummy:
-        process(node.down, m, out, depth + 1);
-        break;
-      case NodeKind::Fractal:
-        out.push_back(Item{fractal(node, m), {}});  // counted by its facets (CGL-Q128)
-        ++scene_.primitives;
-        process(node.down, m, out, depth + 1);  // as a primitive's (CGL-Q42)
-        break;
-      case NodeKind::Spline:
-        out.push_back(Item{splineObject(node, m), {}});
-        ++scene_.primitives;
-        count(node);
-        process(node.down, m, out, depth + 1);
-        break;
-      case NodeKind::Box: {
-        std::vector<Item> inner;
-        process(node.down, m, inner, depth + 1);
-        if (inner.empty()) break;  // nothing to enclose: no box node
+  // Iterative (a chain of thousands of nodes overflowed the stack when each
+  // node was a call) and counted: every node reached along every path is a
+  // visit, and a DAG whose shared nodes multiply the paths (2^60 of them in
+  // a 4 KB file) is refused at options.maxVisits, before the work.
+  void process(int root, const Matrix4& m, std::vector<Item>& out) {
+    struct Task {
+      enum Kind { Visit, Own, CloseBox } kind;
+      int number;
+      Matrix4 m;
+      std::vector<Item>* out;
+      int depth;
+      std::size_t inner;  // CloseBox: the box's contents in inner_
+    };
+    std::vector<Task> tasks;
+    tasks.push_back({Task::Visit, root, m, &out, 0, 0});
+    while (!tasks.empty()) {
+      const Task t = tasks.back();
+      tasks.pop_back();
+      if (t.kind == Task::Visit) {
+        if (t.number == 0) continue;
+        if (t.number < 1 || t.number > static_cast<int>(file_.nodes.size()))
+          throw io::InputError(fileOnly(file_.path), "node", "a node number of the file",
+                               std::to_string(t.number));
+        const NodeRecord& node = file_.nodes[static_cast<std::size_t>(t.number - 1)];
+        if (t.depth > static_cast<int>(file_.nodes.size()))
+          throw io::InputError(node.where, "down/right", "a DAG without cycles",
+                               "a cycle through node " + std::to_string(t.number));
+        if (++visits_ > options_.maxVisits)
+          throw io::InputError(
+              node.where, "down/right",
+              "a DAG of at most " + std::to_string(options_.maxVisits) +
+                  " node visits (a node shared by several parents is walked once per path)",
+              "more: node " + std::to_string(t.number) + " is reached again after " +
+                  std::to_string(options_.maxVisits) + " visits");
+        // Appendix 1 section 9: right pointers before down pointers (the
+        // right subgraph first, then the node's own work: pushed in reverse).
+        tasks.push_back({Task::Own, t.number, t.m, t.out, t.depth, 0});
+        tasks.push_back({Task::Visit, node.right, t.m, t.out, t.depth + 1, 0});
+        continue;
+      }
+      const NodeRecord& node = file_.nodes[static_cast<std::size_t>(t.number - 1)];
+      if (t.kind == Task::CloseBox) {
+        std::vector<Item>& inner = inner_[t.inner];
+        if (inner.empty()) continue;  // nothing to enclose: no box node
         Item box;
         box.object.kind = ObjectKind::Box;
         box.object.surface = -1;
@@ -185,32 +184,71 @@ class Preprocessor {
         std::reverse(inner.begin(), inner.end());  // prepended: the first processed is last
         for (const Item& it : inner) box.object.box.add(it.object.box);
         box.contents = std::move(inner);
-        out.push_back(std::move(box));
+        t.out->push_back(std::move(box));
         ++scene_.boxes;
         count(node);
-        break;
+        continue;
       }
-      case NodeKind::Sphere:
-      case NodeKind::Cylinder:
-      case NodeKind::Polygon:
-        out.push_back(Item{primitive(node, m), {}});
-        ++scene_.primitives;
-        count(node);
-        // A primitive's down subgraph (not used by the document's files) is
-        // processed with the primitive's own transformation (CGL-Q42).
-        process(node.down, m, out, depth + 1);
-        break;
+      // A node's transformation applies to its down subgraph only (CGL-Q42).
+      const auto down = [&](const Matrix4& own) {
+        Matrix4 child = own;  // p (own) (parent's): the node's own transform first
+        matrixMul(child, t.m);
+        tasks.push_back({Task::Visit, node.down, child, t.out, t.depth + 1, 0});
+      };
+      switch (node.kind) {
+        case NodeKind::Translate:
+          down(translation(node.xyz));
+          break;
+        case NodeKind::Scale:
+          if (node.xyz[0] == 0.0 || node.xyz[1] == 0.0 || node.xyz[2] == 0.0) {
+            scene_.warnings.push_back(io::describe(node.where) + ": scale node " +
+                                      std::to_string(node.number) +
+                                      " has a 0.0 component and is ignored (Appendix 1)");
+            tasks.push_back({Task::Visit, node.down, t.m, t.out, t.depth + 1, 0});
+          } else {
+            down(scaling(node.xyz));
+          }
+          break;
+        case NodeKind::Rotate:
+          down(rotation(node.axis, node.theta));
+          break;
+        case NodeKind::Dummy:
+          tasks.push_back({Task::Visit, node.down, t.m, t.out, t.depth + 1, 0});
+          break;
+        case NodeKind::Fractal:
+          t.out->push_back(Item{fractal(node, t.m), {}});  // counted by its facets (CGL-Q128)
+          ++scene_.primitives;
+          tasks.push_back({Task::Visit, node.down, t.m, t.out, t.depth + 1, 0});  // CGL-Q42
+          break;
+        case NodeKind::Spline:
+          t.out->push_back(Item{splineObject(node, t.m), {}});
+          ++scene_.primitives;
+          count(node);
+          tasks.push_back({Task::Visit, node.down, t.m, t.out, t.depth + 1, 0});
+          break;
+        case NodeKind::Box: {
+          // The contents first, then the box around them.
+          inner_.emplace_back();
+          const std::size_t inner = inner_.size() - 1;
+          tasks.push_back({Task::CloseBox, t.number, t.m, t.out, t.depth, inner});
+          tasks.push_back({Task::Visit, node.down, t.m, &inner_[inner], t.depth + 1, 0});
+          break;
+        }
+        case NodeKind::Sphere:
+        case NodeKind::Cylinder:
+        case NodeKind::Polygon:
+          t.out->push_back(Item{primitive(node, t.m), {}});
+          ++scene_.primitives;
+          count(node);
+          // A primitive's down subgraph (not used by the document's files) is
+          // processed with the primitive's own transformation (CGL-Q42).
+          tasks.push_back({Task::Visit, node.down, t.m, t.out, t.depth + 1, 0});
+          break;
+      }
     }
   }
 
  private:
-  void processDown(const NodeRecord& node, const Matrix4& own, const Matrix4& m,
-                   std::vector<Item>& out, int depth) {
-    Matrix4 child = own;  // p (own) (parent's): the node's own transform first
-    matrixMul(child, m);
-    process(node.down, child, out, depth + 1);
-  }
-
   void count(const NodeRecord& node) {
     if (++made_ > options_.maxObjects)
       throw io::InputError(node.where, "scene nodes",
@@ -242,7 +280,7 @@ class Preprocessor {
 
   // Section 6: the control vertices through the current transformation,
   // then refinement and the box tree (src/cgl/spline.h).
-  Object splineObject(const NodeRecord& node, const Matrix4& m) const {
+  Object splineObject(const NodeRecord& node, const Matrix4& m) {
     Object o;
     o.kind = ObjectKind::Spline;
     o.node = node.number;
@@ -266,6 +304,23 @@ class Preprocessor {
       throw io::InputError(node.where, "control vertices",
                            std::to_string(node.nu * node.nv) + " (nu x nv)",
                            std::to_string(node.controls.size()));
+    // The refined mesh (6.3.3) and its box tree, sized before any is made: a
+    // few numbers (nu, nv, divisions) ask for gigabytes.
+    const auto refined = [&](int n) {  // refinedLast (+5): the mesh's points in one direction
+      return (static_cast<std::uint64_t>(n) + 1) * static_cast<std::uint64_t>(node.divisions) + 3;
+    };
+    const std::uint64_t points = refined(node.nu) * refined(node.nv);
+    splineBytes_ += points * kSplineBytesPerPoint;
+    if (points > (std::uint64_t{1} << 40) || splineBytes_ > options_.maxSplineBytes)
+      throw io::InputError(
+          node.where, "nu, nv, divisions",
+          "refined meshes of at most " + std::to_string(options_.maxSplineBytes >> 20) +
+              " MiB in the whole scene (section 6.3.3; about " +
+              std::to_string(kSplineBytesPerPoint) + " bytes a refined point with its box tree)",
+          std::to_string(node.nu) + " x " + std::to_string(node.nv) + " vertices at " +
+              std::to_string(node.divisions) + " divisions: " + std::to_string(refined(node.nu)) +
+              " x " + std::to_string(refined(node.nv)) + " points, " +
+              std::to_string(splineBytes_ >> 20) + " MiB with the spline nodes before it");
     std::vector<Vec3> controls;
     controls.reserve(node.controls.size());
     for (const Vec3& c : node.controls) controls.push_back(pointMatrixMul(c, m));
@@ -432,16 +487,36 @@ class Preprocessor {
   const BuildOptions& options_;
   Scene& scene_;
   long made_ = 0;
+  long visits_ = 0;
+  std::uint64_t splineBytes_ = 0;        // the refined meshes made so far
+  std::deque<std::vector<Item>> inner_;  // the boxes' contents (a deque: they do not move)
 };
 
+// Iterative, and each box's contents moved out before its item goes (a
+// recursive flatten, or destructor, would go as deep as boxes nest).
 void flatten(std::vector<Item>& items, std::vector<Object>& out) {
-  for (Item& it : items) {
+  struct Open {
+    std::vector<Item> items;
+    std::size_t next;
+    std::size_t box;  // its box in `out`, or npos for the top level
+  };
+  std::vector<Open> open;
+  open.push_back({std::move(items), 0, std::string::npos});
+  while (!open.empty()) {
+    if (open.back().next == open.back().items.size()) {
+      if (const std::size_t at = open.back().box; at != std::string::npos) {
+        out[at].skip = static_cast<int>(out.size());
+        pad(out[at].box);
+      }
+      open.pop_back();
+      continue;
+    }
+    Item& it = open.back().items[open.back().next++];
     const std::size_t at = out.size();
     out.push_back(it.object);
     if (it.object.kind == ObjectKind::Box) {
-      flatten(it.contents, out);
-      out[at].skip = static_cast<int>(out.size());
-      pad(out[at].box);
+      std::vector<Item> contents = std::move(it.contents);
+      open.push_back({std::move(contents), 0, at});
     }
   }
 }
@@ -605,7 +680,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   std::vector<Item> items;
   if (file.numbers.root != 0) {
     Preprocessor pre(file, options, scene);
-    pre.process(file.numbers.root, identity4(), items, 0);
+    pre.process(file.numbers.root, identity4(), items);
   }
   std::reverse(items.begin(), items.end());  // prepended: the first processed is last
   flatten(items, scene.objects);

@@ -11,6 +11,7 @@
 // ambience are made ready for the tracer.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -116,7 +117,20 @@ struct BuildOptions {
   // Refuse DAGs that instantiate more object nodes than this (shared
   // subtrees multiply).
   long maxObjects = 4'000'000;
+  // Refuse DAGs whose walk reaches more nodes than this, counting a node once
+  // for every path to it: transform nodes shared by two parents double the
+  // paths at each level, and cost the walk without making an object.
+  long maxVisits = 16'000'000;
+  // Refuse spline nodes whose refined meshes (section 6.3.3: (nu + 1) x
+  // divisions + 3 points a direction) and box trees would take more than this
+  // in all, at kSplineBytesPerPoint: checked before each is made.
+  std::uint64_t maxSplineBytes = std::uint64_t{2} << 30;
 };
+
+// What a refined spline point costs with its share of the box tree, for
+// maxSplineBytes (measured: 3 doubles of the mesh, the tree's boxes and
+// patches).
+inline constexpr std::uint64_t kSplineBytesPerPoint = 160;
 
 // Preprocess. Throws io::InputError (located at the node, surface or light
 // line) for what the port cannot render: spline nodes (part 2 of the

@@ -6,6 +6,7 @@
 
 #include "legacy_io/common/output_file.h"
 #include "src/bench/measure.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli {
 
@@ -124,7 +125,7 @@ void addBenchTable(CLI::App* cmd, Action& action, const std::string& title,
   cmd->add_option("--threads", o->threads, "Thread counts to time (default 1,2)")
       ->delimiter(',')
       ->check(CLI::Range(1, 256));
-  cmd->add_option("--csv", o->csv, "Also write the table as CSV");
+  cmd->add_option("--csv", o->csv, "Also write the table as CSV")->check(outputName());
   cmd->callback([o, loader, title, &action] {
     action = [o, loader, title] {
       const auto facts = bench::machineFacts();

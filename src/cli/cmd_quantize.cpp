@@ -16,6 +16,7 @@
 #include "palette/png_image.h"
 #include "palette/quantize/colour_difference.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/quantize_options.h"
 
 namespace prime::cli {
@@ -36,7 +37,8 @@ void addQuantizeCommand(CLI::App& app, Action& action) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("OUT", *out, "PNG to write: the quantized picture as the DAC shows it")
-      ->required();
+      ->required()
+      ->check(outputName());
   cmd->add_option("--method", *method,
                   "popularity, median-cut (default), octree; listing (PRIME's fixed palette, "
                   "the 1991 baseline) or libimagequant (the reference, for comparison only)")

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
+#include "src/cli/option_values.h"
+#include "src/cli/step.h"
 #include "src/cli/system.h"
 
 namespace {
@@ -179,6 +182,15 @@ std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& actio
 }
 }  // namespace
 
+// "while rendering FILE" (the step the failure ended), else "running `prime
+// trace FILE ...`": a message that names what was being done, and to which file.
+static std::string doing(const std::vector<std::string>& words) {
+  if (const std::string step = prime::cli::Step::current(); !step.empty()) return "while " + step;
+  std::string line = "prime";
+  for (std::size_t i = 1; i < words.size(); ++i) line += " " + words[i];
+  return "running `" + line + "`";
+}
+
 // The whole command line; with `parseOnly`, everything but the chosen
 // command's action (the CLI fuzz target, tests/prime/fuzz/cli_fuzz.cpp,
 // calls it so, in-process).
@@ -201,26 +213,35 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     const prime::cli::System& system =
         prime::cli::systemFor(words[1], std::vector<std::string>(words.begin() + 2, words.end()));
     if (system.callStatement != nullptr) {
-      system.callStatement(words, 2);
-      args.clear();
-      for (std::string& a : words) args.push_back(a.data());
+      try {
+        system.callStatement(words, 2);
+      } catch (const CLI::ParseError& e) {  // a flag of the call statement without its value
+        std::cerr << "prime: " << e.what() << " (prime " << words[1] << " --help)\n";
+        return 2;
+      }
     }
   }
   prime::cli::Action action;
   // Only the command named is registered when that is enough (commands()).
   const Command* only = args.size() >= 2 ? onlyCommandNeeded(args) : nullptr;
   std::unique_ptr<CLI::App> made;
+  // The parser, its options taking the values they declare (option_values.h).
+  const auto parse = [&](const Command* command) {
+    made = makeApp(command, action, words);
+    prime::cli::takeDeclaredValues(*made, words);
+    args.clear();
+    for (std::string& a : words) args.push_back(a.data());
+    made->parse(static_cast<int>(args.size()), args.data());
+  };
   try {
     try {
-      made = makeApp(only, action, words);
-      made->parse(static_cast<int>(args.size()), args.data());
+      parse(only);
     } catch (const CLI::Error&) {
       if (only == nullptr) throw;
       // Help, --version and usage errors come from the whole command line,
       // as they always did (their messages name other commands).
       action = nullptr;
-      made = makeApp(nullptr, action, words);
-      made->parse(static_cast<int>(args.size()), args.data());
+      parse(nullptr);
     }
   } catch (const CLI::Success& e) {  // --help, --version
     return made->exit(e);
@@ -238,6 +259,9 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     std::cerr << "prime: " << e.what() << " (prime " << (first.empty() ? "" : first + " ")
               << "--help)\n";
     return 2;
+  } catch (const prime::io::InputError& e) {  // a check a command made while parsing
+    std::cerr << "prime: " << e.what() << "\n";
+    return 1;
   } catch (const std::logic_error& e) {  // the command table (addEveryCommand)
     std::cerr << "prime: internal error: " << e.what() << "\n";
     return 1;
@@ -263,8 +287,11 @@ int primeMain(int argc, char** argv, bool parseOnly) {
   } catch (const CLI::ParseError& e) {  // an option's value found wrong only in the action
     std::cerr << "prime: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "prime: out of memory " << doing(words) << "\n";
+    return 1;
   } catch (const std::exception& e) {
-    std::cerr << "prime: error: " << e.what() << "\n";
+    std::cerr << "prime: error " << doing(words) << ": " << e.what() << "\n";
     return 1;
   }
 }

@@ -47,9 +47,21 @@ struct TraceFlags {
 class TraceJob {
  public:
   virtual ~TraceJob() = default;
-  // Every file the job may write (checked before the scene is read and again
-  // after, when its inputs are known: no output may replace an input).
-  virtual std::vector<std::string> outputs() const = 0;
+  // Every file the job may write, with the flag that names it ("" for none:
+  // not written). Checked before the scene is read and again after, when its
+  // inputs are known: no output may replace an input, no two may name one file.
+  struct Output {
+    std::string flag;  // "--png", or what the file is ("the graph file's .partial")
+    std::string path;
+  };
+  virtual std::vector<Output> outputs() const = 0;
+  // True when the job writes a picture whatever outputs() names (PRIME's
+  // graph file); else a render with no output named writes nothing, and says so.
+  virtual bool writesWithoutOutputs() const { return false; }
+  // The flags that would write the picture, for that message ("--png OUT.png").
+  virtual std::string outputHint() const { return "--png OUT.png"; }
+  // The scene file or directory, as the command line named it.
+  virtual std::string scene() const = 0;
   // Reads and builds the scene; prints the system's own report unless quiet.
   virtual void load() = 0;
   // False when the scene itself asks for quiet (CGL's quiet parameter).
@@ -132,9 +144,9 @@ struct System {
 std::span<const System> systems();
 const System* findSystem(std::string_view name);
 
-// The system a verb's command line names: --format, else the first system
-// that recognises the scene (the first word after the verb that names an
-// existing file or directory), else PRIME. For export and view, the system
+// The system a verb's command line names: --format, else the system of the
+// first file a system reads as its scene, else of the first directory (PRIME),
+// else PRIME. For export and view, the system
 // whose picture the file is.
 const System& systemFor(std::string_view verb, const std::vector<std::string>& args);
 

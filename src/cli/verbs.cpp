@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "legacy_io/common/output_file.h"
 #include "palette/window/live_frame.h"
+#include "src/cli/option_values.h"
+#include "src/cli/step.h"
 #include "src/cli/system.h"
 
 namespace prime::cli {
@@ -72,7 +75,8 @@ const System* findSystem(std::string_view name) {
 }
 
 const System& systemFor(std::string_view verb, const std::vector<std::string>& args) {
-  std::string format, scene;
+  std::string format;
+  std::vector<std::string> words;  // the words that are not flags: the scene, and flags' values
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--format" && i + 1 < args.size()) {
@@ -80,52 +84,100 @@ const System& systemFor(std::string_view verb, const std::vector<std::string>& a
     } else if (a.rfind("--format=", 0) == 0) {
       format = a.substr(9);
     } else if (!a.empty() && a[0] != '-') {
-      // The first word that names a file or directory (a 1985 call statement
-      // puts numbers before it: `trace -yh 511 scene`), else the first word.
-      if (scene.empty() || (!std::filesystem::exists(scene) && std::filesystem::exists(a)))
-        scene = a;
+      words.push_back(a);
     }
   }
   const std::span<const System> all = systems();
   if (verb == "export" || verb == "view") {  // PRIME's graph files are the default
+    // The first word that names a file, else the first word.
+    std::string picture = words.empty() ? std::string() : words.front();
+    for (const std::string& w : words)
+      if (std::filesystem::exists(w)) {
+        picture = w;
+        break;
+      }
     for (const System& sys : all)
-      if (sys.picture != nullptr && sys.picture(scene, format)) return sys;
+      if (sys.picture != nullptr && sys.picture(picture, format)) return sys;
     return all.front();
   }
   if (const System* named = findSystem(format)) return *named;
+  // The scene: the first file a system reads as its own (a flag's value, such
+  // as the existing picture of `-o pic.rle scene.cgl`, is not one), else the
+  // first directory (PRIME's), else the first word.
   std::error_code ec;
-  const bool isFile = !scene.empty() && std::filesystem::is_regular_file(scene, ec);
-  const std::string head = isFile ? fileHead(scene) : std::string();
-  for (const System& sys : all)
-    if (sys.recognises(scene, isFile, head)) return sys;
+  for (const std::string& w : words)
+    if (std::filesystem::is_regular_file(w, ec)) {
+      const std::string head = fileHead(w);
+      for (const System& sys : all)
+        if (sys.recognises(w, true, head)) return sys;
+    }
+  for (const std::string& w : words)
+    if (std::filesystem::is_directory(w, ec))
+      for (const System& sys : all)
+        if (sys.recognises(w, false, {})) return sys;
   return all.front();
 }
 
 // ---- trace -------------------------------------------------------------------
 
+namespace {
+
+// Refuses an output that cannot be written (a missing directory, a device, an
+// input of the run) and two outputs that name one file (the second replaced
+// the first): before the render, not after it.
+void checkOutputs(const TraceJob& job) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<TraceJob::Output, fs::path>> seen;
+  for (const TraceJob::Output& out : job.outputs()) {
+    if (out.path.empty()) continue;
+    io::checkOutputPath(out.path);
+    std::error_code ec;
+    fs::path where = fs::weakly_canonical(out.path, ec);
+    if (ec) where = fs::absolute(out.path);
+    for (const auto& [other, at] : seen) {
+      std::error_code same;
+      if (at == where || fs::equivalent(other.path, out.path, same))
+        throw io::InputError(
+            {out.path, std::nullopt, std::nullopt},
+            other.flag + " and " + out.flag + " name the same file: each output needs its own");
+    }
+    seen.emplace_back(out, where);
+  }
+}
+
+}  // namespace
+
 int runTrace(TraceJob& job, const TraceFlags& flags) {
-  // Outputs whose directory is missing are found before the render, not after it.
-  for (const std::string& out : job.outputs())
-    if (!out.empty()) io::checkOutputPath(out);
+  checkOutputs(job);
+  std::optional<Step> step;
+  step.emplace("reading " + job.scene());
   job.load();
   // Again now that the inputs are known: none may be an output.
-  for (const std::string& out : job.outputs())
-    if (!out.empty()) io::checkOutputPath(out);
+  checkOutputs(job);
+  bool writes = job.writesWithoutOutputs();
+  for (const TraceJob::Output& out : job.outputs()) writes = writes || !out.path.empty();
+  if (!writes)  // said before the render, which Ctrl-C can then spare
+    std::cerr << "prime: trace: no output named, so the picture will not be written (add "
+              << job.outputHint() << ")\n";
   const bool quiet = job.quiet();
   LiveOptions options = flags.live;
   options.quiet = quiet;
   options.commandName = "trace";
   job.configure(options);
   LiveRender live(job.frame(), options);
+  step.emplace("rendering " + job.scene());
   job.render(live);
   if (job.aborted()) {
     live.closeWindow();  // ExitOnEsc: the screen goes at once
     job.abort();
     return 1;  // as the 1991 ExitOnEsc's exit(1)
   }
+  step.emplace("writing the picture of " + job.scene());
   const std::vector<std::string> written = job.write();
+  step.reset();
   if (!quiet) {
     job.summary(written);
+    if (written.empty()) std::printf("wrote nothing: no output was named\n");
     // One "wrote PATH" line per file written, as every command.
     for (const std::string& f : written) std::printf("wrote %s\n", f.c_str());
   }
@@ -146,12 +198,15 @@ void addTraceVerb(CLI::App& app, Action& action, const System& system) {
   addFormatOption(cmd, "scene");
   cmd->add_option("--png", flags->png,
                   "Write the picture as the system itself showed or wrote it, as PNG (PRIME: the "
-                  "8514/A screen; Malone: its PPM; CGL: its frame buffer)");
+                  "8514/A screen; Malone: its PPM; CGL: its frame buffer)")
+      ->check(outputName());
   cmd->add_option("--true-color-png", flags->trueColourPng,
-                  "Write the render before any palette, as PNG (true colour)");
+                  "Write the render before any palette, as PNG (true colour)")
+      ->check(outputName());
   cmd->add_option("--png-8514", flags->png8514,
                   "Write the picture as PRIME's IBM 8514/A (1991) would have shown it, as PNG "
-                  "(for PRIME the same as --png)");
+                  "(for PRIME the same as --png)")
+      ->check(outputName());
   addQuantizeOptions(cmd, flags->quantize, "the --png picture");
   cmd->add_option("--threads", flags->threads, "Render threads (default: all cores)")
       ->check(CLI::Range(0, 1024));
@@ -189,7 +244,8 @@ void addProbeVerb(CLI::App& app, Action& action, const System& system) {
   cmd->add_option("--overlay", flags->overlay,
                   "Also write the picture with this pixel's ray tree drawn over it, as PNG "
                   "(needs --pixel)")
-      ->type_name("OUT.png");
+      ->type_name("OUT.png")
+      ->check(outputName());
   const ProbeFactory make = system.probe(cmd, flags);
   cmd->callback([flags, make, &action] {
     action = [flags, make] {

@@ -8,7 +8,7 @@ namespace prime::malone {
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const RenderCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
-  const Tracer tracer(scene, settings.trace);
+  const Tracer tracer(scene, settings.trace, callbacks.abort);
   const double setupSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const int width = scene.viewer.xRes, height = scene.viewer.yRes;

@@ -1,7 +1,9 @@
 #include "src/malone/scene.h"
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <string>
 
 namespace prime::malone {
 
@@ -232,6 +234,21 @@ Scene buildScene(const SceneFile& file, const std::string& name) {
     q.surface = p.surface;
     scene.primitives.push_back(q);
   }
+  // The light samples every shading point visits, counted before any is
+  // made: a few numbers ask for 100,000 samples a light, any number of lights.
+  std::uint64_t samples = 0;
+  for (const auto& l : file.lights) {
+    samples += l.id == ObjectId::SampledLight ? static_cast<std::uint64_t>(l.samples) : 1;
+    if (samples * sizeof(LightSample) > kMaxLightSampleBytes)
+      throw io::InputError(l.where, "sampled light, samples",
+                           "at most " + std::to_string(kMaxLightSampleBytes / sizeof(LightSample)) +
+                               " light samples in the whole scene (" +
+                               std::to_string(kMaxLightSampleBytes >> 20) +
+                               " MiB of them; each is a shadow ray " + "from every point shaded)",
+                           std::to_string(samples) + " by this light (" +
+                               std::to_string(samples * sizeof(LightSample) >> 20) + " MiB)");
+  }
+  scene.lights.reserve(samples);
   for (const auto& l : file.lights) {
     const Rgb rgb{l.rgb[0], l.rgb[1], l.rgb[2]};
     if (l.id == ObjectId::SampledLight) {

@@ -5,6 +5,7 @@
 // the object's place in the file.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -85,6 +86,11 @@ struct Scene {
     return {name, p.line, std::nullopt, p.column, p.token};
   }
 };
+
+// What the light samples of a scene may take (a limit of memory and of work:
+// every point shaded sends a shadow ray to each): 1 GiB, about 19 million
+// samples: about 190 lights of 100,000 samples, the most the reader takes.
+inline constexpr std::uint64_t kMaxLightSampleBytes = std::uint64_t{1} << 30;
 
 // Builds the scene; throws io::InputError naming the object whose numbers
 // make no primitive (a zero normal or axis, a degenerate triangle, polygon

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "src/render/render_rows.h"
+
 namespace prime::malone {
 
 TraceStats& TraceStats::operator+=(const TraceStats& o) {
@@ -28,8 +30,8 @@ MRay ViewerRays::operator()(int X, int Y) const {
   return ray;
 }
 
-Tracer::Tracer(const Scene& scene, TraceSettings settings)
-    : scene_(scene), settings_(settings), rays_(scene.viewer) {
+Tracer::Tracer(const Scene& scene, TraceSettings settings, const std::atomic<bool>* abort)
+    : scene_(scene), settings_(settings), abort_(abort), rays_(scene.viewer) {
   std::vector<Aabb> boxes;
   for (int i = 0; i < static_cast<int>(scene.primitives.size()); ++i) {
     Aabb box = bounds(scene, scene.primitives[i]);
@@ -143,7 +145,7 @@ Rgb Tracer::illumination(const Surface& s, const Vec3& x, const Vec3& df, const 
     const double ds = dot(df, sdir);
     if (!(ds > 0)) continue;  // the surface does not face the light
     if (settings_.shadows) {
-      ++stats.shadowRays;
+      if ((++stats.shadowRays & 4095) == 0) checkAbort(abort_);  // R9, within the pixel
       MRay shadow;
       shadow.o = x;
       shadow.d = sdir;

@@ -5,6 +5,7 @@
 // can add k_t to k_s); Phong with the r^-2 law and shadow rays to every
 // light sample; the reflected ray; the cut-offs by depth and weight.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,7 +54,10 @@ class ViewerRays {
 
 class Tracer {
  public:
-  Tracer(const Scene& scene, TraceSettings settings);
+  // `abort`: the render's Ctrl-C / Esc flag, also checked every 4096 shadow
+  // rays within a pixel (a pixel of many sampled lights takes seconds), by
+  // checkAbort (src/render/render_rows.h). Null: never aborted.
+  Tracer(const Scene& scene, TraceSettings settings, const std::atomic<bool>* abort = nullptr);
 
   // The primary ray of pixel (X, Y), exactly as printed (section 1.6):
   // through v((2X - X_RES)/X_RES, -(2Y - Y_RES)/Y_RES), no half-pixel offset.
@@ -86,6 +90,7 @@ class Tracer {
 
   const Scene& scene_;
   TraceSettings settings_;
+  const std::atomic<bool>* abort_ = nullptr;
   ViewerRays rays_;  // the scene's viewer's
   Bvh bvh_;
   std::vector<int> unbounded_;  // planes: tested on every ray

@@ -6,6 +6,7 @@
 // docs/cgl/deviations.md CGL-E80). -o names the output file: the usual build
 // encoded it (-Dencode), so it is --rle here.
 #include <cctype>
+#include <cstdlib>
 #include <map>
 
 #include "src/cli/cgl/commands.h"
@@ -23,25 +24,52 @@ bool isInteger(const std::string& s) {
   return true;
 }
 
+bool isNumber(const std::string& s) {
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return !s.empty() && end == s.c_str() + s.size();
+}
+
 }  // namespace
 
 void translateCallStatement(std::vector<std::string>& args, std::size_t first) {
-  static const std::map<std::string, std::string> kFlags = {
-      {"-o", "--rle"},     {"-yh", "--yhigh"},    {"-yl", "--ylow"},       {"-xl", "--xleft"},
-      {"-xr", "--xright"}, {"-d", "--max-depth"}, {"-s", "--shadows"},     {"-S", "--shadows"},
-      {"-m", "--memory"},  {"-q", "--quiet"},     {"-t", "--aathreshold"}, {"-a", "--aalevel"}};
+  // Each flag, the port's name for it, and whether a value follows it.
+  struct Flag {
+    const char* port;
+    bool value;
+  };
+  static const std::map<std::string, Flag> kFlags = {
+      {"-o", {"--rle", true}},      {"-yh", {"--yhigh", true}},      {"-yl", {"--ylow", true}},
+      {"-xl", {"--xleft", true}},   {"-xr", {"--xright", true}},     {"-d", {"--max-depth", true}},
+      {"-s", {"--shadows", false}}, {"-S", {"--shadows", false}},    {"-m", {"--memory", true}},
+      {"-q", {"--quiet", false}},   {"-t", {"--aathreshold", true}}, {"-a", {"--aalevel", true}}};
+  // The value of a flag: the next word, which must be there and must not be
+  // another flag (`-o -q` named the output `--quiet`).
+  const auto valueOf = [&args](std::size_t i, const std::string& flag) {
+    if (i + 1 >= args.size() || args[i + 1] == "--" ||
+        (args[i + 1].size() > 1 && args[i + 1][0] == '-' && !isNumber(args[i + 1])))
+      throw CLI::ValidationError(
+          flag, "expected " + std::string(flag == "-o" ? "a path name" : "a number") +
+                    " after it (Sweeney, Appendix 2), got " +
+                    (i + 1 < args.size() ? "'" + args[i + 1] + "'" : "nothing"));
+  };
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string a = args[i];
     if (a == "--") break;
     if (a == "-b") {
+      valueOf(i, a);
       // Three integers: the uniform background colour; else the brightness.
       const bool rgb = i + 3 < args.size() && isInteger(args[i + 1]) && isInteger(args[i + 2]) &&
                        isInteger(args[i + 3]);
       args[i] = rgb ? "--background" : "--brightness";
+      i += rgb ? 3 : 1;
       continue;
     }
     const auto f = kFlags.find(a);
-    if (f != kFlags.end()) args[i] = f->second;
+    if (f == kFlags.end()) continue;
+    if (f->second.value) valueOf(i, a);
+    args[i] = f->second.port;
+    if (f->second.value) ++i;  // the value is the next word, whatever it spells
   }
 }
 

@@ -13,6 +13,7 @@
 #include "legacy_io/common/text_reader.h"
 #include "src/cgl/cook.h"
 #include "src/cli/cgl/commands.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli::cgl {
 
@@ -83,15 +84,16 @@ void addCookCommand(CLI::App& app, Action& action) {
   auto out = std::make_shared<std::string>();
   auto refl = std::make_shared<std::vector<std::string>>();
   auto d = std::make_shared<prime::cgl::CookDescriptor>();
-  cmd->add_option("OUT", *out, "The file to write the surface descriptor to")->required();
+  cmd->add_option("OUT", *out, "The file to write the surface descriptor to")
+      ->required()
+      ->check(outputName());
   cmd->add_option("--reflectance", *refl,
                   "The normal reflectance R, 380-700 nm every 10 nm: a file of 33 numbers ('*' "
                   "lines are comments) or the 33 numbers; the Fresnel table is made from it, "
                   "the normal-colour-vector written is R/pi")
       ->required()
       ->expected(1, 33);
-  cmd->add_option("--count", d->count, "The surface's number in its scene file")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--count", d->count, "The surface's number in its scene file")->check(above(0));
   cmd->add_option("--diffuse", d->diffuse, "k_d (0.0-1.0)")->check(CLI::Range(0.0, 1.0e6));
   cmd->add_option("--specular", d->specular, "k_s (0.0-1.0)")->check(CLI::Range(0.0, 1.0e6));
   cmd->add_option("--m", d->m, "The rms facet slope m (0.1-1.0)")->check(CLI::Range(1.0e-6, 1.0e6));

@@ -9,6 +9,7 @@
 #include "src/cgl/pov_export.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli::cgl {
 
@@ -20,7 +21,8 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
   cmd->add_option("OUT", *out,
                   "POV-Ray scene file to write (e.g. scene.pov); texture maps are written beside "
                   "it as <OUT stem>-texture<k>.png")
-      ->required();
+      ->required()
+      ->check(outputName());
   cmd->add_option("--aalevel", o->aalevel,
                   "Anti-aliasing level the picture is compared at (default: the file's): 0 puts "
                   "POV-Ray's pixel centres on CGL's pixel corners and writes -A")

@@ -11,6 +11,7 @@
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/picture.h"
 #include "src/cli/live_render.h"
+#include "src/cli/option_values.h"
 #include "src/cli/view_8514.h"
 
 namespace prime::cli::cgl {
@@ -50,7 +51,7 @@ void addExportOptions(CLI::App* cmd, Action& action) {
     cmd->add_option("PICTURE", *file, "CGL picture: RLE (.rle) or raw frame (.raw)")
         ->required()
         ->check(CLI::ExistingFile);
-    cmd->add_option("OUT", *out, "Output: .png, .rle or .raw")->required();
+    cmd->add_option("OUT", *out, "Output: .png, .rle or .raw")->required()->check(outputName());
     cmd->add_option("--format", *format, "The picture's format (default: from its extension)")
         ->check(CLI::IsMember({"rle", "raw"}));
     cmd->add_flag("--8514", *as8514,

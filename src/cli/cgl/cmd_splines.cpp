@@ -6,16 +6,16 @@
 // Newton times come from a second pass over the primary rays: the intersection alone, then Newton
 // alone replayed from the same starts. With --holes N, every N-th pixel's primary ray is also
 // traced by the dense reference (src/cgl/spline.h): the rays it hits and the Newton path misses.
-// With
-// --distances FILE, every pixel's primary ray is traced by both and the
-// distances to the nearest spline hit are written as CSV (the holes against
-// POV-Ray: bench/cgl/spline_holes.sh, CGL-D171).
+// With --distances FILE, every pixel's primary ray is traced by both and the distances to the
+// nearest spline hit are written as CSV (the holes against POV-Ray: bench/cgl/spline_holes.sh,
+// CGL-D171).
 #include <chrono>
 
 #include "legacy_io/common/output_file.h"
 #include "src/cgl/spline_study.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/cgl/options.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli::cgl {
 
@@ -31,10 +31,12 @@ void addSplinesCommand(CLI::App& app, Action& action) {
   auto distances = std::make_shared<std::string>();
   cmd->add_option("--distances", *distances,
                   "Write every pixel's distance to the nearest spline hit, by the dense "
-                  "reference and by the Newton path, as CSV (x,y,reference,path; empty: none)");
+                  "reference and by the Newton path, as CSV (x,y,reference,path; empty: none)")
+      ->check(outputName());
   cmd->callback([o, holes, distances, &action] {
-    if (!distances->empty()) io::checkOutputPath(*distances);
     action = [o, holes, distances] {
+      // Refused before the study, not after its minutes of rendering.
+      if (!distances->empty()) io::checkOutputPath(*distances);
       using Clock = std::chrono::steady_clock;
       const auto t0 = Clock::now();
       const prime::cgl::SceneFile file = readCgl(*o, true);

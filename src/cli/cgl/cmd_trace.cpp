@@ -22,6 +22,7 @@
 #include "src/cli/cgl/picture.h"
 #include "src/cli/cgl/probe_pixel.h"
 #include "src/cli/live_render.h"
+#include "src/cli/option_values.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
 #include "src/cli/view_8514.h"
@@ -105,9 +106,15 @@ class CglTrace : public TraceJob {
            std::shared_ptr<std::string> rle, std::shared_ptr<std::string> raw)
       : o_(std::move(o)), flags_(std::move(flags)), rle_(std::move(rle)), raw_(std::move(raw)) {}
 
-  std::vector<std::string> outputs() const override {
-    return {*rle_, *raw_, flags_->png, flags_->trueColourPng, flags_->png8514};
+  std::vector<Output> outputs() const override {
+    return {{"--rle", *rle_},
+            {"--raw", *raw_},
+            {"--png", flags_->png},
+            {"--true-color-png", flags_->trueColourPng},
+            {"--png-8514", flags_->png8514}};
   }
+  std::string outputHint() const override { return "--png OUT.png or --rle OUT.rle"; }
+  std::string scene() const override { return o_->file; }
   void load() override {
     o_->threads = flags_->threads;
     o_->quiet = flags_->quiet;
@@ -223,9 +230,11 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   addCglOptions(cmd, *o);
   cmd->add_option("--rle", *rle,
                   "Write the picture run-length encoded, as the package did (-Dencode); "
-                  "Appendix 2's -o");
+                  "Appendix 2's -o")
+      ->check(outputName());
   cmd->add_option("--raw", *raw,
-                  "Write the raw 512 x 512 x 32-bit frame (the build without encode)");
+                  "Write the raw 512 x 512 x 32-bit frame (the build without encode)")
+      ->check(outputName());
   return [o, flags, rle, raw] { return std::make_unique<CglTrace>(o, flags, rle, raw); };
 }
 

@@ -48,6 +48,7 @@ void addBenchOptions(CLI::App* cmd, Action& action) {
     const auto file = prime::malone::readSceneFile(path);
     const double t1 = bench::wallSeconds();
     auto scene = prime::malone::buildScene(file, path);
+    checkPictureMemory(scene, o);
     // "build" is the scene and the BVH.
     { const prime::malone::Tracer once(scene, o.trace); }
     const double t2 = bench::wallSeconds();

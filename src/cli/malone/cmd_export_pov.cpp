@@ -6,6 +6,7 @@
 
 #include "legacy_io/malone/input.h"
 #include "src/cli/malone/commands.h"
+#include "src/cli/option_values.h"
 #include "src/malone/pov_export.h"
 
 namespace prime::cli::malone {
@@ -17,7 +18,9 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
   auto quiet = std::make_shared<bool>(false);
   auto options = std::make_shared<prime::malone::PovExportOptions>();
   cmd->add_option("SCENE", *file, "Malone scene file (a stream of numbers)")->required();
-  cmd->add_option("OUT", *out, "POV-Ray scene file to write (e.g. scene.pov)")->required();
+  cmd->add_option("OUT", *out, "POV-Ray scene file to write (e.g. scene.pov)")
+      ->required()
+      ->check(outputName());
   cmd->add_flag("--comments", *comments,
                 "Extension, not the original: '#' starts a comment to the end of the line");
   cmd->add_option("--max-depth", options->maxDepth,

@@ -15,6 +15,7 @@
 #include "src/cli/malone/commands.h"
 #include "src/cli/malone/options.h"
 #include "src/cli/malone/probe_pixel.h"
+#include "src/cli/option_values.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
 #include "src/cli/view_8514.h"
@@ -59,12 +60,18 @@ class MaloneTrace : public TraceJob {
               std::shared_ptr<std::string> ppm)
       : o_(std::move(o)), flags_(std::move(flags)), ppm_(std::move(ppm)) {}
 
-  std::vector<std::string> outputs() const override {
-    return {*ppm_, flags_->png, flags_->trueColourPng, flags_->png8514};
+  std::vector<Output> outputs() const override {
+    return {{"--ppm", *ppm_},
+            {"--png", flags_->png},
+            {"--true-color-png", flags_->trueColourPng},
+            {"--png-8514", flags_->png8514}};
   }
+  std::string outputHint() const override { return "--png OUT.png or --ppm OUT.ppm"; }
+  std::string scene() const override { return o_->file; }
   void load() override {
     o_->threads = flags_->threads;
     scene_.emplace(loadMalone(*o_, &load_));
+    checkPictureMemory(*scene_, *o_);
     frame_.emplace(scene_->viewer.xRes, scene_->viewer.yRes);
   }
   bool quiet() const override { return flags_->quiet; }
@@ -157,7 +164,8 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   auto o = std::make_shared<MaloneOptions>();
   auto ppm = std::make_shared<std::string>();
   addMaloneOptions(cmd, *o);
-  cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did");
+  cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did")
+      ->check(outputName());
   return [o, flags, ppm] { return std::make_unique<MaloneTrace>(o, flags, ppm); };
 }
 

@@ -1,6 +1,8 @@
 #include "src/cli/malone/options.h"
 
 #include <chrono>
+#include <cstdint>
+#include <string>
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/malone/input.h"
@@ -11,9 +13,13 @@ void addMaloneOptions(CLI::App* cmd, MaloneOptions& o) {
   cmd->add_option("SCENE", o.file, "Malone scene file (a stream of numbers)")->required();
   cmd->add_flag("--comments", o.comments,
                 "Extension, not the original: '#' starts a comment to the end of the line");
+  // Up to 10,000: the recursion takes about 490 bytes a level of a thread's
+  // 8 MiB stack (17,000 levels overflow it), and MIN_WEIGHT cuts every path
+  // sooner unless a surface reflects 99.9 % or more (MAL-D8).
   cmd->add_option("--max-depth", o.trace.maxDepth,
-                  "Deepest ray traced; the primary ray has depth 1 (default 7)")
-      ->check(CLI::Range(1, 64));
+                  "Deepest ray traced, 1..10000; the primary ray has depth 1 (default 7; "
+                  "--min-weight also ends paths)")
+      ->check(CLI::Range(1, 10000));
   cmd->add_option("--min-weight", o.trace.minWeight,
                   "MIN_WEIGHT: rays weighing less are not spawned (default 0.01/256)")
       ->check(CLI::Range(0.0, 1.0));
@@ -63,6 +69,22 @@ prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings) {
     timings->build = std::chrono::duration<double>(Clock::now() - readDone).count();
   }
   return scene;
+}
+
+void checkPictureMemory(const prime::malone::Scene& scene, const MaloneOptions& o) {
+  const std::uint64_t pixels =
+      static_cast<std::uint64_t>(scene.viewer.xRes) * static_cast<std::uint64_t>(scene.viewer.yRes);
+  if (pixels * kPictureBytesPerPixel <= kMaxPictureBytes) return;
+  throw io::InputError(
+      {o.file, std::nullopt, std::nullopt},
+      o.applied ? "--size (the camera flags)" : "viewer, xres and yres",
+      "a picture that fits in " + std::to_string(kMaxPictureBytes >> 30) + " GiB (" +
+          std::to_string(kPictureBytesPerPixel) +
+          " bytes a pixel: the render's three doubles, the window's and the PNG's bytes; at most " +
+          std::to_string(kMaxPictureBytes / kPictureBytesPerPixel) + " pixels)",
+      std::to_string(scene.viewer.xRes) + " x " + std::to_string(scene.viewer.yRes) + " = " +
+          std::to_string(pixels) + " pixels, " +
+          std::to_string(pixels * kPictureBytesPerPixel >> 20) + " MiB");
 }
 
 }  // namespace prime::cli::malone

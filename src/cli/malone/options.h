@@ -1,6 +1,7 @@
 // The options every Malone command shares: how the scene is read and traced.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -29,5 +30,12 @@ struct LoadTimings {
   double read = 0, build = 0;
 };
 prime::malone::Scene loadMalone(MaloneOptions& o, LoadTimings* timings = nullptr);
+
+// What a whole picture may take (trace and bench hold all of it; probe one
+// pixel, walk the window's): a viewer of 16384 x 16384 asked for 6.2 GB
+// before the first row. Throws io::InputError naming the viewer (or --size).
+inline constexpr std::uint64_t kPictureBytesPerPixel = 31;
+inline constexpr std::uint64_t kMaxPictureBytes = std::uint64_t{4} << 30;
+void checkPictureMemory(const prime::malone::Scene& scene, const MaloneOptions& o);
 
 }  // namespace prime::cli::malone

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/prime/bench/bench.h"
 #include "src/prime/bench/scale.h"
 
@@ -138,7 +139,7 @@ void addBenchOptions(CLI::App* cmd, Action& action) {
   auto o = std::make_shared<BenchCliOptions>();
   cmd->add_option("SCENE_DIR", o->scenes,
                   "Scene directories (default: every scenes/prime/*/ with a Model.txt)")
-      ->check(CLI::ExistingDirectory);
+      ->check(sceneDirectory());
   cmd->add_option("--out", o->out,
                   "Directory for bench.csv, bench.md, time_error.png (default: out/bench)");
   cmd->add_option("--runs", o->runs,
@@ -149,7 +150,7 @@ void addBenchOptions(CLI::App* cmd, Action& action) {
                 "jittered and statistical supersampling against a jittered 16 x 16 reference");
   cmd->add_option("--light-radius", o->lightRadius,
                   "The sampling study's light radius (100; 0: point lights, hard shadows)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->add_flag("--quick", o->quick, "A few settings, one run, a 45 x 97 picture: for tests");
   cmd->add_option(
          "--screen", o->screen,
@@ -170,7 +171,7 @@ void addBenchOptions(CLI::App* cmd, Action& action) {
       ->check(CLI::Range(1, 1000000));
   cmd->add_option("--scale-off-max", o->scaleOffMax,
                   "Largest scene rendered with the skips and the BVH off (default: all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->add_option("--scale-runs", o->scaleRuns,
                   "Renders per scale case; the median is reported (default 3)")
       ->check(CLI::Range(1, 100));

@@ -8,6 +8,7 @@
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/scene_check.h"
 
 namespace prime::cli {
@@ -20,7 +21,7 @@ void addCheckCommand(CLI::App& app, Action& action) {
       "palette entries)");
   auto dir = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing when the scene is clean");
   cmd->callback([=, &action] {
     action = [=] {

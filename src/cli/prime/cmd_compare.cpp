@@ -16,6 +16,7 @@
 #include "palette/png_image.h"
 #include "palette/prime/export.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/render_options.h"
 #include "src/prime/bench/plot.h"
 #include "src/prime/render/compare.h"
@@ -275,12 +276,13 @@ void addCompareCommand(CLI::App& app, Action& action) {
   auto model = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
   auto only = std::make_shared<std::string>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
   cmd->add_option("--a", *a, "Settings of A, any of trace's render options (\"--profile 1991\")");
   cmd->add_option("--b", *b,
                   "Settings of B (\"--profile thesis\"; \"--profile modern\" in a build without "
                   "the thesis profile)");
-  cmd->add_option("--png", *png, "The side-by-side PNG: A | B | difference (DIR/compare.png)");
+  cmd->add_option("--png", *png, "The side-by-side PNG: A | B | difference (DIR/compare.png)")
+      ->check(outputName());
   cmd->add_option("--divergence-samples", *samples,
                   "Differing pixels whose ray trees are probed for where they part (5)")
       ->check(CLI::Range(0, 1000));
@@ -291,7 +293,7 @@ void addCompareCommand(CLI::App& app, Action& action) {
                   "reflections), shadow, shading (the same rays, other colours)")
       ->check(CLI::IsMember(classes));
   cmd->add_option("--threads", *threads, "Render threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1024));
   cmd->add_flag("--model", *model, "Build the databases from the text inputs first (prime model)");
   cmd->callback([=, &action] {
     action = [=] {

@@ -4,6 +4,7 @@
 #include "legacy_io/prime/dump.h"
 #include "legacy_io/prime/scene_dir.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli {
 
@@ -27,8 +28,7 @@ void addDumpCommand(CLI::App& app, Action& action) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--as", *as, "Read it as this kind instead of guessing from its name")
       ->check(CLI::IsMember({"prim", "obj", "list", "map", "graph"}));
-  cmd->add_option("--rows", *rows, "Rows of map/graph data to print")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--rows", *rows, "Rows of map/graph data to print")->check(atLeast(0));
   cmd->callback([=, &action] {
     action = [=] {
       auto kind = as->empty() ? io::kindFromFileName(*file) : io::kindFromName(*as);

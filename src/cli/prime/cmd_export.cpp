@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/display_options.h"
 
 namespace prime::cli {
@@ -15,7 +16,7 @@ void addExportOptions(CLI::App* cmd, Action& action) {
   cmd->add_option("GRAPHFILE", *file, "Graph file (graph_scr, or the .partial of an aborted trace)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("OUT", *out, "PNG file to write")->required();
+  cmd->add_option("OUT", *out, "PNG file to write")->required()->check(outputName());
   addPaletteOption(cmd, *o, "from the file's graphType (0: vga, else listing)");
   addDacOption(cmd, *o);
   addAreaOption(cmd, *o, "--area");

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/camera_options.h"
 #include "src/cli/prime/render_options.h"
 #include "src/prime/pov/pov_export.h"
@@ -27,8 +28,10 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
   auto out = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
   auto o = std::make_shared<ExportPovOptions>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("OUT", *out, "POV-Ray scene file to write (e.g. scene.pov)")->required();
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
+  cmd->add_option("OUT", *out, "POV-Ray scene file to write (e.g. scene.pov)")
+      ->required()
+      ->check(outputName());
   addCameraOptions(cmd, o->camera);
   cmd->add_option(
          "--max-depth", o->maxDepth,
@@ -42,7 +45,7 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
   cmd->add_option("--light-radius", o->lightRadius,
                   "With --shadows: lights are circular area lights of this radius, facing the "
                   "point lit (prime trace --profile thesis --light-radius)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {

@@ -6,6 +6,7 @@
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/model_commit.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/scene_check.h"
 #include "src/prime/scene/scene_loader.h"
 
@@ -24,7 +25,7 @@ void addModelCommand(CLI::App& app, Action& action) {
   cmd->add_option("DIR", *dir,
                   "Scene directory (holds Model.txt or a 1991 Model.c, prim/, obj/, map/ ...)")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(sceneDirectory());
   cmd->add_flag("--copy-type-from-source", options->copyTypeFromSource,
                 "Give primitives copied by an O entry their source's type (not the listing: K33)");
   cmd->add_flag(

@@ -10,6 +10,7 @@
 #include "palette/prime/export.h"
 #include "palette/prime/palettes.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/camera_options.h"
 #include "src/prime/plate1/plate1.h"
 
@@ -28,10 +29,12 @@ void addPlate1Command(CLI::App& app, Action& action) {
   auto o = std::make_shared<Options>();
   cmd->add_option("DIR", o->dir, "Scene directory holding knots.txt (scenes/prime/plate1)")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(sceneDirectory());
   cmd->add_option("--knots", o->knots, "Knot file (default: DIR/knots.txt)");
-  cmd->add_option("--out", o->out, "Graph file to write (default: DIR/graph_scr)");
-  cmd->add_option("--png", o->png, "Also write the picture as PNG (listing palette)");
+  cmd->add_option("--out", o->out, "Graph file to write (default: DIR/graph_scr)")
+      ->check(outputName());
+  cmd->add_option("--png", o->png, "Also write the picture as PNG (listing palette)")
+      ->check(outputName());
   cmd->add_option("--png-area", o->area, "image (the viewport, default) or screen (all 1024 x 768)")
       ->check(CLI::IsMember({"image", "screen"}));
   addCameraOptions(cmd, o->camera);

@@ -4,6 +4,7 @@
 
 #include "palette/prime/color_num.h"
 #include "palette/prime/export.h"
+#include "src/cli/option_values.h"
 #include "src/cli/overlay.h"
 #include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
@@ -122,7 +123,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
   auto dir = std::make_shared<std::string>();
   auto ray = std::make_shared<std::vector<double>>();
   auto options = std::make_shared<RenderOptions>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
   auto* rx = cmd->add_option("--ray", *ray,
                              "Instead of --pixel, a world-space ray: origin x y z, direction x y z")
                  ->expected(6)

@@ -4,6 +4,7 @@
 
 #include "legacy_io/common/output_file.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/prime/stress/stress.h"
 
 namespace prime::cli {
@@ -32,7 +33,7 @@ void addStressCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(0, 4096));
   cmd->add_option("--tolerance", o->toleranceUlps, "C of the conditioning tolerance C*u*(...)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(above(0));
   cmd->add_flag("--no-quad", *noQuad, "Skip the __float128 reference (long double only)");
   cmd->add_option("--csv", *csv, "Also write the figures as CSV to FILE");
   cmd->add_flag("--markdown", *markdown, "Print Markdown tables");

@@ -25,6 +25,7 @@
 #include "palette/window/screen_window.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/display_options.h"
 #include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
@@ -251,15 +252,17 @@ class PrimeTrace : public TraceJob {
         partial_(target_ + ".partial") {}
 
   // Found before the render: a missing directory, a directory, an input (M23).
-  std::vector<std::string> outputs() const override {
-    return {target_,
-            partial_,
-            graphInfoPath(target_),
-            graphInfoPath(partial_),
-            flags_->png,
-            flags_->trueColourPng,
-            flags_->png8514};
+  std::vector<Output> outputs() const override {
+    return {{"--out", target_},
+            {"the graph file's .partial", partial_},
+            {"the graph file's .info", graphInfoPath(target_)},
+            {"the .partial's .info", graphInfoPath(partial_)},
+            {"--png", flags_->png},
+            {"--true-color-png", flags_->trueColourPng},
+            {"--png-8514", flags_->png8514}};
   }
+  bool writesWithoutOutputs() const override { return true; }  // the graph file
+  std::string scene() const override { return *dir_; }
   void load() override {
     finishRenderOptions(*options_);
     options_->settings.threads = flags_->threads;
@@ -395,8 +398,9 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   auto out = std::make_shared<std::string>();
   auto options = std::make_shared<RenderOptions>();
   auto display = std::make_shared<DisplayOptions>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)");
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
+  cmd->add_option("--out", *out, "Graph file to write (default: DIR/graph_scr)")
+      ->check(outputName());
   addAreaOption(cmd, *display, "--png-area");
   cmd->add_option(
       "--display-palette", display->palette,

@@ -8,6 +8,7 @@
 #include "palette/prime/live_screen.h"
 #include "palette/window/screen_window.h"
 #include "src/cli/commands.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/display_options.h"
 
 namespace prime::cli {
@@ -26,7 +27,7 @@ void addViewOptions(CLI::App* cmd, Action& action) {
   addWindowOptions(cmd, *o);
   cmd->add_option("--rows-per-second", *rate,
                   "Replay row by row at this rate (default 0: all at once)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->callback([=, &action] {
     action = [=] {
       const std::optional<GraphInfo> info = graphInfoFor(*o, *file);

@@ -12,6 +12,7 @@
 
 #include "palette/prime/color_num.h"
 #include "palette/prime/export.h"
+#include "src/cli/option_values.h"
 #include "src/cli/prime/commands.h"
 #include "src/cli/prime/probe_pixel.h"
 #include "src/cli/prime/render_options.h"
@@ -120,7 +121,7 @@ class PrimeWalkScene : public WalkScene {
 WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags) {
   auto dir = std::make_shared<std::string>();
   auto options = std::make_shared<RenderOptions>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
   addRenderOptions(cmd, *options, false);  // one ray per pixel: no sampling options
   return [dir, options, flags]() -> WalkJob {
     // A free camera is 512 x 512 unless --size says otherwise (T34).

@@ -7,6 +7,7 @@
 #include "legacy_io/common/run_inputs.h"
 #include "legacy_io/prime/model_builder.h"
 #include "legacy_io/prime/model_commit.h"
+#include "src/cli/option_values.h"
 #include "src/prime/render/probe.h"
 #include "src/prime/scene/scene_loader.h"
 
@@ -55,7 +56,7 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
          "--tir-cap", o.settings.trace.tirCap,
          "1991 profile: total-internal-reflection steps before giving up (errata E59: 1000; 0 = "
          "never, may hang); the modern profile stops at 64")
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->add_flag("--skip-empty-right", o.settings.trace.csg.skipRightWhenLeftEmpty,
                 "Errata Q4 alternative: skip the right subtree when the left list is empty");
   cmd->add_flag(
@@ -69,7 +70,7 @@ void addRenderOptions(CLI::App* cmd, RenderOptions& o, bool sampling) {
                   "Thesis profile: lights are discs of this radius (soft shadows); one value for "
                   "every light, or one per light in the light file's order")
       ->expected(1, 10)
-      ->check(CLI::NonNegativeNumber);
+      ->check(atLeast(0));
   cmd->add_flag("--no-shadows", o.noShadows,
                 "Thesis profile: cast no shadow rays (every light reaches every point)");
   cmd->add_option("--texel", o.texel,

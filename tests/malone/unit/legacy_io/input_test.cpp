@@ -244,6 +244,10 @@ TEST(MaloneInput, LooksLikeMalone) {
   EXPECT_FALSE(looksLikeMalone("P6\n"));
   EXPECT_FALSE(looksLikeMalone("1.5 2"));
   EXPECT_FALSE(looksLikeMalone(""));
+  // A binary file whose first word starts with a NUL (a CGL RLE picture named
+  // by `-o pic.rle scene.cgl`) is no number: strtod stopped at the NUL.
+  EXPECT_FALSE(looksLikeMalone(std::string("\0\x01\x02 x", 5)));
+  EXPECT_FALSE(looksLikeMalone(std::string("12\0", 3)));
 }
 
 }  // namespace
