@@ -1,6 +1,7 @@
 #include "legacy_io/prime/dir_lock.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -24,7 +25,18 @@ DirLock::DirLock(std::string lockFile, std::string what)
 }
 
 DirLock::~DirLock() {
-  if (fd_ >= 0) ::close(fd_);  // drops the lock
+  if (fd_ < 0) return;
+  clearPid();
+  ::close(fd_);  // drops the lock
+}
+
+// The exclusive holder takes its pid away before it lets go: a reader that
+// later holds the lock shared must not be reported by an old writer's pid.
+void DirLock::clearPid() {
+  if (exclusive_ && ::ftruncate(fd_, 0) != 0) {
+    // Only a message would be wrong: holder() checks that the pid still runs.
+  }
+  exclusive_ = false;
 }
 
 bool DirLock::tryLock(Mode mode) {
@@ -35,6 +47,7 @@ bool DirLock::tryLock(Mode mode) {
     throw InputError({file_, std::nullopt, std::nullopt},
                      "cannot lock: " + std::string(std::strerror(errno)));
   }
+  exclusive_ = mode == Mode::Exclusive;
   if (mode == Mode::Exclusive) {
     const std::string pid = std::to_string(::getpid()) + "\n";
     if (::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
@@ -49,10 +62,14 @@ void DirLock::lock(Mode mode) {
     if (errno != EINTR)
       throw InputError({file_, std::nullopt, std::nullopt},
                        "cannot lock: " + std::string(std::strerror(errno)));
-  if (mode == Mode::Exclusive) tryLock(mode);  // held already: writes the pid
+  if (mode == Mode::Exclusive)
+    tryLock(mode);  // held already: writes the pid
+  else
+    clearPid();  // converted from exclusive
 }
 
 void DirLock::unlock() {
+  clearPid();
   ::flock(fd_, LOCK_UN);
 }
 
@@ -60,15 +77,21 @@ long DirLock::holder() const {
   char buf[32] = {};
   const ssize_t n = ::pread(fd_, buf, sizeof buf - 1, 0);
   if (n <= 0) return 0;
-  return std::strtol(buf, nullptr, 10);
+  const long pid = std::strtol(buf, nullptr, 10);
+  // A pid left by a writer that was killed (SIGKILL cannot clear it) is no one's.
+  if (pid <= 0 || (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)) return 0;
+  return pid;
+}
+
+std::string DirLock::holderText() const {
+  const long pid = holder();
+  return pid > 0 ? "another " + what_ + " (pid " + std::to_string(pid) + ") is writing"
+                 : "another prime command is reading or writing";
 }
 
 void DirLock::busy(const std::string& dir, const std::string& hint) const {
-  const long pid = holder();
   throw InputError({dir, std::nullopt, std::nullopt},
-                   "busy: another " + what_ +
-                       (pid > 0 ? " (pid " + std::to_string(pid) + ")" : "") + " is writing " +
-                       dir + (hint.empty() ? "" : "; " + hint));
+                   "busy: " + holderText() + " " + dir + (hint.empty() ? "" : "; " + hint));
 }
 
 }  // namespace prime::io

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -38,6 +39,7 @@ class Modeller {
       else if (call.name == "AddMap")
         addMap(call.args[0], where);
     }
+    warnAboutTheList(origin);
   }
 
   Model take() { return std::move(model_); }
@@ -257,6 +259,33 @@ class Modeller {
                        std::to_string(n) + " (no obj/O" + std::to_string(n) + ")");
     model_.list.objects.push_back(n);
   }
+
+  // Every ray tests every entry of the object list (the listing's Trace has
+  // no other structure): an object listed twice costs twice and changes no
+  // pixel, and a list of thousands (30,000 entries from a short Model.txt)
+  // makes every ray that many tests. Said, not refused: the listing allows it.
+  void warnAboutTheList(const std::string& origin) {
+    const auto& list = model_.list.objects;
+    std::map<std::int16_t, int> times;
+    for (const std::int16_t n : list) ++times[n];
+    std::size_t repeats = 0;
+    std::int16_t most = 0;
+    for (const auto& [n, k] : times) {
+      repeats += static_cast<std::size_t>(k - 1);
+      if (k > times[most]) most = n;
+    }
+    if (repeats > 0)
+      model_.warnings.push_back(
+          origin + ": the object list holds " + std::to_string(list.size()) + " entries, " +
+          std::to_string(repeats) + " of them objects already in it (object " +
+          std::to_string(most) + " " + std::to_string(times[most]) +
+          " times): every ray tests each entry, so a repeat changes no pixel and adds its tests");
+    else if (list.size() > kManyListEntries)
+      model_.warnings.push_back(origin + ": the object list holds " + std::to_string(list.size()) +
+                                " objects: every ray tests each of them (the listing has no "
+                                "other structure); expect a slow render");
+  }
+  static constexpr std::size_t kManyListEntries = 1000;
 
   // CopyObj: copy obj/<src> byte for byte to obj/<dest>, then TransferObj:
   // every primitive (and the bound) gets Transform() applied to its own matrix

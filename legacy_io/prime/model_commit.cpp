@@ -157,8 +157,8 @@ std::unique_ptr<DirLock> lockForModel(const SceneDir& scene, bool wait) {
   auto lock = std::make_unique<DirLock>((scene.root() / kModelLock).string(), "prime model");
   if (lock->tryLock(DirLock::Mode::Exclusive)) return lock;
   if (!wait) lock->busy(scene.display(scene.root()), "try again when it is done, or add --wait");
-  std::cerr << "prime: waiting for another prime model (pid " << lock->holder() << ") writing "
-            << scene.display(scene.root()) << "\n";
+  std::cerr << "prime: waiting: " << lock->holderText() << " " << scene.display(scene.root())
+            << "\n";
   lock->lock(DirLock::Mode::Exclusive);
   return lock;
 }
@@ -188,8 +188,8 @@ std::unique_ptr<DirLock> openModelForReading(const SceneDir& scene) {
     return nullptr;
   }
   if (!lock->tryLock(DirLock::Mode::Shared)) {
-    std::cerr << "prime: waiting for prime model (pid " << lock->holder() << ") to finish writing "
-              << scene.display(scene.root()) << "\n";
+    std::cerr << "prime: waiting: " << lock->holderText() << " " << scene.display(scene.root())
+              << "\n";
     lock->lock(DirLock::Mode::Shared);
   }
   if (fs::exists(scene.root() / kModelJournal, ec)) {

@@ -126,9 +126,19 @@ ObjText parseObjText(TextReader& in) {
   ObjText o;
   const std::int16_t count = in.int16("numEntries");
   if (count < 1) in.fail("numEntries", "at least 1 entry", std::to_string(count));
+  // A numEntries larger than the entries listed runs into the bounding
+  // volume's line, or off the end: said so, not taken for a glued "N ULL".
+  const auto tooMany = [&](int listed) {
+    return " (numEntries is " + std::to_string(count) + " but the file lists " +
+           std::to_string(listed) + " entr" + (listed == 1 ? "y" : "ies") + ")";
+  };
   for (int i = 0; i < count; ++i) {
     const std::string field = "entry " + std::to_string(i) + " opcode";
+    if (in.atEnd()) in.fail(field, "one of + - & C B S N T Y O", "end of file" + tooMany(i));
     const std::string word = in.token(field);
+    if (word == "NULL")
+      in.fail(field, "one of + - & C B S N T Y O",
+              "\"NULL\", the bounding volume's word" + tooMany(i));
     CsgEntryText e;
     e.line = in.line();
     if (word.size() != 1) {
@@ -155,6 +165,10 @@ ObjText parseObjText(TextReader& in) {
     o.entries.push_back(e);
   }
   checkTree(in, o.entries);
+  if (in.atEnd())
+    in.fail("bounding volume", "NULL, or one of C B S N T Y followed by a number",
+            "end of file (if the last entry was meant as the bounding volume, numEntries " +
+                std::to_string(count) + " counts one entry too many)");
   const std::string word = in.token("bounding volume (NULL or a type letter and number)");
   o.boundLine = in.line();
   if (word != "NULL") {

@@ -16,6 +16,7 @@ namespace prime::io {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // A valid one-object scene, which each test then breaks in one place.
 void goodScene(const test::TempScene& s) {
@@ -139,6 +140,23 @@ TEST(BadInput, UnknownOpcode) {
       HasSubstr("obj/D1.txt:2: entry 0 opcode: expected one of + - & C B S N T Y O, found \"*\""));
   s.write("obj/D1.txt", "3\n- 1 2\nB1\nS 1\nNULL\n");
   EXPECT_THAT(modelError(s), HasSubstr("write the letter and the number apart, e.g. \"B 1\""));
+}
+
+// Issue 37: a numEntries larger than the entries listed ran into the
+// bounding volume's NULL and was told to write "N ULL" apart (K35's hint).
+TEST(BadInput, NumEntriesLargerThanTheEntriesListed) {
+  test::TempScene s;
+  goodScene(s);
+  s.write("obj/D1.txt", "4\n- 1 2\nB 1\nS 1\nNULL\n");
+  const std::string m = modelError(s);
+  EXPECT_THAT(m, HasSubstr("obj/D1.txt:5: entry 3 opcode: expected one of + - & C B S N T Y O, "
+                           "found \"NULL\", the bounding volume's word (numEntries is 4 but the "
+                           "file lists 3 entries)"));
+  EXPECT_THAT(m, Not(HasSubstr("apart")));
+  s.write("obj/D1.txt", "5\n- 1 2\nB 1\nS 1\n");
+  EXPECT_THAT(modelError(s), HasSubstr("entry 3 opcode: expected one of + - & C B S N T Y O, found "
+                                       "end of file (numEntries is 5 but the file lists 3 "
+                                       "entries)"));
 }
 
 TEST(BadInput, ChildIndexOutOfRange) {

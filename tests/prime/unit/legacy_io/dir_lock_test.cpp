@@ -45,6 +45,38 @@ TEST(DirLockTest, ReadersShareAndExcludeTheWriter) {
   EXPECT_FALSE(c.tryLock(DirLock::Mode::Exclusive));
 }
 
+// Issue 37: while a trace held the lock shared, `prime model` said busy
+// naming the pid of an earlier model run that had long finished.
+TEST(DirLockTest, AReaderIsNotReportedByTheLastWritersPid) {
+  TempDir d;
+  {
+    DirLock earlier(d / "lock", "prime model");
+    ASSERT_TRUE(earlier.tryLock(DirLock::Mode::Exclusive));
+  }  // finished: its pid goes with it
+  DirLock reader(d / "lock", "prime model"), writer(d / "lock", "prime model");
+  ASSERT_TRUE(reader.tryLock(DirLock::Mode::Shared));
+  EXPECT_FALSE(writer.tryLock(DirLock::Mode::Exclusive));
+  EXPECT_EQ(writer.holder(), 0);
+  const std::string m = messageOf([&] { writer.busy("scenes/x", "add --wait"); });
+  EXPECT_NE(m.find("busy: another prime command is reading or writing scenes/x; add --wait"),
+            std::string::npos)
+      << m;
+}
+
+TEST(DirLockTest, APidWhoseProcessHasGoneIsNoOnes) {
+  TempDir d;
+  const pid_t child = fork();
+  if (child == 0) {
+    DirLock l(d / "lock", "w");
+    l.tryLock(DirLock::Mode::Exclusive);  // writes its pid
+    ::raise(SIGKILL);                     // and cannot take it away
+  }
+  waitpid(child, nullptr, 0);
+  DirLock reader(d / "lock", "w");
+  ASSERT_TRUE(reader.tryLock(DirLock::Mode::Shared));
+  EXPECT_EQ(reader.holder(), 0);
+}
+
 TEST(DirLockTest, AKilledHolderLeavesNoLock) {
   TempDir d;
   const pid_t child = fork();
