@@ -1,0 +1,224 @@
+#!/usr/bin/env python3
+"""Hostile command lines and scenes, every system (issue 37's classes).
+
+For each class, the systems that have it; each case runs the real `prime` and
+checks the exit status, that the message names the file and what was expected
+and found, that nothing is left half-written, and that it ends quickly:
+  - writers: an empty output name, two outputs naming one file (also by hard
+    link), a render with no output named (says so), `-o -q` (a flag taken as
+    the output's name);
+  - the command line: options of several values followed by the scene (they
+    took it), the system of `-o existing.rle scene.cgl`, a file no system
+    reads, a 309-digit range in a message;
+  - unbounded work from a small file: a CGL DAG of 2^60 paths, a chain of
+    6,000 CGL nodes, a CGL spline refined to terabytes, a Malone viewer of
+    16384 x 16384, Malone sampled lights of 100,000 samples each, Ctrl-C
+    inside a pixel of such lights, Malone's --max-depth beyond 64;
+  - hostile bytes: control bytes in a CGL scene are shown escaped.
+
+Run: check_hostile.py PRIME_EXE REPO_ROOT
+"""
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+PRIME, ROOT = sys.argv[1], sys.argv[2]
+failures = []
+CASES = 0
+
+
+def run(args, cwd, timeout=120):
+    env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
+    start = time.monotonic()
+    r = subprocess.run([PRIME] + args, capture_output=True, text=True, cwd=cwd, env=env,
+                       timeout=timeout, errors="replace")
+    r.seconds = time.monotonic() - start
+    r.out = r.stdout + r.stderr
+    return r
+
+
+def check(ok, what, r=None):
+    global CASES
+    CASES += 1
+    if not ok:
+        failures.append(what + ("" if r is None else f"\n    exit {r.returncode}: {r.out[-600:]}"))
+
+
+def refused(r, status, *needles, seconds=10.0):
+    """Refused with `status`, the message holding every needle, within `seconds`."""
+    return (r.returncode == status and all(n in r.out for n in needles)
+            and r.seconds < seconds and "bad_alloc" not in r.out and "terminate" not in r.out)
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    def path(name):
+        return os.path.join(tmp, name)
+
+    def write(name, text):
+        with open(path(name), "w") as f:
+            f.write(text)
+        return path(name)
+
+    malone = os.path.join(ROOT, "scenes/malone/doc-sphere.mal")
+    cgl = os.path.join(ROOT, "scenes/cgl/ball.cgl")
+    prime = path("default")  # a copy: `--model` writes its databases
+    shutil.copytree(os.path.join(ROOT, "scenes/prime/default"), prime)
+    scenes = {"malone": malone, "cgl": cgl}
+
+    # ---- writers -------------------------------------------------------------
+    for system, scene in scenes.items():
+        r = run(["trace", scene, "--no-window", "--png", ""], tmp)
+        check(refused(r, 2, "--png", "empty file name"), f"{system}: --png '' is refused", r)
+        r = run(["trace", scene, "--no-window", "-q", "--png", "same.png",
+                 "--true-color-png", "same.png"], tmp)
+        check(refused(r, 1, "same.png", "--png and --true-color-png name the same file")
+              and not os.path.exists(path("same.png")),
+              f"{system}: two outputs naming one file are refused before the render", r)
+        write("a.png", "")
+        if os.path.exists(path("b.png")):
+            os.remove(path("b.png"))
+        os.link(path("a.png"), path("b.png"))
+        r = run(["trace", scene, "--no-window", "-q", "--png", "a.png", "--png-8514", "b.png"],
+                tmp)
+        check(refused(r, 1, "name the same file") and os.path.getsize(path("a.png")) == 0,
+              f"{system}: two outputs that are one file by a hard link are refused", r)
+        r = run(["trace", scene, "--no-window"], tmp)
+        check(r.returncode == 0 and "no output named, so the picture will not be written"
+              in r.stderr and "wrote nothing" in r.stdout,
+              f"{system}: a trace with no output says it writes nothing", r)
+    r = run(["trace", prime, "--model", "--no-window", "-q", "--out", "x.gr", "--png", "x.gr"],
+            tmp)
+    check(refused(r, 1, "--out and --png name the same file"),
+          "prime: --out and --png naming one file are refused", r)
+    r = run(["trace", "-o", "-q", cgl, "--no-window"], tmp)
+    check(refused(r, 2, "-o", "expected a path name", "'-q'")
+          and not os.path.exists(path("--quiet")),
+          "cgl call statement: -o -q is refused, no file named --quiet", r)
+
+    # ---- the command line ----------------------------------------------------
+    r = run(["trace", "--background", "10", "20", "30", cgl, "--no-window", "-q",
+             "--png", "bg.png"], tmp)
+    check(r.returncode == 0 and os.path.exists(path("bg.png")),
+          "cgl: --background R G B before the scene leaves the scene to be the scene", r)
+    r = run(["trace", "-b", "10", "20", "30", cgl, "--no-window", "-q", "--png", "b3.png"], tmp)
+    check(r.returncode == 0 and os.path.exists(path("b3.png")),
+          "cgl call statement: -b r g b before the scene", r)
+    os.makedirs(path("tex"), exist_ok=True)
+    r = run(["trace", "--textures", path("tex"), cgl, "--no-window", "-q", "--png", "t.png"], tmp)
+    check(r.returncode == 0 and os.path.exists(path("t.png")),
+          "cgl: --textures DIR before the scene (a list takes one value a flag)", r)
+    with open(path("pic.rle"), "wb") as f:  # an existing picture named by -o
+        f.write(b"\x00\x01\x02\x03 not a scene")
+    r = run(["trace", "-o", "pic.rle", cgl, "--no-window", "-q"], tmp)
+    check(r.returncode == 0 and os.path.getsize(path("pic.rle")) > 20,
+          "cgl: -o existing.rle scene.cgl is CGL's (the scene is the file CGL reads)", r)
+    r = run(["trace", "--light-radius", "0.1", prime, "--profile", "thesis", "--model",
+             "--no-window", "-q", "--out", "lr.gr"], tmp)
+    check(r.returncode == 0 and os.path.exists(path("lr.gr")),
+          "prime: --light-radius N before the scene directory (a run of numbers, then the scene)",
+          r)
+    notes = write("notes.txt", "Dear reader, this is a letter.\n")
+    r = run(["trace", notes, "--no-window"], tmp)
+    check(refused(r, 2, "notes.txt", "no system reads as its scene", "--format")
+          and "Directory is actually a file" not in r.out,
+          "a text file no system reads: the message says so", r)
+    r = run(["compare", prime, "--threads", "-1"], tmp)
+    check(refused(r, 2, "--threads", "-1") and len(r.out) < 300,
+          "compare --threads -1: a short message (no 309-digit range)", r)
+    r = run(["dump", "--help"], tmp)
+    check(r.returncode == 0, "dump --help", r)
+
+    # ---- unbounded work from a small file -------------------------------------
+    head = "0 0 0 1 1 {nodes} 1\n"
+    surface = open(cgl).read().split("* surface 1")[1].split("* scene nodes")[0]
+    body = "* surface 1" + surface + "* scene nodes\n"
+    n = 60  # each dummy node shares the next by both pointers: 2^60 paths, no object
+    dag = head.format(nodes=n) + body + "".join(
+        f"{k} dummy {k + 1:02d} {k + 1:02d}\n" for k in range(1, n)) + f"{n} dummy 00 00\n"
+    r = run(["trace", write("dag.cgl", dag), "--no-window", "-q", "--png", "dag.png"], tmp)
+    check(refused(r, 1, "dag.cgl", "node visits") and not os.path.exists(path("dag.png")),
+          "cgl: a DAG of 2^60 paths is refused at its node-visit limit, quickly", r)
+    n = 6000
+    chain = head.format(nodes=n) + body + "".join(
+        f"{k} dummy {k + 1:02d} 00\n" for k in range(1, n)) + \
+        f"{n} sphere 00 00 1 0.0 0.0 0.0 0.3 x y\n"
+    r = run(["trace", write("chain.cgl", chain), "--no-window", "-q", "--png", "chain.png"], tmp,
+            timeout=300)
+    check(r.returncode == 0 and os.path.exists(path("chain.png")),
+          "cgl: a chain of 6,000 nodes renders (no recursion per node)", r)
+    tube = open(os.path.join(ROOT, "scenes/cgl/doc-spline-tube.cgl")).read()
+    # The tube at 64 divisions (the reader's most, CGL-Q9): 125,001 refined
+    # points, 19 MiB; reached along 2^12 paths by twelve dummy nodes that
+    # share the next by both pointers, 78 GiB of meshes.
+    levels = 12
+    nodes = tube.split("* scene nodes\n")[1]
+    check(nodes.startswith("1 rotate 02 00 x 30.0\n"),
+          "the spline tube's scene nodes are where this test expects them")
+    shared = "".join(f"{k} dummy {k + 1:02d} {k + 1:02d}\n" for k in range(1, levels + 1))
+    renumbered = nodes.replace("1 rotate 02 00", f"{levels + 1} rotate {levels + 2:02d} 00", 1) \
+        .replace("2 translate 03 00", f"{levels + 2} translate {levels + 3:02d} 00", 1) \
+        .replace("3 dummy 04 00", f"{levels + 3} dummy {levels + 4:02d} 00", 1) \
+        .replace("4 spline 00 00 1 4 closed 5 double 8 0.6",
+                 f"{levels + 4} spline 00 00 1 4 closed 5 double 64 0.6", 1)
+    huge = tube.split("* scene nodes\n")[0].replace("0 2 0 1 1 4 1", f"0 2 0 1 1 {levels + 4} 1", 1) \
+        + "* scene nodes\n" + shared + renumbered
+    r = run(["trace", write("spline.cgl", huge), "--no-window", "-q", "--png", "sp.png"], tmp)
+    check(refused(r, 1, "spline.cgl", "divisions", "MiB", "2048 MiB"),
+          "cgl: a spline refined beyond the memory limit is refused before it is made", r)
+    text = open(malone).read()
+    big = text.replace("256 256", "16384 16384", 1)
+    r = run(["trace", write("big.mal", big), "--no-window", "-q", "--png", "big.png"], tmp)
+    check(refused(r, 1, "big.mal", "16384 x 16384", "GiB"),
+          "malone: a 16384 x 16384 viewer is refused before allocating, naming what it needs", r)
+    lights = text.replace("101\n4 4 6\n60 60 60\n",
+                          "105\n100000\n4 4 6\n0.5\n60 60 60\n" * 200, 1)
+    check(lights != text, "doc-sphere.mal's light is where this test expects it")
+    r = run(["trace", write("lights.mal", lights), "--no-window", "-q", "--png", "l.png"], tmp)
+    check(refused(r, 1, "lights.mal", "light samples", "MiB"),
+          "malone: 200 lights of 100,000 samples are refused at the samples limit", r)
+    # Ctrl-C inside one pixel: 60 lights of 100,000 samples make every pixel
+    # that sees the sphere take seconds.
+    slow = text.replace("101\n4 4 6\n60 60 60\n", "105\n100000\n4 4 6\n0.5\n60 60 60\n" * 60, 1)
+    slow = slow.replace("256 256", "8 8", 1)
+    env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
+    p = subprocess.Popen([PRIME, "trace", write("slow.mal", slow), "--no-window", "-q",
+                          "--threads", "1", "--png", "slow.png"], cwd=tmp, env=env,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    time.sleep(3.0)
+    p.send_signal(signal.SIGINT)
+    start = time.monotonic()
+    try:
+        p.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        p.communicate()
+    waited = time.monotonic() - start
+    check(p.returncode == 130 and waited < 1.0 and not os.path.exists(path("slow.png")),
+          f"malone: Ctrl-C inside a pixel of 6,000,000 light samples ends the run in "
+          f"{waited:.2f} s with 130 (want < 1 s), no picture")
+    corridor = os.path.join(ROOT, "scenes/malone/mirror-corridor.mal")
+    r = run(["trace", corridor, "--max-depth", "1000", "--min-weight", "0", "--size", "64",
+             "48", "--no-window", "-q", "--png", "deep.png"], tmp)
+    check(r.returncode == 0 and os.path.exists(path("deep.png")),
+          "malone: --max-depth 1000 (the document's MIN_WEIGHT is what bounds depth)", r)
+
+    # ---- hostile bytes ---------------------------------------------------------
+    with open(path("ctl.cgl"), "wb") as f:
+        f.write(b"* a scene with control bytes\n0 0 0 1 1 1 1\n1 ph\x00ng\x1b[31m normal 0 0 0\n")
+    r = run(["trace", path("ctl.cgl"), "--no-window", "-q"], tmp)
+    check(r.returncode == 1 and "\\x00" in r.out and "\x1b" not in r.out and "ctl.cgl" in r.out,
+          "cgl: control bytes of a scene are shown escaped, a NUL does not cut the message", r)
+
+    # Nothing half-written anywhere.
+    left = [f for f in os.listdir(tmp) if ".prime-tmp." in f]
+    check(not left, f"no temporaries left behind: {left}")
+
+for f in failures:
+    print("FAIL:", f)
+print(f"check_hostile: {CASES - len(failures)} of {CASES} checks pass")
+sys.exit(1 if failures else 0)
