@@ -186,7 +186,16 @@ def main():
         sys.exit("gen_cli_docs: help2man is not installed (apt-get install help2man)")
     env = dict(os.environ)
     env.pop("DISPLAY", None)
+    # The page's footer is .TH's source, date and title on one line: the whole
+    # first line of --version ("prime 0.2.0 (PRIME 1991, ...)") as the source
+    # runs into the date at 80 columns ("Malone 1Novembere2026"); the name and
+    # version alone fit.
+    version = run(prime, "--version").splitlines()[0]
+    m = re.match(r"^(\S+) (\d\S*)", version)
+    if not m:
+        sys.exit(f"gen_cli_docs: no version in the first line of prime --version: {version!r}")
     subprocess.run([help2man, "--no-info", "--no-discard-stderr", "--section", "1",
+                    "--version-string", f"{m.group(1)} {m.group(2)}",
                     "--name", "replay historical ray tracers (PRIME 1991, Malone 1995, "
                     "Waterloo CGL 1985)", "--include", include, "--output",
                     os.path.join(out, "prime.1"), prime], check=True, env=env)

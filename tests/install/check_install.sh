@@ -37,5 +37,14 @@ echo "$err" | grep -q "cannot load the window module" && fail "cannot load the m
 if command -v groff >/dev/null; then
   page=$(groff -man -Tutf8 -ww "$prefix/share/man/man1/prime.1" 2>&1 >/dev/null)
   [ -z "$page" ] || fail "groff warnings: $page"
+  # Its footer, as man shows it at 80 columns: the source, the date of .TH and
+  # PRIME(1) apart. A source as long as --version's first line ran into the
+  # date ("prime 0.2.0 (PRIME 1991, Malone 1Novembere2026 CGL 1985)").
+  date=$(sed -n 's/^\.TH [^"]*"[^"]*" "\([^"]*\)".*/\1/p' "$prefix/share/man/man1/prime.1")
+  [ -n "$date" ] || fail "the man page has no date in .TH"
+  footer=$(groff -man -Tutf8 -P-cbou -rLL=80n "$prefix/share/man/man1/prime.1" 2>/dev/null |
+           grep -v '^[[:space:]]*$' | tail -1)
+  [[ "$footer" =~ ^prime\ [0-9][^\ ]*\ {2,}"$date"\ {2,}PRIME\(1\)$ ]] ||
+    fail "the man page's footer is not 'prime VERSION   $date   PRIME(1)': '$footer'"
 fi
 echo "install: ok ($prefix)"
