@@ -9,15 +9,17 @@ root of a scratch copy of the repository (the files git tracks), with no
 DISPLAY, with `build/release/src/cli/prime` (and its window module) linked to
 the executable under test and B pointing at it.
 
-Fails when a command exits non-zero, or when the commands leave a new file
+Fails when a command exits non-zero, when the commands leave a new file
 anywhere but under out/ and the scene directories (scenes/*/*/, where
 `prime model` and `prime trace` write the databases and graph_scr, as the
-listing did).
+listing did), or when they change a file git tracks (a clone that runs the
+docs must keep a clean `git status`).
 
 usage: run_doc_commands.py PRIME_EXECUTABLE [--repo DIR] [--keep] [--page PAGE ...]
 """
 
 import argparse
+import hashlib
 import os
 import re
 import shutil
@@ -73,6 +75,11 @@ def snapshot(root):
     return seen
 
 
+def digest(path):
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
+
+
 def allowed(path):
     parts = path.split(os.sep)
     if parts[0] == "out":
@@ -95,6 +102,7 @@ def main():
     scratch = tempfile.mkdtemp(prefix="prime-doc-commands-")
     failures = []
     try:
+        tracked = {}
         for f in tracked_files(repo):
             src = os.path.join(repo, f)
             if not os.path.isfile(src):
@@ -102,6 +110,7 @@ def main():
             dst = os.path.join(scratch, f)
             os.makedirs(os.path.dirname(dst), exist_ok=True)
             shutil.copy2(src, dst)
+            tracked[f] = digest(dst)
         bindir = os.path.join(scratch, "build", "release", "src", "cli")
         os.makedirs(bindir)
         for name in os.listdir(os.path.dirname(exe)):
@@ -130,6 +139,10 @@ def main():
         stray = sorted(p for p in snapshot(scratch) - before if not allowed(p))
         for p in stray:
             failures.append(f"{p}: written outside out/ and the scene directories")
+        for f, before_digest in sorted(tracked.items()):
+            path = os.path.join(scratch, f)
+            if not os.path.isfile(path) or digest(path) != before_digest:
+                failures.append(f"{f}: a file git tracks, changed by the commands")
     finally:
         if args.keep:
             print(f"scratch copy kept: {scratch}")
