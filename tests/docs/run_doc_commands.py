@@ -9,15 +9,24 @@ root of a scratch copy of the repository (the files git tracks), with no
 DISPLAY, with `build/release/src/cli/prime` (and its window module) linked to
 the executable under test and B pointing at it.
 
-Fails when a command exits non-zero, or when the commands leave a new file
+Fails when a command exits non-zero, when the commands leave a new file
 anywhere but under out/ and the scene directories (scenes/*/*/, where
 `prime model` and `prime trace` write the databases and graph_scr, as the
-listing did).
+listing did), or when they change a file git tracks (a clone that runs the
+docs must keep a clean `git status`).
 
 usage: run_doc_commands.py PRIME_EXECUTABLE [--repo DIR] [--keep] [--page PAGE ...]
+       run_doc_commands.py --check-names [--repo DIR] [--page PAGE ...]
+
+--check-names runs nothing: in README.md and every page under docs/ it
+refuses a command block that calls a bare `prime` (not on the path before
+`cmake --install`): each ```sh block, and each `$ ` line of a session, calls
+the built one as $B, and a page that does says `B=build/release/src/cli/prime`
+before its first such block.
 """
 
 import argparse
+import hashlib
 import os
 import re
 import shutil
@@ -52,6 +61,58 @@ def blocks(text):
     return out
 
 
+BUILT = "B=build/release/src/cli/prime"
+# `prime VERB` where a command starts: at the line's start, after a shell
+# operator, `do`, `$(` or `time [-f "..."]`.
+COMMAND_PRIME = re.compile(
+    r'(?:^\s*|[;&|(]\s*|\bdo\s+|\btime\s+(?:-f\s+"[^"]*"\s+)?|\$\(\s*)prime\s+(?=[a-z])')
+
+
+def bare_prime_calls(page, text):
+    """'page:line: ...' for each command line of a block that calls a bare prime,
+    and for a page that uses $B without saying what it is first."""
+    found, inside, fence, said = [], False, "", False
+    for n, line in enumerate(text.split("\n"), 1):
+        s = line.strip()
+        if BUILT in line and not inside:
+            said = True
+        if s.startswith("```"):
+            inside, fence = (not inside), s[3:]
+            continue
+        if not inside:
+            continue
+        if BUILT in line:
+            said = True
+        if fence == "sh":
+            code = re.split(r"(?:^|\s)#", line, maxsplit=1)[0]
+        elif s.startswith("$ "):
+            code = s[2:]
+        else:
+            continue
+        if COMMAND_PRIME.search(code):
+            found.append(f"{page}:{n}: calls a bare prime, not on the path before installing "
+                         f"(write $B, with {BUILT} said at the top of the page)")
+        elif re.search(r"\$B\b", code) and not said:
+            found.append(f"{page}:{n}: uses $B before the page says {BUILT}")
+    return found
+
+
+def check_names(repo, pages):
+    if not pages:
+        pages = ["README.md"] + sorted(
+            os.path.relpath(os.path.join(d, f), repo)
+            for d, _, names in os.walk(os.path.join(repo, "docs")) for f in names
+            if f.endswith(".md"))
+    failures = []
+    for page in pages:
+        with open(os.path.join(repo, page), encoding="utf-8") as fh:
+            failures += bare_prime_calls(page, fh.read())
+    for f in failures:
+        print("FAIL " + f)
+    print(f"{len(pages)} pages checked")
+    return 1 if failures else 0
+
+
 def tracked_files(repo):
     try:
         listed = subprocess.run(["git", "-C", repo, "ls-files", "-z"], check=True,
@@ -73,6 +134,11 @@ def snapshot(root):
     return seen
 
 
+def digest(path):
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
+
+
 def allowed(path):
     parts = path.split(os.sep)
     if parts[0] == "out":
@@ -83,18 +149,25 @@ def allowed(path):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("prime")
+    ap.add_argument("prime", nargs="?")
+    ap.add_argument("--check-names", action="store_true",
+                    help="check that command blocks call the built prime ($B); run nothing")
     ap.add_argument("--repo", default=os.path.join(os.path.dirname(__file__), "..", ".."))
     ap.add_argument("--keep", action="store_true", help="keep the scratch copy")
     ap.add_argument("--page", action="append",
                     help="run these pages (relative to the repository) instead of PAGES")
     args = ap.parse_args()
     repo = os.path.abspath(args.repo)
+    if args.check_names:
+        return check_names(repo, args.page)
+    if not args.prime:
+        ap.error("the prime executable to run the blocks with is missing")
     exe = os.path.abspath(args.prime)
 
     scratch = tempfile.mkdtemp(prefix="prime-doc-commands-")
     failures = []
     try:
+        tracked = {}
         for f in tracked_files(repo):
             src = os.path.join(repo, f)
             if not os.path.isfile(src):
@@ -102,6 +175,7 @@ def main():
             dst = os.path.join(scratch, f)
             os.makedirs(os.path.dirname(dst), exist_ok=True)
             shutil.copy2(src, dst)
+            tracked[f] = digest(dst)
         bindir = os.path.join(scratch, "build", "release", "src", "cli")
         os.makedirs(bindir)
         for name in os.listdir(os.path.dirname(exe)):
@@ -130,6 +204,10 @@ def main():
         stray = sorted(p for p in snapshot(scratch) - before if not allowed(p))
         for p in stray:
             failures.append(f"{p}: written outside out/ and the scene directories")
+        for f, before_digest in sorted(tracked.items()):
+            path = os.path.join(scratch, f)
+            if not os.path.isfile(path) or digest(path) != before_digest:
+                failures.append(f"{f}: a file git tracks, changed by the commands")
     finally:
         if args.keep:
             print(f"scratch copy kept: {scratch}")
