@@ -16,5 +16,9 @@ void writePng(const std::string& path, const Image8& image);
 // Reads any PNG as 8-bit RGB (libpng's simplified API); throws
 // std::runtime_error naming the file when it cannot.
 Image8 readPng(const std::string& path);
+// The same from the file's bytes; `display` names them in messages. A chunk
+// longer than what is left of the file is refused before libpng reads it,
+// with an io::InputError (a std::runtime_error) giving its byte offset.
+Image8 pngFromBytes(const std::vector<std::uint8_t>& bytes, const std::string& display);
 
 }  // namespace prime

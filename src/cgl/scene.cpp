@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <system_error>
@@ -525,8 +526,12 @@ std::string baseName(const std::string& written) {
   return std::filesystem::path(written).filename().string();
 }
 
-Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
-                    const BuildOptions& options) {
+// Loads a surface's texture map into scene.textures and returns its index.
+// A map already loaded (the same file, or the same supplied map) is not
+// loaded again: its index is returned (6 MB of texels each; a scene naming
+// one map on a few hundred surfaces took gigabytes).
+int loadTexture(const SurfaceRecord& rec, const std::string& scenePath, const BuildOptions& options,
+                Scene& scene, std::map<std::string, int>& loaded) {
   const std::string base = baseName(rec.texture);
   auto convert = [&](const Frame& frame, const std::string& where) {
     Texture tex;
@@ -553,14 +558,25 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
     }
     return tex;
   };
+  // The map `key` names, loaded by `load` only the first time.
+  auto once = [&](const std::string& key, auto&& load) {
+    const auto found = loaded.find(key);
+    if (found != loaded.end()) return found->second;
+    scene.textures.push_back(load());
+    return loaded[key] = static_cast<int>(scene.textures.size()) - 1;
+  };
   // CGL-D41: supplied maps, the path as written (relative to the scene's
   // directory), then the base name in the scene's directory, its textures/
   // and each texture directory the user names. CGL-D62: nothing outside
   // those directories is opened (an absolute path, a "..", a symbolic link
   // out of them): a scene cannot make prime read, render or quote any other
   // file of the machine.
-  for (const auto& [name, frame] : options.textures)
-    if (name == base || name == rec.texture) return convert(frame, "(supplied) " + name);
+  for (const auto& supplied : options.textures) {
+    const std::string& name = supplied.first;
+    if (name == base || name == rec.texture)
+      return once("(supplied) " + name,
+                  [&] { return convert(supplied.second, "(supplied) " + name); });
+  }
   namespace fs = std::filesystem;
   const fs::path sceneDir = fs::path(scenePath).parent_path();
   struct Candidate {
@@ -592,7 +608,8 @@ Texture loadTexture(const SurfaceRecord& rec, const std::string& scenePath,
                            "directory (CGL-D62)",
                            "'" + rec.texture + "', which " + c.path.string() +
                                " leads outside it (a symbolic link)");
-    return convert(readRleFile(c.path.string()), c.path.string());
+    return once(real.string(),
+                [&] { return convert(readRleFile(c.path.string()), c.path.string()); });
   }
   std::string looked;
   for (const Candidate& c : candidates) looked += (looked.empty() ? "" : ", ") + c.path.string();
@@ -617,6 +634,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
 
   // Surfaces (section 9.4), with their textures (section 10).
   int lastTexture = -1;
+  std::map<std::string, int> loadedTextures;  // by the file's real path
   for (std::size_t i = 0; i < file.surfaces.size(); ++i) {
     const SurfaceRecord& rec = file.surfaces[i];
     Surface s;
@@ -647,8 +665,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
                                "`last` on the first textured surface");
         s.texture = lastTexture;
       } else {
-        scene.textures.push_back(loadTexture(rec, file.path, options));
-        s.texture = static_cast<int>(scene.textures.size()) - 1;
+        s.texture = loadTexture(rec, file.path, options, scene, loadedTextures);
       }
       lastTexture = s.texture;
     }

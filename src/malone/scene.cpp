@@ -1,9 +1,7 @@
 #include "src/malone/scene.h"
 
 #include <cmath>
-#include <cstdint>
 #include <numbers>
-#include <string>
 
 namespace prime::malone {
 
@@ -234,27 +232,34 @@ Scene buildScene(const SceneFile& file, const std::string& name) {
     q.surface = p.surface;
     scene.primitives.push_back(q);
   }
-  // The light samples every shading point visits, counted before any is
-  // made: a few numbers ask for 100,000 samples a light, any number of lights.
-  std::uint64_t samples = 0;
+  // Each sample of a sampled light is a light of its own (a shadow ray from
+  // every shaded point): the scene's total is capped, as each light's count
+  // is by the reader, before any is made.
+  long samples = 0;
   for (const auto& l : file.lights) {
-    samples += l.id == ObjectId::SampledLight ? static_cast<std::uint64_t>(l.samples) : 1;
-    if (samples * sizeof(LightSample) > kMaxLightSampleBytes)
+    if (l.id != ObjectId::SampledLight) continue;
+    if (samples + l.samples > kMaxLightSamples)
       throw io::InputError(l.where, "sampled light, samples",
-                           "at most " + std::to_string(kMaxLightSampleBytes / sizeof(LightSample)) +
-                               " light samples in the whole scene (" +
-                               std::to_string(kMaxLightSampleBytes >> 20) +
-                               " MiB of them; each is a shadow ray " + "from every point shaded)",
-                           std::to_string(samples) + " by this light (" +
-                               std::to_string(samples * sizeof(LightSample) >> 20) + " MiB)");
+                           "at most " + std::to_string(kMaxLightSamples) +
+                               " samples of sampled lights in the whole scene (" +
+                               std::to_string(samples) + " before this light)",
+                           std::to_string(l.samples) + " more");
+    samples += l.samples;
   }
-  scene.lights.reserve(samples);
+  scene.lights.reserve(static_cast<std::size_t>(samples) + file.lights.size());
   for (const auto& l : file.lights) {
     const Rgb rgb{l.rgb[0], l.rgb[1], l.rgb[2]};
     if (l.id == ObjectId::SampledLight) {
       if (!(l.radius >= 0))
         throw io::InputError(l.where, "sampled light, radius", "a radius >= 0", str(l.radius));
       const auto points = sphereSamples(l.position, l.radius, l.samples);
+      for (const auto& pt : points)
+        if (!(std::isfinite(pt[0]) && std::isfinite(pt[1]) && std::isfinite(pt[2])))
+          throw io::InputError(l.where, "sampled light, radius",
+                               "a sphere of finite points (centre and radius within the range "
+                               "of a double)",
+                               "centre " + str(l.position) + ", radius " + str(l.radius) +
+                                   ", which puts a sample at " + str(pt));
       for (const auto& pt : points)
         scene.lights.push_back({pt,
                                 {rgb[0] / l.samples, rgb[1] / l.samples, rgb[2] / l.samples},

@@ -5,7 +5,6 @@
 // the object's place in the file.
 #pragma once
 #include <array>
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -87,15 +86,18 @@ struct Scene {
   }
 };
 
-// What the light samples of a scene may take (a limit of memory and of work:
-// every point shaded sends a shadow ray to each): 1 GiB, about 19 million
-// samples: about 190 lights of 100,000 samples, the most the reader takes.
-inline constexpr std::uint64_t kMaxLightSampleBytes = std::uint64_t{1} << 30;
+// The most samples the sampled lights (105) of one scene may have together.
+// Each sample is a light of its own, with a shadow ray from every shaded
+// point; the reader caps one light at 100000, and 16 KB of text could
+// otherwise ask for 60 million (3 GB).
+inline constexpr long kMaxLightSamples = 1'000'000;
 
 // Builds the scene; throws io::InputError naming the object whose numbers
 // make no primitive (a zero normal or axis, a degenerate triangle, polygon
 // or parallelogram, a singular affine matrix, a refractive index <= 0 on a
-// transparent surface, a viewer looking at its own eye).
+// transparent surface, a viewer looking at its own eye) and the light whose
+// samples would not be finite or would take the scene past
+// kMaxLightSamples.
 Scene buildScene(const SceneFile& file, const std::string& name);
 
 // The viewer as a free camera (src/geom/free_camera.h): eye, look-at, up

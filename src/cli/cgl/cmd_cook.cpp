@@ -3,14 +3,10 @@
 // complete `cook` surface descriptor, its 66 Fresnel colour-vectors computed
 // from the normal reflectance (src/cgl/cook.h), written to OUT. The package
 // prompted on stdin; this port takes the values as options.
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
-
+#include "legacy_io/cgl/reflectance.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
-#include "legacy_io/common/text_reader.h"
 #include "src/cgl/cook.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/option_values.h"
@@ -19,59 +15,22 @@ namespace prime::cli::cgl {
 
 namespace {
 
-bool isNumber(const std::string& s, double& v) {
-  std::istringstream in(s);
-  in >> v;
-  return !in.fail() && in.eof();
-}
-
-// 33 numbers: on the command line, or in a file (blank lines and lines whose
-// first non-blank character is '*' are comments, as in a scene file).
+// 33 numbers: on the command line, or in a file (legacy_io/cgl/reflectance.h).
 prime::cgl::Spectrum reflectanceOf(const std::vector<std::string>& args) {
-  std::vector<double> values;
-  std::string where = "--reflectance";
   double v = 0;
-  if (args.size() == 1 && !isNumber(args[0], v)) {
-    where = args[0];
+  if (args.size() == 1 && !prime::cgl::isReflectanceNumber(args[0], v)) {
     io::InputFileOptions input;
     input.what = "a reflectance file";
-    std::istringstream in(io::normalizeLineBreaks(io::readInputText(args[0], input)));
-    std::string line;
-    int lineNo = 0;
-    while (std::getline(in, line)) {
-      ++lineNo;
-      const auto first = line.find_first_not_of(" \t\r");
-      if (first == std::string::npos || line[first] == '*') continue;
-      std::istringstream words(line);
-      std::string w;
-      while (words >> w) {
-        if (!isNumber(w, v))
-          throw io::InputError({args[0], lineNo}, "normal reflectance", "a real number",
-                               "'" + w + "'");
-        values.push_back(v);
-      }
-    }
-  } else {
-    for (const std::string& a : args) {
-      if (!isNumber(a, v))
-        throw io::InputError(io::InputLocation{where}, "normal reflectance", "a real number",
-                             "'" + a + "'");
-      values.push_back(v);
-    }
+    return prime::cgl::readReflectance(io::readInputText(args[0], input), args[0]);
   }
-  if (values.size() != static_cast<std::size_t>(prime::cgl::kSpectrumSamples))
-    throw io::InputError(io::InputLocation{where}, "normal reflectance",
-                         "33 numbers (380 to 700 nm every 10 nm)",
-                         std::to_string(values.size()) + " numbers");
-  prime::cgl::Spectrum r{};
-  for (std::size_t k = 0; k < r.size(); ++k) {
-    if (!(values[k] >= 0.0 && values[k] < 1.0))
-      throw io::InputError(io::InputLocation{where},
-                           "normal reflectance at " + std::to_string(380 + 10 * k) + " nm",
-                           "0 <= R < 1", std::to_string(values[k]));
-    r[k] = values[k];
+  const io::InputLocation where{"--reflectance"};
+  std::vector<prime::cgl::ReflectanceNumber> numbers;
+  for (const std::string& a : args) {
+    if (!prime::cgl::isReflectanceNumber(a, v))
+      throw io::InputError(where, "normal reflectance", "a real number", "'" + a + "'");
+    numbers.push_back({v, where});
   }
-  return r;
+  return prime::cgl::normalReflectance(numbers, where);
 }
 
 }  // namespace

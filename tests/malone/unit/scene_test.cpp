@@ -230,5 +230,38 @@ TEST(MaloneSceneErrors, ViewerLookingAtItsEye) {
   }
 }
 
+// Found by the malone_viewer_lights fuzzer: a sampled light whose centre and
+// radius are each finite but whose samples are not (1e308 + 1e308 * 0.5
+// overflows) gave the tracer lights at infinity.
+TEST(MaloneSceneErrors, SampledLightWhoseSamplesOverflow) {
+  const io::InputError e = buildError("105 2 1e308 1e308 1e308 1e308 1 1 1\n");
+  expectAtObject(e, "sampled light, radius", "a sphere of finite points",
+                 "centre (1e+308, 1e+308, 1e+308), radius 1e+308, which puts a sample at");
+  // The largest such sphere that stays finite is a light like any other.
+  EXPECT_EQ(sceneOf("105 2 0 0 0 1e308 1 1 1\n").lights.size(), 2u);
+}
+
+// Found by the malone_viewer_lights fuzzer: 200 sampled lights of 100000
+// samples each (6 KB of text) made 20 million light samples (1.1 GB) and
+// took seconds before the first pixel. The scene's total is capped, checked
+// before a light's samples are made.
+TEST(MaloneSceneErrors, TooManyLightSamplesInAScene) {
+  std::string lights;
+  for (int i = 0; i < 10; ++i) lights += "105 100000 0 5 0 1 1 1 1\n";
+  EXPECT_EQ(sceneOf(lights).lights.size(), 1000000u);  // exactly the cap: accepted
+  try {
+    sceneOf(lights + "101 0 0 0 1 1 1\n105 1 0 5 0 1 1 1 1\n");
+    ADD_FAILURE() << "a scene of 1000001 samples of sampled lights was accepted";
+  } catch (const io::InputError& e) {
+    SCOPED_TRACE(e.what());
+    EXPECT_EQ(e.where().line, 13);
+    EXPECT_EQ(e.where().token, 1 + 15 + 10 * 9 + 7);
+    EXPECT_EQ(e.field(), "sampled light, samples");
+    EXPECT_THAT(e.expected(), HasSubstr("at most 1000000 samples of sampled lights in the whole "
+                                        "scene (1000000 before this light)"));
+    EXPECT_EQ(e.found(), "1 more");
+  }
+}
+
 }  // namespace
 }  // namespace prime::malone

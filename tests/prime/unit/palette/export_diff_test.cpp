@@ -89,6 +89,41 @@ TEST(ExportImage, PngRoundTrip) {
   EXPECT_THROW(readPng("/nonexistent.png"), std::runtime_error);
 }
 
+// Found by the png_image fuzzer: 52 bytes whose sPLT chunk claims 963071495
+// bytes made libpng allocate them before reading the chunk. A chunk longer
+// than what is left of the file is refused, at its byte offset, before
+// libpng sees the file.
+TEST(ExportImage, PngChunkLongerThanTheFileIsRefusedUnread) {
+  const std::vector<std::uint8_t> bytes = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49,
+      0x48, 0x44, 0x52, 0x00, 0x00, 0x05, 0xff, 0x00, 0x00, 0x06, 0xfe, 0x08, 0x02,
+      0x00, 0x00, 0x00, 0x63, 0x48, 0x52, 0x4d, 0x39, 0x67, 0x4e, 0x07, 0x73, 0x50,
+      0x4c, 0x54, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78, 0x7a, 0x44};
+  try {
+    pngFromBytes(bytes, "cut.png");
+    FAIL() << "a chunk longer than the file was read";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where().file, "cut.png");
+    EXPECT_EQ(e.where().byte, 33u);
+    EXPECT_EQ(e.field(), "chunk 'sPLT' length");
+    EXPECT_EQ(e.found(), "963071495 (a cut or damaged file)");
+    EXPECT_EQ(std::string(e.what()).rfind("cut.png (byte 33): chunk 'sPLT' length: expected at "
+                                          "most 7 bytes",
+                                          0),
+              0u)
+        << e.what();
+  }
+  // A whole file still reads, from bytes as from its path.
+  Image8 one;
+  one.width = one.height = 1;
+  one.rgb = {10, 20, 30};
+  const auto path = std::filesystem::temp_directory_path() / "prime-png-bytes-test.png";
+  writePng(path.string(), one);
+  const Image8 back = readPng(path.string());
+  std::filesystem::remove(path);
+  EXPECT_EQ(back.rgb, one.rgb);
+}
+
 TEST(TrueColour, ClampRoundAndNaN) {
   EXPECT_EQ(trueColour({0, 0.5, 1}), (Rgb8{0, 128, 255}));  // 127.5 rounds away from zero
   EXPECT_EQ(trueColour({-0.2, 1.7, std::nan("")}), (Rgb8{0, 255, 0}));
