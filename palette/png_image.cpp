@@ -16,6 +16,12 @@ namespace prime {
 
 void writePng(const std::string& path, const Image8& image) {
   io::OutputFile out(path);  // a fresh temporary beside it, renamed into place at the end
+  writePng(out, image);
+  out.commit();
+}
+
+void writePng(io::OutputFile& out, const Image8& image) {
+  const std::string& path = out.path();
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info || setjmp(png_jmpbuf(png))) {
@@ -32,7 +38,6 @@ void writePng(const std::string& path, const Image8& image) {
                   const_cast<png_bytep>(&image.rgb[static_cast<std::size_t>(y) * image.width * 3]));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  out.commit();
 }
 
 Image8 readPng(const std::string& path) {

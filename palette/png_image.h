@@ -12,7 +12,13 @@ struct Image8 {
   std::vector<std::uint8_t> rgb;  // width*height*3, rows top to bottom
 };
 
+namespace io {
+class OutputFile;
+}
+
 void writePng(const std::string& path, const Image8& image);
+// Into `out` (one file of an io::OutputSet), which the caller commits.
+void writePng(io::OutputFile& out, const Image8& image);
 // Reads any PNG as 8-bit RGB (libpng's simplified API); throws
 // std::runtime_error naming the file when it cannot.
 Image8 readPng(const std::string& path);

@@ -28,6 +28,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace prime::io {
 
@@ -66,6 +67,25 @@ class OutputFile {
   bool committed_ = false;
   int slot_ = -1;                               // in the signal handler's list of live temporaries
   std::uint64_t written_ = 0, handedOver_ = 0;  // bytes written; bytes handed to the disk
+};
+
+// Several files that belong together (a POV-Ray scene and its texture
+// PNGs), written all or none: each goes to its own temporary, and commit()
+// first syncs every one (a full disk fails there, and every temporary is
+// removed), then renames them all into place.
+class OutputSet {
+ public:
+  OutputFile& add(std::string path) {
+    files_.push_back(std::make_unique<OutputFile>(std::move(path)));
+    return *files_.back();
+  }
+  void commit() {
+    for (auto& f : files_) f->finish();
+    for (auto& f : files_) f->commit();
+  }
+
+ private:
+  std::vector<std::unique_ptr<OutputFile>> files_;
 };
 
 // Throws InputError (naming `path`) unless `path` may be written as an

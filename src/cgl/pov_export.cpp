@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <numbers>
 
-#include "legacy_io/common/output_file.h"
-
 namespace prime::cgl {
 
 namespace {
@@ -449,12 +447,6 @@ class CglPovWriter {
 
 PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
   return CglPovWriter(scene, options).run();
-}
-
-void writePovFile(const std::string& text, const std::filesystem::path& file) {
-  io::OutputFile out(file.string());
-  out.write(text);
-  out.commit();
 }
 
 }  // namespace prime::cgl

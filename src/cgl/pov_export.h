@@ -120,8 +120,4 @@ std::string povGeometry(const Object& object);
 
 PovExport exportPov(const Scene& scene, const PovExportOptions& options);
 
-// Writes the text through a temporary file renamed into place; throws
-// std::runtime_error naming the file on failure.
-void writePovFile(const std::string& text, const std::filesystem::path& file);
-
 }  // namespace prime::cgl

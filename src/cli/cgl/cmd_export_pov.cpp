@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "palette/png_image.h"
 #include "src/cgl/pov_export.h"
 #include "src/cli/cgl/commands.h"
@@ -39,6 +40,8 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
       options.textureStem = target.stem().string();
       const auto exported = prime::cgl::exportPov(scene, options);
       const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+      // All or none: a full disk at the scene file leaves no texture behind.
+      io::OutputSet files;
       for (const auto& img : exported.images) {
         Image8 png;
         png.width = png.height = prime::cgl::Frame::kSize;
@@ -48,9 +51,10 @@ void addExportPovOptions(CLI::App* cmd, Action& action) {
           png.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::greenOf(w)));
           png.rgb.push_back(static_cast<std::uint8_t>(prime::cgl::blueOf(w)));
         }
-        writePng((dir / img.file).string(), png);
+        writePng(files.add((dir / img.file).string()), png);
       }
-      prime::cgl::writePovFile(exported.pov, target);
+      files.add(target.string()).write(exported.pov);
+      files.commit();
       if (!*quiet) {
         std::cout << "wrote " << *out << " (" << exported.objects << " objects, " << exported.lights
                   << " light sources";

@@ -601,11 +601,13 @@ PovExport exportPov(const Scene& scene, const PovExportOptions& options) {
 }
 
 void writePovExport(const PovExport& exported, const fs::path& povFile) {
+  // All or none: a full disk at the last texture leaves no earlier one behind.
   const fs::path dir = povFile.parent_path();
-  for (const PovImage& img : exported.images) writePng((dir / img.fileName).string(), img.image);
-  io::OutputFile out(povFile.string());
-  out.write(exported.pov);
-  out.commit();
+  io::OutputSet files;
+  for (const PovImage& img : exported.images)
+    writePng(files.add((dir / img.fileName).string()), img.image);
+  files.add(povFile.string()).write(exported.pov);
+  files.commit();
 }
 
 }  // namespace prime

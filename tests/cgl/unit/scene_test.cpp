@@ -132,6 +132,82 @@ TEST(CglPreprocess, SharedSubtreesAreInstantiatedPerPath) {
   EXPECT_EQ(atLeft, 15);
 }
 
+// Issue 37: the walk of the DAG counts every node reached along every path.
+// Transform nodes that share the next by both pointers double the paths at
+// each level without making an object, which the object limit never saw.
+TEST(CglPreprocess, SharedPathsAreCountedAsVisitsAndRefused) {
+  SceneFile f = emptyScene();
+  f.surfaces.push_back(lambert(1, 1));
+  const int levels = 24;  // 2^24 paths: 33 million visits
+  for (int k = 1; k <= levels; ++k) f.nodes.push_back(test::node(k, NodeKind::Dummy, k + 1, k + 1));
+  f.nodes.push_back(test::node(levels + 1, NodeKind::Dummy, 0, 0));
+  f.numbers.root = 1;
+  BuildOptions options;
+  options.maxVisits = 1'000'000;
+  try {
+    buildScene(f, options);
+    FAIL() << "2^24 paths were walked";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 1000000 node visits"), std::string::npos)
+        << e.what();
+  }
+}
+
+// A chain of 100,000 nodes: a call per node overflowed the stack at about
+// 6,000 (ASan); the walk is a work list now, in the same order.
+TEST(CglPreprocess, AChainOfAHundredThousandNodesIsWalked) {
+  SceneFile f = emptyScene();
+  f.surfaces.push_back(lambert(1, 1));
+  const int n = 100'000;
+  for (int k = 1; k < n; ++k) f.nodes.push_back(test::node(k, NodeKind::Dummy, k + 1, 0));
+  f.nodes.push_back(test::sphere(n, 0, 1, {0, 0, 0}, 0.5));
+  f.numbers.root = 1;
+  const Scene s = buildScene(f);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_EQ(s.objects[0].node, n);
+  // As deep in boxes: each box holds the next (flatten is iterative too).
+  for (int k = 1; k < n; ++k) f.nodes[static_cast<std::size_t>(k - 1)].kind = NodeKind::Box;
+  const Scene boxed = buildScene(f);
+  ASSERT_EQ(boxed.objects.size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(boxed.objects[0].skip, n);
+  EXPECT_EQ(boxed.objects[static_cast<std::size_t>(n - 1)].kind, ObjectKind::Sphere);
+}
+
+// The refined meshes of spline nodes add up along every path to them, and
+// are sized before each is made (section 6.3.3).
+TEST(CglPreprocess, SplineMeshesAddUpAlongEveryPath) {
+  SceneFile f = emptyScene();
+  f.surfaces.push_back(lambert(1, 1));
+  const int levels = 6;  // 64 paths to the spline
+  for (int k = 1; k <= levels; ++k) f.nodes.push_back(test::node(k, NodeKind::Dummy, k + 1, k + 1));
+  NodeRecord spline = test::node(levels + 1, NodeKind::Spline, 0, 0);
+  spline.surface = 1;
+  spline.nu = 4;
+  spline.uEnd = EndCondition::Closed;
+  spline.nv = 5;
+  spline.vEnd = EndCondition::Double;
+  spline.divisions = 8;  // (5 x 8 + 3) x (6 x 8 + 3) = 2,193 points, 343 KiB
+  spline.overlap = 0.6;
+  for (int v = 0; v < 5; ++v)
+    for (int u = 0; u < 4; ++u)
+      spline.controls.push_back({std::cos(u * std::numbers::pi / 2) * 0.3, 0.2 * v,
+                                 std::sin(u * std::numbers::pi / 2) * 0.3});
+  f.nodes.push_back(spline);
+  f.numbers.root = 1;
+  BuildOptions options;
+  EXPECT_EQ(buildScene(f, options).splines.size(), 64u);
+  options.maxSplineBytes = 10 * 2193 * kSplineBytesPerPoint;  // ten of them
+  try {
+    buildScene(f, options);
+    FAIL() << "64 meshes were made within the room of ten";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where().line, 1000 + levels + 1);
+    EXPECT_NE(std::string(e.what()).find("4 x 5 vertices at 8 divisions: 43 x 51 points"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(CglPreprocess, BoxesHoldTheirSubtreeInListOrder) {
   // Root 1 box (down 2, right 4); 2 sphere (right 3); 3 sphere; 4 sphere.
   // Right first: node 4 is processed first (last in the list). Inside the box

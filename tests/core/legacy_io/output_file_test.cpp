@@ -122,6 +122,26 @@ TEST(OutputFile, AnUncommittedTemporaryIsRemovedAndTheOldFileKept) {
   EXPECT_EQ(entries(dir.path()), 1);
 }
 
+// Issue 37: export-pov wrote its texture PNGs one by one, then the scene: a
+// failure at the scene (a full disk, an unwritable name) left the textures.
+TEST(OutputSet, AFailureAtAnyFileLeavesNoneOfThem) {
+  TempDir dir;
+  {
+    OutputSet files;
+    files.add((dir / "scene-texture1.png").string()).write(std::string_view("texels"));
+    EXPECT_THROW(files.add((dir / "no such dir" / "scene.pov").string()), InputError);
+  }  // the exception left the set uncommitted
+  EXPECT_EQ(entries(dir.path()), 0);
+  OutputSet files;
+  files.add((dir / "a").string()).write(std::string_view("A"));
+  files.add((dir / "b").string()).write(std::string_view("B"));
+  EXPECT_EQ(entries(dir.path()), 2);  // the two temporaries
+  files.commit();
+  EXPECT_EQ(contents(dir / "a"), "A");
+  EXPECT_EQ(contents(dir / "b"), "B");
+  EXPECT_EQ(entries(dir.path()), 2);
+}
+
 TEST(OutputFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
   TempDir dir;
   const fs::path victim = dir / "victim.txt", target = dir / "out.png";
