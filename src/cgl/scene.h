@@ -127,10 +127,12 @@ struct BuildOptions {
   std::uint64_t maxSplineBytes = std::uint64_t{2} << 30;
 };
 
-// What a refined spline point costs with its share of the box tree, for
-// maxSplineBytes (measured: 3 doubles of the mesh, the tree's boxes and
-// patches).
-inline constexpr std::uint64_t kSplineBytesPerPoint = 160;
+// What a refined spline point costs at the peak of building it, with its
+// share of the box tree, for maxSplineBytes (measured: the peak resident
+// memory of `prime export-pov`, which builds and renders nothing, for splines
+// of 20 x 20 and 30 x 30 vertices at 64 divisions, 1.8 and 3.9 million
+// points: 356 and 371 bytes a point).
+inline constexpr std::uint64_t kSplineBytesPerPoint = 370;
 
 // Preprocess. Throws io::InputError (located at the node, surface or light
 // line) for what the port cannot render: spline nodes (part 2 of the

@@ -11,7 +11,7 @@ and found, that nothing is left half-written, and that it ends quickly:
     took it), the system of `-o existing.rle scene.cgl`, a file no system
     reads, a 309-digit range in a message;
   - unbounded work from a small file: a CGL DAG of 2^60 paths, a chain of
-    6,000 CGL nodes, a CGL spline refined to 2.3 GiB, a Malone viewer of
+    6,000 CGL nodes, a CGL spline refined to 5.3 GiB, a Malone viewer of
     16384 x 16384, 200 Malone sampled lights of 100,000 samples each, Ctrl-C
     inside a pixel of such lights, Malone's --max-depth beyond 64;
   - hostile bytes: control bytes in a CGL scene are shown escaped.
@@ -154,7 +154,7 @@ with tempfile.TemporaryDirectory() as tmp:
           "cgl: a chain of 6,000 nodes renders (no recursion per node)", r)
     tube = open(os.path.join(ROOT, "scenes/cgl/doc-spline-tube.cgl")).read()
     # One spline of 60 x 60 control vertices at 64 divisions (the reader's
-    # most, CGL-Q9): 3,907 x 3,907 refined points, 2.3 GiB with its box tree,
+    # most, CGL-Q9): 3,907 x 3,907 refined points, 5.3 GiB with its box tree,
     # asked by a 60 KB file. (A mesh shared along many paths adds up the same
     # way: CglPreprocess.SplineMeshesAddUpAlongEveryPath.)
     n = 60
