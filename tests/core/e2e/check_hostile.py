@@ -21,6 +21,7 @@ Run: check_hostile.py PRIME_EXE REPO_ROOT
 import math
 import os
 import re
+import resource
 import shutil
 import signal
 import subprocess
@@ -204,6 +205,34 @@ with tempfile.TemporaryDirectory() as tmp:
              "48", "--no-window", "-q", "--png", "deep.png"], tmp)
     check(r.returncode == 0 and os.path.exists(path("deep.png")),
           "malone: --max-depth 200, past the old cap of 64 (the document's MIN_WEIGHT is what bounds depth)", r)
+
+    # ---- failures nobody foresaw name the file and the step ------------------------
+    tube_path = os.path.join(ROOT, "scenes/cgl/doc-spline-tube.cgl")
+    r = run(["cgl-splines", tube_path, "--distances", path("no such dir/d.csv")], tmp)
+    check(refused(r, 1, "no such dir/d.csv", "does not exist"),
+          "cgl-splines --distances into a missing directory: a message, not SIGABRT", r)
+
+    def limited(mib):
+        def apply():
+            resource.setrlimit(resource.RLIMIT_AS, (mib << 20, mib << 20))
+        return apply
+
+    env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
+    probe = subprocess.run([PRIME, "--version"], capture_output=True, preexec_fn=limited(400),
+                           env=env)
+    if probe.returncode != 0:  # AddressSanitizer reserves terabytes: no address-space limit
+        print("check_hostile: out-of-memory case skipped: this build cannot run under a 400 MiB "
+              "address-space limit (a sanitizer's shadow memory)")
+    else:
+        big = open(malone).read().replace("256 256", "6000 6000", 1)  # 1 GiB of picture
+        oom = subprocess.run([PRIME, "trace", write("oom.mal", big), "--no-window", "-q",
+                              "--png", "oom.png"], capture_output=True, text=True, cwd=tmp,
+                             env=env, preexec_fn=limited(400), timeout=120)
+        check(oom.returncode == 1 and "out of memory while" in oom.stderr
+              and "oom.mal" in oom.stderr and "bad_alloc" not in oom.stderr
+              and not os.path.exists(path("oom.png")),
+              "out of memory names the step and the scene, not a bare std::bad_alloc:\n    "
+              + oom.stderr[-400:])
 
     # ---- hostile bytes ---------------------------------------------------------
     with open(path("ctl.cgl"), "wb") as f:
