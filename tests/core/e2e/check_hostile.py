@@ -179,16 +179,26 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(["trace", write("lights.mal", lights), "--no-window", "-q", "--png", "l.png"], tmp)
     check(refused(r, 1, "lights.mal", "at most 1000000 samples of sampled lights"),
           "malone: 200 lights of 100,000 samples are refused at the samples limit", r)
-    # Ctrl-C inside one pixel: ten lights of 100,000 samples (the limit) make
-    # every pixel that sees the sphere send a million shadow rays.
-    slow = text.replace("101\n4 4 6\n60 60 60\n", "105\n100000\n4 4 6\n0.5\n60 60 60\n" * 10, 1)
-    slow = slow.replace("256 256", "64 64", 1)  # minutes of work: still running at the signal
+    # Ctrl-C inside one pixel: two facing perfect mirrors and --max-depth
+    # 10000 make every pixel 10,000 shading points, each sending a shadow ray
+    # to every one of ten lights' 100,000 samples (the limit): hours a pixel,
+    # so only a check inside the pixel can end the run.
+    light = "105\n100000\n0 1 0\n0.5\n60 60 60\n"
+    mirror = "100\n0.9 0.9 0.9\n1 200\n0 0 0\n"
+    mirrors = ("102\n0 0 0\n1 0 0\n0 0 0.1\n0 0.1 0\n4 4\n" + light * 10 +
+               "2\n1.5\n1 0 0\n" + mirror + "2\n-1.5\n1 0 0\n" + mirror)
     env = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
-    p = subprocess.Popen([PRIME, "trace", write("slow.mal", slow), "--no-window", "-q",
-                          "--threads", "1", "--png", "slow.png"], cwd=tmp, env=env,
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    time.sleep(2.0)
-    running = p.poll() is None
+    p = subprocess.Popen([PRIME, "trace", write("slow.mal", mirrors), "--no-window",
+                          "--max-depth", "10000", "--min-weight", "0", "--threads", "1",
+                          "--png", "slow.png"], cwd=tmp, env=env, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.PIPE, text=True)
+    started = False
+    for line in p.stderr:  # the render has begun once the run says it is headless
+        if "running headless" in line:
+            started = True
+            break
+    time.sleep(1.0)
+    running = started and p.poll() is None
     p.send_signal(signal.SIGINT)
     start = time.monotonic()
     try:
@@ -198,8 +208,8 @@ with tempfile.TemporaryDirectory() as tmp:
         p.communicate()
     waited = time.monotonic() - start
     check(running and p.returncode == 130 and waited < 1.0 and not os.path.exists(path("slow.png")),
-          f"malone: Ctrl-C inside a pixel of 1,000,000 light samples ends the run in "
-          f"{waited:.2f} s with 130 (want < 1 s), no picture")
+          f"malone: Ctrl-C inside a pixel of hours (10,000 bounces, 1,000,000 light samples) "
+          f"ends the run in {waited:.2f} s with {p.returncode} (want 130 within 1 s), no picture")
     corridor = os.path.join(ROOT, "scenes/malone/mirror-corridor.mal")
     r = run(["trace", corridor, "--max-depth", "200", "--min-weight", "0", "--size", "64",
              "48", "--no-window", "-q", "--png", "deep.png"], tmp)
