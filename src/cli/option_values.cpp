@@ -15,13 +15,6 @@ namespace {
 // CLI11 gives an option of any number of values this many.
 constexpr int kUnbounded = 1 << 20;
 
-bool isNumber(const std::string& word) {
-  if (word.empty()) return false;
-  char* end = nullptr;
-  std::strtod(word.c_str(), &end);
-  return end == word.c_str() + word.size();
-}
-
 // The subcommand args[1] names, if it is one.
 CLI::App* chosenCommand(CLI::App& app, const std::vector<std::string>& args) {
   if (args.size() < 2) return nullptr;
@@ -37,6 +30,13 @@ bool isRange(const CLI::Option* o) {
 }
 
 }  // namespace
+
+bool isNumber(const std::string& word) {
+  if (word.empty()) return false;
+  char* end = nullptr;
+  std::strtod(word.c_str(), &end);
+  return end == word.c_str() + word.size();
+}
 
 void takeDeclaredValues(CLI::App& app, std::vector<std::string>& args) {
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))

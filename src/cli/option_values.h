@@ -24,6 +24,10 @@ namespace prime::cli {
 //     positional arguments).
 void takeDeclaredValues(CLI::App& app, std::vector<std::string>& args);
 
+// Whether the whole word is a number, as strtod reads one ("-0.5", "1e3"):
+// what tells an option's value from a flag or a file.
+bool isNumber(const std::string& word);
+
 // An output file's name: not empty (`--png ''` wrote nothing and said nothing).
 CLI::Validator outputName();
 // A number not below `least`: "must be at least 0, got -1" (CLI11's own said

@@ -6,10 +6,10 @@
 // docs/cgl/deviations.md CGL-E80). -o names the output file: the usual build
 // encoded it (-Dencode), so it is --rle here.
 #include <cctype>
-#include <cstdlib>
 #include <map>
 
 #include "src/cli/cgl/commands.h"
+#include "src/cli/option_values.h"
 
 namespace prime::cli::cgl {
 
@@ -22,12 +22,6 @@ bool isInteger(const std::string& s) {
   for (; i < s.size(); ++i)
     if (!std::isdigit(static_cast<unsigned char>(s[i]))) return false;
   return true;
-}
-
-bool isNumber(const std::string& s) {
-  char* end = nullptr;
-  std::strtod(s.c_str(), &end);
-  return !s.empty() && end == s.c_str() + s.size();
 }
 
 }  // namespace
