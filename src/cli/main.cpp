@@ -114,6 +114,8 @@ const std::vector<Command>& commands() {
       {{"new"}, cli::addNewCommand},
       {{"compare"}, cli::addCompareCommand},
       {{"walk"}, nullptr, cli::addWalkVerb},
+      {{"path"}, nullptr, cli::addPathVerb},
+      {{"stitch"}, cli::addStitchCommand},
       {{"cgl-splines"}, cli::cgl::addSplinesCommand},
       {{"cook"}, cli::cgl::addCookCommand},
       {{"tovector"}, cli::cgl::addTovectorCommand},
