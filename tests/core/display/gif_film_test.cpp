@@ -6,12 +6,12 @@
 #include <gif_lib.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <optional>
-#include <set>
 
 #include "legacy_io/common/output_file.h"
 #include "tests/support/temp_dir.h"
