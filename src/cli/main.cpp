@@ -110,6 +110,7 @@ const std::vector<Command>& commands() {
       {{"plate1"}, cli::addPlate1Command},
       {{"stress"}, cli::addStressCommand},
       {{"quantize"}, cli::addQuantizeCommand},
+      {{"film"}, cli::addFilmCommand},
       {{"check"}, cli::addCheckCommand},
       {{"new"}, cli::addNewCommand},
       {{"compare"}, cli::addCompareCommand},
