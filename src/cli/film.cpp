@@ -23,7 +23,7 @@ bool pixelFree(const CLI::Option* o) {
       "--out",        "--ppm",     "--rle",     "--raw",     "--png",         "--true-color-png",
       "--png-8514",   "--threads", "--quiet",   "--timings", "--no-window",   "--zoom",
       "--fullscreen", "--scale",   "--no-wait", "--pace",    "--camera-path", "--frames",
-      "--rows",       "--help"};
+      "--rows",       "--help",    "--model"};
   for (const std::string& n : o->get_lnames())
     for (const char* x : names)
       if (n == std::string(x).substr(2)) return true;
@@ -79,6 +79,8 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
     patterns.push_back(*n);
   }
   const CameraFlags original = cam;
+  std::vector<bool> onceOriginal;
+  for (bool* b : flags.firstFrameOnly) onceOriginal.push_back(*b);
   const LiveOptions live = flags.live;
   flags.live.noWindow = true;  // a film renders headless: no window a frame
   flags.live.noWait = true;
@@ -87,6 +89,8 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
     for (std::size_t i = 0; i < names.size(); ++i) *names[i] = patterns[i];
     cam = original;
     flags.live = live;
+    for (std::size_t i = 0; i < onceOriginal.size(); ++i)
+      *flags.firstFrameOnly[i] = onceOriginal[i];
   };
   RecordContext record;
   record.system = system;
@@ -112,6 +116,9 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
                                                    " writes its picture for every frame");
       record.frame = k;
       record.camera = cameraFlagsText(c, false);
+      if (!cam.size.empty())  // the path's size when --size is not given
+        record.camera +=
+            " --size " + std::to_string(cam.size[0]) + " " + std::to_string(cam.size[1]);
       bool wasDone = false;
       const auto t0 = std::chrono::steady_clock::now();
       const int rc = runTrace(*job, flags, &record, &wasDone);
@@ -123,6 +130,7 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
         restore();
         return rc;
       }
+      for (bool* b : flags.firstFrameOnly) *b = false;  // done by the first frame
       const int done = k - range.first + 1;
       if (wasDone) {
         ++skipped;

@@ -49,6 +49,10 @@ struct TraceFlags {
   // there) and the names of its own outputs (patterns under --frames).
   CameraFlags* camera = nullptr;
   std::vector<std::string*> ownOutputs;
+  // Flags whose work the first frame of a film does for all (PRIME's --model:
+  // the databases are built once; a second build would write the files the
+  // first frame read): cleared after it.
+  std::vector<bool*> firstFrameOnly;
 };
 
 // One render of one system, driven by the shared skeleton (runTrace): check

@@ -436,6 +436,7 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   addRenderOptions(cmd, *options);
   flags->camera = &options->camera.flags;
   flags->ownOutputs = {out.get()};
+  flags->firstFrameOnly = {&options->model};
   return [dir, out, options, display, flags] {
     return std::make_unique<PrimeTrace>(dir, out, options, display, flags);
   };

@@ -119,6 +119,10 @@ with tempfile.TemporaryDirectory() as tmp:
                  "--png", "F%04d.png"] + outs, d)
         check(r.returncode == 0 and "2 done already" in r.out,
               f"{name}: another thread count is the same render", r)
+    # PRIME's --model builds the databases once, for the first frame.
+    r = run(["trace", "plate3", "--model", "--camera-path", "film-prime/orbit.txt", "--frames", "0-2",
+             "--size", "32", "24", "--out", "film-prime/M%04d.gr"], tmp)
+    check(r.returncode == 0 and "3 rendered" in r.out, "prime: a film with --model", r)
     # Other settings: every frame again.
     d = os.path.join(tmp, "film-malone")
     r = run(["trace", mal, "--camera-path", "orbit.txt", "--frames", "0-1", "--max-depth", "2",
