@@ -22,6 +22,10 @@
 # Resume: run the same command again; frames whose .render sidecars match are skipped.
 set -eu
 HERE=$(cd "$(dirname "$0")" && pwd)
+if ! command -v sbatch >/dev/null; then
+  echo "submit: no sbatch on PATH: run this where Slurm's commands are (a login node)" >&2
+  exit 2
+fi
 usage() {
   echo "usage: $0 film|bands [TRACE_ARG...]  (variables: see the top of $0)" >&2
   exit 2

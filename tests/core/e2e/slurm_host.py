@@ -40,21 +40,17 @@ import sys
 import tempfile
 import time
 
-DAEMONS = ("munged", "slurmctld", "slurmd")
-CLIENTS = ("sbatch", "squeue", "sinfo", "scontrol", "scancel")
-# Where Debian puts the daemons (root's PATH has /usr/sbin; a user's may not).
-SBIN = ("/usr/sbin", "/usr/bin", "/sbin", "/bin")
 
-
-def _find(name):
-    found = shutil.which(name)
-    if found:
-        return found
-    for d in SBIN:
-        p = os.path.join(d, name)
-        if os.access(p, os.X_OK):
-            return p
-    return None
+def _programs():
+    """The programs a single-host Slurm needs, found on PATH (root's has /usr/sbin)."""
+    return {
+        "munged": shutil.which("munged"),        # munge
+        "slurmctld": shutil.which("slurmctld"),  # slurmctld
+        "slurmd": shutil.which("slurmd"),        # slurmd
+        "sbatch": shutil.which("sbatch"),        # slurm-client, as the rest
+        "sinfo": shutil.which("sinfo"),
+        "scontrol": shutil.which("scontrol"),
+    }
 
 
 def unavailable():
@@ -62,11 +58,15 @@ def unavailable():
     if os.geteuid() != 0:
         return ("not root: slurmd and slurmctld run as root here (SlurmUser=root), "
                 "munged's key must be root's")
-    missing = [n for n in DAEMONS + CLIENTS if _find(n) is None]
+    missing = [n for n, p in _programs().items() if p is None]
     if missing:
-        return ("missing " + ", ".join(missing) +
+        return ("not on PATH: " + ", ".join(missing) +
                 " (Debian: apt-get install slurm-wlm munge; prime.sh's PACKAGES has them)")
     return None
+
+
+def _find(name):
+    return shutil.which(name) or name
 
 
 def _free_ports(n):
@@ -182,7 +182,7 @@ JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
 ReturnToService=2
 MinJobAge=600
-SchedulerType=sched/backfill
+SchedulerType=sched/builtin
 SchedulerParameters=sched_interval=1
 NodeName={self.node} NodeAddr=127.0.0.1 CPUs={os.cpu_count()} RealMemory=256 State=UNKNOWN
 PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP

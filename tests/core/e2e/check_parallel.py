@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+"""A walk becomes a film, and a picture is cut into bands, through GNU parallel.
+
+The recipes of docs/cluster.md, run as separate `prime` processes by GNU
+parallel (`parallel -j2`), each compared byte for byte with one process:
+  (a) films: for every system (PRIME's plate 2, a Malone and a CGL scene), the
+      frames of a small orbit, in chunks (tools/cluster/ranges.sh frames), the
+      same bytes as one `prime trace --frames` of them all; `prime film` of
+      either set of PNGs gives the same GIF;
+  (b) bands: for every system, the picture cut into bands of rows
+      (tools/cluster/ranges.sh bands) rendered with different --threads each
+      (one PRIME picture of many rows), stitched by `prime stitch`, the same
+      bytes as one process's render; PNG pieces too; and `prime stitch`
+      refuses a gap, an overlap and a piece of another render, writing nothing;
+  (c) resume: a film's parallel run killed (SIGTERM to parallel) once its
+      first frames are done, then run again as written: the frames done before
+      the kill are not rendered again (same inode and mtime), the others are,
+      and the film is the same bytes as one process's.
+
+Sizes are tiny so that the whole runs in a few seconds in a release build and
+under AddressSanitizer within its timeout.
+
+Run: check_parallel.py PRIME_EXE REPO_ROOT
+"""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
+from prime_checks import Checks
+
+PRIME, ROOT = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+RANGES = os.path.join(ROOT, "tools/cluster/ranges.sh")
+CHECKS = Checks(PRIME)
+run, check = CHECKS.run, CHECKS.check
+ENV = dict(os.environ, DISPLAY="", WAYLAND_DISPLAY="")
+FRAMES = 4  # frames of each system's film
+
+# system -> scene, --out extension, size of the film's frames, of the banded picture
+SYSTEMS = {
+    "prime": {"scene": os.path.join(ROOT, "scenes/prime/plate2"), "ext": ".scr",
+              "film": (24, 18), "bands": (24, 160), "n": 5},
+    "malone": {"scene": os.path.join(ROOT, "scenes/malone/doc-sphere.mal"), "ext": ".ppm",
+               "film": (24, 18), "bands": (32, 24), "n": 4},
+    "cgl": {"scene": os.path.join(ROOT, "scenes/cgl/ball.cgl"), "ext": ".rle",
+            "film": (24, 18), "bands": (32, 24), "n": 3},
+}
+# A hand-written orbit for when `prime path` is not there: eye, look-at, fov.
+ORBITS = {
+    "prime": ((500, 450, 500), 1700, 600, 45),
+    "malone": ((0, 0, 0), 4.5, 1, 35),
+    "cgl": ((0, 0, 0), 3.0, 0.5, 14),
+}
+
+
+def sh(args, **kw):
+    kw.setdefault("capture_output", True)
+    kw.setdefault("text", True)
+    return subprocess.run(args, env=ENV, **kw)
+
+
+def same_files(a_dir, b_dir, names, what):
+    for n in names:
+        a, b = os.path.join(a_dir, n), os.path.join(b_dir, n)
+        if not check(os.path.isfile(a) and os.path.isfile(b), f"{what}: {n} missing"):
+            return False
+        if not check(open(a, "rb").read() == open(b, "rb").read(),
+                     f"{what}: {n} differs from one process's"):
+            return False
+    return True
+
+
+def camera_path(system, scene, path):
+    """An orbit of FRAMES cameras: `prime path --orbit` if there is one, else by hand."""
+    r = run(["path", scene, "--orbit", str(FRAMES), "--out", path])
+    if r.returncode == 0 and os.path.isfile(path):
+        return "prime path"
+    import math
+    (cx, cy, cz), radius, height, fov = ORBITS[system]
+    with open(path, "w") as f:
+        f.write(f"# {FRAMES} cameras about the scene, one a frame\n")
+        for i in range(FRAMES):
+            a = 2 * math.pi * i / FRAMES
+            eye = (cx + radius * math.sin(a), cy + height, cz - radius * math.cos(a))
+            f.write("--eye %g %g %g --look-at %g %g %g --up 0 1 0 --fov %g\n"
+                    % (eye + (cx, cy, cz, fov)))
+    return "by hand"
+
+
+def parallel(args, lines, **kw):
+    """GNU parallel on local cores, the jobs' arguments on its standard input."""
+    return sh(["parallel", "-j2", "--halt", "now,fail=1"] + args, input="".join(lines), **kw)
+
+
+def ranges(*args):
+    r = sh([RANGES] + [str(a) for a in args])
+    check(r.returncode == 0, f"ranges.sh {args}: {r.stderr}")
+    return r.stdout.splitlines(keepends=True)
+
+
+def frame_names(ext, first, last):
+    return [f"f{i:04d}{e}" for i in range(first, last + 1) for e in (ext, ".png")]
+
+
+def films(tmp, scenes):
+    started = time.monotonic()
+    for system, s in SYSTEMS.items():
+        scene, ext = scenes[system], s["ext"]
+        path = os.path.join(tmp, f"{system}-path.txt")
+        how = camera_path(system, scene, path)
+        one, many = os.path.join(tmp, f"{system}-film-one"), os.path.join(tmp, f"{system}-film-par")
+        os.mkdir(one)
+        os.mkdir(many)
+        size = [str(v) for v in s["film"]]
+        common = ["--camera-path", path, "--size"] + size + ["-q", "--no-window"]
+        r = run(["trace", scene, "--frames", f"0-{FRAMES - 1}", "--out", f"{one}/f%04d{ext}",
+                 "--png", f"{one}/f%04d.png", "--threads", "2"] + common)
+        if not check(r.returncode == 0, f"(a) {system}: one process's frames: {r.stderr}"):
+            continue
+        # The recipe: chunks of two frames, one process each, two at a time.
+        r = parallel([PRIME, "trace", scene, "--frames", "{}", "--out", f"{many}/f%04d{ext}",
+                      "--png", f"{many}/f%04d.png", "--threads", "1"] + common,
+                     ranges("frames", 0, FRAMES - 1, 2))
+        if not check(r.returncode == 0, f"(a) {system}: parallel: {r.stdout}{r.stderr}"):
+            continue
+        same_files(one, many, frame_names(ext, 0, FRAMES - 1), f"(a) {system} film ({how} path)")
+        gifs = []
+        for d in (one, many):
+            gif = os.path.join(d, "film.gif")
+            pngs = [os.path.join(d, f"f{i:04d}.png") for i in range(FRAMES)]
+            r = run(["film", gif] + pngs + ["--fps", "4"])
+            check(r.returncode == 0 and os.path.isfile(gif), f"(a) {system}: prime film: {r.stderr}")
+            gifs.append(gif)
+        if all(os.path.isfile(g) for g in gifs):
+            check(open(gifs[0], "rb").read() == open(gifs[1], "rb").read(),
+                  f"(a) {system}: the GIF of the parallel frames differs")
+    return time.monotonic() - started
+
+
+def bands(tmp, scenes):
+    started = time.monotonic()
+    for system, s in SYSTEMS.items():
+        scene, ext, n = scenes[system], s["ext"], s["n"]
+        w, h = s["bands"]
+        rows = 512 if system == "cgl" else h  # CGL's picture is its 512 x 512 frame buffer
+        d = os.path.join(tmp, f"{system}-bands")
+        os.mkdir(d)
+        size = ["--size", str(w), str(h), "-q", "--no-window"]
+        whole, whole_png = os.path.join(d, "whole" + ext), os.path.join(d, "whole.png")
+        r = run(["trace", scene, "--out", whole, "--png", whole_png, "--threads", "2"] + size)
+        if not check(r.returncode == 0, f"(b) {system}: one process's render: {r.stderr}"):
+            continue
+        # The recipe, each band with its own --threads (1, 2, 1, ...): the bytes must not care.
+        jobs = [f"{line.strip()} {1 + i % 2}\n" for i, line in enumerate(ranges("bands", rows, n))]
+        r = parallel(["--colsep", " ", PRIME, "trace", scene, "--rows", "{2}",
+                      "--out", f"{d}/piece-{{1}}{ext}", "--png", f"{d}/piece-{{1}}.png",
+                      "--threads", "{3}"] + size, jobs)
+        if not check(r.returncode == 0, f"(b) {system}: parallel: {r.stdout}{r.stderr}"):
+            continue
+        pieces = [os.path.join(d, f"piece-{i}{ext}") for i in range(n)]
+        for kind, parts, ref in (("", pieces, whole),
+                                 (" (PNG)", [p[:-len(ext)] + ".png" for p in pieces], whole_png)):
+            out = os.path.join(d, "stitched" + os.path.splitext(ref)[1])
+            r = run(["stitch", out] + parts)
+            if check(r.returncode == 0 and os.path.isfile(out),
+                     f"(b) {system}{kind}: prime stitch: {r.stderr}"):
+                check(open(out, "rb").read() == open(ref, "rb").read(),
+                      f"(b) {system}{kind}: {n} bands stitched differ from one process's render")
+        if system != "malone":
+            continue
+        # What `prime stitch` refuses, so that a seam cannot pass unseen (Malone: cheapest).
+        refused = os.path.join(d, "refused" + ext)
+        r = run(["stitch", refused] + pieces[:1] + pieces[2:])
+        check(r.returncode != 0 and not os.path.exists(refused),
+              f"(b) stitch of bands with a gap (no band 1): exit {r.returncode}, {r.stderr}")
+        a, b = os.path.join(d, "over-a" + ext), os.path.join(d, "over-b" + ext)
+        half = h // 2
+        ra = run(["trace", scene, "--rows", f"0-{half}", "--out", a] + size)
+        rb = run(["trace", scene, "--rows", f"{half - 1}-{h - 1}", "--out", b] + size)
+        if check(ra.returncode == 0 and rb.returncode == 0, f"(b) overlap pieces: {ra.stderr}{rb.stderr}"):
+            r = run(["stitch", refused, a, b])
+            check(r.returncode != 0 and not os.path.exists(refused),
+                  f"(b) stitch of overlapping bands: exit {r.returncode}, {r.stderr}")
+        other = os.path.join(d, "other" + ext)
+        first = ranges("bands", rows, n)[1].split()[1]  # band 1's rows, of another render
+        r = run(["trace", scene, "--rows", first, "--out", other, "--max-depth", "2"] + size)
+        if check(r.returncode == 0, f"(b) a piece of another render: {r.stderr}"):
+            r = run(["stitch", refused, pieces[0], other] + pieces[2:])
+            check(r.returncode != 0 and not os.path.exists(refused),
+                  f"(b) stitch of a piece of another render (--max-depth 2): exit "
+                  f"{r.returncode}, {r.stderr}")
+    return time.monotonic() - started
+
+
+def resume(tmp, scenes):
+    """(c): kill GNU parallel once frames are done, rerun the same command."""
+    started = time.monotonic()
+    scene, ext, n = scenes["prime"], ".scr", 8
+    path = os.path.join(tmp, "resume-path.txt")
+    global FRAMES
+    keep, FRAMES = FRAMES, n
+    camera_path("prime", scene, path)
+    FRAMES = keep
+    one, d = os.path.join(tmp, "resume-one"), os.path.join(tmp, "resume")
+    os.mkdir(one)
+    os.mkdir(d)
+    common = ["--camera-path", path, "--size", "64", "48", "--threads", "1", "--no-window"]
+    r = run(["trace", scene, "--frames", f"0-{n - 1}", "--out", f"{one}/f%04d{ext}",
+             "--png", f"{one}/f%04d.png", "-q"] + common)
+    if not check(r.returncode == 0, f"(c) one process's frames: {r.stderr}"):
+        return time.monotonic() - started
+    command = ["parallel", "-j2", PRIME, "trace", scene, "--frames", "{}",
+               "--out", f"{d}/f%04d{ext}", "--png", f"{d}/f%04d.png"] + common
+    jobs = "".join(ranges("frames", 0, n - 1, 4))  # two jobs of four frames
+    p = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True, env=ENV)
+    p.stdin.write(jobs)
+    p.stdin.close()
+    end = time.monotonic() + 120
+    sidecars = lambda: [f for f in os.listdir(d) if f.endswith(ext + ".render")]
+    while not sidecars() and p.poll() is None and time.monotonic() < end:
+        time.sleep(0.02)
+    p.send_signal(signal.SIGTERM)
+    first_out = p.stdout.read()
+    p.wait()
+    done = {}
+    for f in sidecars():
+        picture = os.path.join(d, f[:-len(".render")])
+        st = os.stat(picture)
+        done[f[:-len(".render")]] = (st.st_ino, st.st_mtime_ns)
+    if not check(0 < len(done) < n, f"(c) the kill came after {len(done)} of {n} frames "
+                 f"(parallel exit {p.returncode}): the test needs some frames done and some "
+                 f"not\n{first_out}"):
+        return time.monotonic() - started
+    r = sh(command, input=jobs)
+    check(r.returncode == 0, f"(c) the rerun: exit {r.returncode}: {r.stdout}{r.stderr}")
+    for name, (ino, mtime) in sorted(done.items()):
+        st = os.stat(os.path.join(d, name))
+        check((st.st_ino, st.st_mtime_ns) == (ino, mtime),
+              f"(c) {name}, done before the kill, was rendered again by the rerun")
+    names = frame_names(ext, 0, n - 1)
+    same_files(one, d, names, "(c) resumed film")
+    left = sorted(set(os.listdir(d)) - set(names) - {x + ".render" for x in names})
+    check(not left, f"(c) files left beside the frames after the kill and the rerun: {left}")
+    print(f"check_parallel: (c) killed after {len(done)} of {n} frames' files "
+          f"(parallel exit {p.returncode}); the rerun rendered the rest")
+    return time.monotonic() - started
+
+
+def main():
+    if shutil.which("parallel") is None:
+        print("FAIL: GNU parallel is not installed (Debian: apt-get install parallel; "
+              "prime.sh's PACKAGES has it)")
+        return 1
+    with tempfile.TemporaryDirectory() as tmp:
+        scenes = {k: v["scene"] for k, v in SYSTEMS.items()}
+        scratch = os.path.join(tmp, "plate2")
+        shutil.copytree(scenes["prime"], scratch)
+        scenes["prime"] = scratch
+        r = run(["model", scratch])
+        if not check(r.returncode == 0, f"model plate 2: {r.stderr}"):
+            return CHECKS.report("film and bands through GNU parallel")
+        ta = films(tmp, scenes)
+        tb = bands(tmp, scenes)
+        tc = resume(tmp, scenes)
+        print(f"check_parallel: (a) films {ta:.1f} s, (b) bands {tb:.1f} s, (c) resume {tc:.1f} s")
+    return CHECKS.report("film and bands through GNU parallel")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
