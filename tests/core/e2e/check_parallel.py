@@ -82,7 +82,7 @@ def camera_path(system, scene, path):
     import math
     (cx, cy, cz), radius, height, fov = ORBITS[system]
     with open(path, "w") as f:
-        f.write(f"# {FRAMES} cameras about the scene, one a frame\n")
+        f.write(f"# {FRAMES} keys about the scene, one a frame\nframes {FRAMES}\nloop\n")
         for i in range(FRAMES):
             a = 2 * math.pi * i / FRAMES
             eye = (cx + radius * math.sin(a), cy + height, cz - radius * math.cos(a))

@@ -81,6 +81,7 @@ def main():
         r = run(["path", malone, "--orbit", str(FRAMES), "--out", path])
         if r.returncode != 0:  # a camera path by hand: one camera a line
             with open(path, "w") as f:
+                f.write(f"frames {FRAMES}\nloop\n")
                 for i in range(FRAMES):
                     a = 2 * math.pi * i / FRAMES
                     f.write("--eye %g 1 %g --look-at 0 0 0 --up 0 1 0 --fov 40\n"
