@@ -15,7 +15,10 @@ parallel (`parallel -j2`), each compared byte for byte with one process:
   (c) resume: a film's parallel run killed (SIGTERM to parallel) once its
       first frames are done, then run again as written: the frames done before
       the kill are not rendered again (same inode and mtime), the others are,
-      and the film is the same bytes as one process's.
+      and the film is the same bytes as one process's;
+  (d) the other machines' recipe (--sshlogin 1/host1,1/host2 --workdir DIR,
+      a shared filesystem), the hosts played by a stand-in ssh that runs
+      parallel's wrapped command here: the same frames as one process.
 
 Sizes are tiny so that the whole runs in a few seconds in a release build and
 under AddressSanitizer within its timeout.
@@ -251,6 +254,40 @@ def resume(tmp, scenes):
     return time.monotonic() - started
 
 
+# ssh as GNU parallel calls it (`ssh [OPTIONS] HOST -- COMMAND`), running COMMAND here:
+# the remote recipe's command line, through parallel's wrapping for another host.
+FAKE_SSH = """#!/bin/sh
+while [ $# -gt 0 ]; do case "$1" in -*) shift ;; *) break ;; esac; done
+echo "$1" >> "$0.hosts"
+shift
+[ "${1:-}" = -- ] && shift
+exec sh -c "$*"
+"""
+
+
+def remote(tmp, scenes):
+    """(d) the --sshlogin --workdir recipe (a shared filesystem), hosts played by a stand-in ssh."""
+    started = time.monotonic()
+    ssh = os.path.join(tmp, "ssh")
+    with open(ssh, "w") as f:
+        f.write(FAKE_SSH)
+    os.chmod(ssh, 0o755)
+    s, one = SYSTEMS["malone"], os.path.join(tmp, "malone-film-one")
+    d = os.path.join(tmp, "remote")
+    os.mkdir(d)
+    size = [str(v) for v in s["film"]]
+    r = parallel(["--ssh", ssh, "--sshlogin", "1/host1,1/host2", "--workdir", d,
+                  PRIME, "trace", scenes["malone"], "--camera-path",
+                  os.path.join(tmp, "malone-path.txt"), "--frames", "{}", "--size"] + size +
+                 ["--threads", "1", "-q", "--no-window", "--out", "f%04d.ppm",
+                  "--png", "f%04d.png"], ranges("frames", 0, FRAMES - 1, 1))
+    if check(r.returncode == 0, f"(d) parallel --sshlogin: {r.stdout}{r.stderr}"):
+        same_files(one, d, frame_names(".ppm", 0, FRAMES - 1), "(d) frames through --sshlogin")
+        hosts = set(open(ssh + ".hosts").read().split()) if os.path.exists(ssh + ".hosts") else set()
+        check(hosts == {"host1", "host2"}, f"(d) jobs went to {hosts}, not host1 and host2")
+    return time.monotonic() - started
+
+
 def main():
     if shutil.which("parallel") is None:
         print("FAIL: GNU parallel is not installed (Debian: apt-get install parallel; "
@@ -267,7 +304,9 @@ def main():
         ta = films(tmp, scenes)
         tb = bands(tmp, scenes)
         tc = resume(tmp, scenes)
-        print(f"check_parallel: (a) films {ta:.1f} s, (b) bands {tb:.1f} s, (c) resume {tc:.1f} s")
+        td = remote(tmp, scenes)
+        print(f"check_parallel: (a) films {ta:.1f} s, (b) bands {tb:.1f} s, (c) resume "
+              f"{tc:.1f} s, (d) --sshlogin {td:.1f} s")
     return CHECKS.report("film and bands through GNU parallel")
 
 
