@@ -26,6 +26,7 @@ under AddressSanitizer within its timeout.
 Run: check_parallel.py PRIME_EXE REPO_ROOT
 """
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -66,12 +67,16 @@ def sh(args, **kw):
     return subprocess.run(args, env=ENV, **kw)
 
 
-def same_files(a_dir, b_dir, names, what):
-    for n in names:
-        a, b = os.path.join(a_dir, n), os.path.join(b_dir, n)
-        if not check(os.path.isfile(a) and os.path.isfile(b), f"{what}: {n} missing"):
-            return False
-        if not check(open(a, "rb").read() == open(b, "rb").read(),
+def same_dirs(one, many, what, skip=("film.gif",)):
+    """Every file one process wrote in ONE (pictures, companions, .render records) is in MANY
+    with the same bytes, and MANY holds nothing else."""
+    a = sorted(set(os.listdir(one)) - set(skip))
+    b = sorted(set(os.listdir(many)) - set(skip))
+    if not check(a == b, f"{what}: files {b} where one process wrote {a}"):
+        return False
+    for n in a:
+        if not check(open(os.path.join(one, n), "rb").read() ==
+                     open(os.path.join(many, n), "rb").read(),
                      f"{what}: {n} differs from one process's"):
             return False
     return True
@@ -105,10 +110,6 @@ def ranges(*args):
     return r.stdout.splitlines(keepends=True)
 
 
-def frame_names(ext, first, last):
-    return [f"f{i:04d}{e}" for i in range(first, last + 1) for e in (ext, ".png")]
-
-
 def films(tmp, scenes):
     started = time.monotonic()
     for system, s in SYSTEMS.items():
@@ -130,7 +131,7 @@ def films(tmp, scenes):
                      ranges("frames", 0, FRAMES - 1, 2))
         if not check(r.returncode == 0, f"(a) {system}: parallel: {r.stdout}{r.stderr}"):
             continue
-        same_files(one, many, frame_names(ext, 0, FRAMES - 1), f"(a) {system} film ({how} path)")
+        same_dirs(one, many, f"(a) {system} film ({how} path)")
         gifs = []
         for d in (one, many):
             gif = os.path.join(d, "film.gif")
@@ -173,6 +174,10 @@ def bands(tmp, scenes):
                      f"(b) {system}{kind}: prime stitch: {r.stderr}"):
                 check(open(out, "rb").read() == open(ref, "rb").read(),
                       f"(b) {system}{kind}: {n} bands stitched differ from one process's render")
+                if os.path.exists(ref + ".info"):  # a PRIME graph file's companion
+                    check(os.path.exists(out + ".info") and
+                          open(out + ".info", "rb").read() == open(ref + ".info", "rb").read(),
+                          f"(b) {system}{kind}: the stitched graph file's companion differs")
         if system != "malone":
             continue
         # What `prime stitch` refuses, so that a seam cannot pass unseen (Malone: cheapest).
@@ -230,27 +235,35 @@ def resume(tmp, scenes):
     p.send_signal(signal.SIGTERM)
     first_out = p.stdout.read()
     p.wait()
+    # A frame is done when each of its outputs has its record (written last).
     done = {}
-    for f in sidecars():
-        picture = os.path.join(d, f[:-len(".render")])
-        st = os.stat(picture)
-        done[f[:-len(".render")]] = (st.st_ino, st.st_mtime_ns)
+    for i in range(n):
+        files = [f"f{i:04d}{ext}", f"f{i:04d}.png"]
+        if all(os.path.exists(os.path.join(d, f + ".render")) for f in files):
+            done[i] = {f: os.stat(os.path.join(d, f)) for f in files}
     if not check(0 < len(done) < n, f"(c) the kill came after {len(done)} of {n} frames "
                  f"(parallel exit {p.returncode}): the test needs some frames done and some "
                  f"not\n{first_out}"):
         return time.monotonic() - started
     r = sh(command, input=jobs)
     check(r.returncode == 0, f"(c) the rerun: exit {r.returncode}: {r.stdout}{r.stderr}")
-    for name, (ino, mtime) in sorted(done.items()):
-        st = os.stat(os.path.join(d, name))
-        check((st.st_ino, st.st_mtime_ns) == (ino, mtime),
-              f"(c) {name}, done before the kill, was rendered again by the rerun")
-    names = frame_names(ext, 0, n - 1)
-    same_files(one, d, names, "(c) resumed film")
-    left = sorted(set(os.listdir(d)) - set(names) - {x + ".render" for x in names})
-    check(not left, f"(c) files left beside the frames after the kill and the rerun: {left}")
-    print(f"check_parallel: (c) killed after {len(done)} of {n} frames' files "
-          f"(parallel exit {p.returncode}); the rerun rendered the rest")
+    for i, files in sorted(done.items()):
+        for f, st in files.items():
+            now = os.stat(os.path.join(d, f))
+            check((now.st_ino, now.st_mtime_ns) == (st.st_ino, st.st_mtime_ns),
+                  f"(c) {f}, done before the kill, was written again by the rerun")
+    # Each process's summary: "frames A-B of PATH: R rendered, S done already (skipped)".
+    counts = [re.search(r"(\d+) rendered, (\d+) done already", line)
+              for line in r.stdout.splitlines()]
+    rendered = sum(int(m.group(1)) for m in counts if m)
+    skipped = sum(int(m.group(2)) for m in counts if m)
+    check((rendered, skipped) == (n - len(done), len(done)),
+          f"(c) the rerun rendered {rendered} and skipped {skipped} frames; {len(done)} of {n} "
+          f"were done: {r.stdout}")
+    # Everything one process writes, nothing else (no temporary file the kill left).
+    same_dirs(one, d, "(c) the resumed film")
+    print(f"check_parallel: (c) killed with {len(done)} of {n} frames done (parallel exit "
+          f"{p.returncode}); the rerun rendered {rendered}, skipped {skipped}")
     return time.monotonic() - started
 
 
@@ -282,7 +295,7 @@ def remote(tmp, scenes):
                  ["--threads", "1", "-q", "--no-window", "--out", "f%04d.ppm",
                   "--png", "f%04d.png"], ranges("frames", 0, FRAMES - 1, 1))
     if check(r.returncode == 0, f"(d) parallel --sshlogin: {r.stdout}{r.stderr}"):
-        same_files(one, d, frame_names(".ppm", 0, FRAMES - 1), "(d) frames through --sshlogin")
+        same_dirs(one, d, "(d) frames through --sshlogin")
         hosts = set(open(ssh + ".hosts").read().split()) if os.path.exists(ssh + ".hosts") else set()
         check(hosts == {"host1", "host2"}, f"(d) jobs went to {hosts}, not host1 and host2")
     return time.monotonic() - started
