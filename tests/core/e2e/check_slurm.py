@@ -118,9 +118,8 @@ def main():
             took = time.monotonic() - t0
             print(f"check_slurm: bands (4 tasks) and film (3 tasks), each with its finishing "
                   f"job, done in {took:.1f} s: {sorted(states.items())}")
-            if not check(states and all(s == "COMPLETED" for s in states.values()),
-                         f"jobs not all COMPLETED: {states}"):
-                job_logs(tmp)
+            check(states and all(s == "COMPLETED" for s in states.values()),
+                  f"jobs not all COMPLETED: {states}")
             same(f"{out}/plate2.scr", f"{ref}/plate2.scr", "stitched plate 2")
             for i in range(FRAMES):
                 for ext in (".ppm", ".png"):
