@@ -11,7 +11,8 @@ parallel (`parallel -j2`), each compared byte for byte with one process:
       (tools/cluster/ranges.sh bands) rendered with different --threads each
       (one PRIME picture of many rows), stitched by `prime stitch`, the same
       bytes as one process's render; PNG pieces too; and `prime stitch`
-      refuses a gap, an overlap and a piece of another render, writing nothing;
+      refuses a gap, an overlap, a piece of another render and a piece whose
+      bytes changed after its record, writing nothing;
   (c) resume: a film's parallel run killed (SIGTERM to parallel) once its
       first frames are done, then run again as written: the frames done before
       the kill are not rendered again (same inode and mtime), the others are,
@@ -47,7 +48,7 @@ FRAMES = 4  # frames of each system's film
 # system -> scene, --out extension, size of the film's frames, of the banded picture
 SYSTEMS = {
     "prime": {"scene": os.path.join(ROOT, "scenes/prime/plate2"), "ext": ".scr",
-              "film": (24, 18), "bands": (24, 160), "n": 5},
+              "film": (24, 18), "bands": (40, 769), "n": 7},
     "malone": {"scene": os.path.join(ROOT, "scenes/malone/doc-sphere.mal"), "ext": ".ppm",
                "film": (24, 18), "bands": (32, 24), "n": 4},
     "cgl": {"scene": os.path.join(ROOT, "scenes/cgl/ball.cgl"), "ext": ".rle",
@@ -201,6 +202,15 @@ def bands(tmp, scenes):
             check(r.returncode != 0 and not os.path.exists(refused),
                   f"(b) stitch of a piece of another render (--max-depth 2): exit "
                   f"{r.returncode}, {r.stderr}")
+        changed = os.path.join(d, "changed" + ext)  # band 1, its bytes changed after the fact
+        shutil.copy(pieces[1], changed)
+        shutil.copy(pieces[1] + ".render", changed + ".render")
+        data = bytearray(open(changed, "rb").read())
+        data[len(data) // 2] ^= 0xFF
+        open(changed, "wb").write(bytes(data))
+        r = run(["stitch", refused, pieces[0], changed] + pieces[2:])
+        check(r.returncode != 0 and not os.path.exists(refused),
+              f"(b) stitch of a piece changed after its record: exit {r.returncode}, {r.stderr}")
     return time.monotonic() - started
 
 
