@@ -35,6 +35,7 @@ PROGRAMS = {
     "python3": (["python3", "python3-minimal"], "the docs, tools and hand-check tests"),
     "cmake": (["cmake"], "the layout tests"),
     "parallel": (["parallel"], "GNU parallel: docs/cluster.md's recipes on local cores"),
+    "rsync": (["rsync"], "GNU parallel's --basefile/--return transfers (check_parallel)"),
     "munged": (["munge"], "the single-host Slurm's authentication (slurm_host.py)"),
     "slurmctld": (["slurmctld"], "the single-host Slurm's controller (slurm_host.py)"),
     "slurmd": (["slurmd"], "the single-host Slurm's node daemon (slurm_host.py)"),

@@ -17,9 +17,11 @@ parallel (`parallel -j2`), each compared byte for byte with one process:
       first frames are done, then run again as written: the frames done before
       the kill are not rendered again (same inode and mtime), the others are,
       and the film is the same bytes as one process's;
-  (d) the other machines' recipe (--sshlogin 1/host1,1/host2 --workdir DIR,
-      a shared filesystem), the hosts played by a stand-in ssh that runs
-      parallel's wrapped command here: the same frames as one process.
+  (d) the other machines' recipes, the hosts played by a stand-in ssh that
+      runs parallel's wrapped command here: --sshlogin 1/host1,1/host2
+      --workdir DIR on a shared filesystem, and without one (--basefile the
+      scene and path, --return each frame and its record, --cleanup, by
+      rsync): the same frames as one process.
 
 Sizes are tiny so that the whole runs in a few seconds in a release build and
 under AddressSanitizer within its timeout.
@@ -308,6 +310,33 @@ def remote(tmp, scenes):
         same_dirs(one, d, "(d) frames through --sshlogin")
         hosts = set(open(ssh + ".hosts").read().split()) if os.path.exists(ssh + ".hosts") else set()
         check(hosts == {"host1", "host2"}, f"(d) jobs went to {hosts}, not host1 and host2")
+    # Without a shared filesystem: the scene and the path sent (--basefile, by rsync over
+    # ssh) to a work directory on each host, one frame a job, its picture and record
+    # brought back (--return) and removed there (--cleanup).
+    if not check(shutil.which("rsync") is not None,
+                 "(d) rsync is not installed (GNU parallel's transfers; prime.sh installs it)"):
+        return time.monotonic() - started
+    d = os.path.join(tmp, "transfer")
+    os.mkdir(d)
+    shutil.copy(scenes["malone"], d)
+    shutil.copy(os.path.join(tmp, "malone-path.txt"), d)
+    work = os.path.join(tmp, "remote-work")
+    r = parallel(["--ssh", ssh, "--sshlogin", "1/host1,1/host2", "--workdir", work,
+                  "--basefile", os.path.basename(scenes["malone"]), "--basefile", "malone-path.txt",
+                  "--return", 'f{=$_=sprintf("%04d",$_)=}.ppm',
+                  "--return", 'f{=$_=sprintf("%04d",$_)=}.ppm.render', "--cleanup",
+                  PRIME, "trace", os.path.basename(scenes["malone"]), "--camera-path",
+                  "malone-path.txt", "--frames", "{}", "--size"] + size +
+                 ["--threads", "1", "-q", "--no-window", "--out", "f%04d.ppm"],
+                 [f"{i}\n" for i in range(FRAMES)], cwd=d)
+    if check(r.returncode == 0, f"(d) parallel --basefile --return: {r.stdout}{r.stderr}"):
+        for i in range(FRAMES):
+            for f in (f"f{i:04d}.ppm", f"f{i:04d}.ppm.render"):
+                a, b = os.path.join(one, f), os.path.join(d, f)
+                check(os.path.isfile(b) and open(a, "rb").read() == open(b, "rb").read(),
+                      f"(d) {f} returned by --return differs from one process's (or is missing)")
+        left = os.listdir(work) if os.path.isdir(work) else []
+        check(not left, f"(d) --cleanup left {left} in the hosts' work directory")
     return time.monotonic() - started
 
 
