@@ -214,7 +214,8 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
         return subprocess.run(args, env=kw.pop("env", self.env), **kw)
 
     def job_states(self, job_ids):
-        """{job id or array element id: STATE} from scontrol (no accounting here)."""
+        """{job id or array element id: STATE} from scontrol (no accounting here); a job
+        whose dependency failed, pending for ever, is NEVER."""
         states = {}
         for job in job_ids:
             r = self.run(["scontrol", "-o", "show", "job", str(job)])
@@ -223,7 +224,10 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
                 jid = fields.get("JobId", "?")
                 if "ArrayTaskId" in fields:
                     jid = f"{fields.get('ArrayJobId', jid)}_{fields['ArrayTaskId']}"
-                states[jid] = fields.get("JobState", "?")
+                state = fields.get("JobState", "?")
+                if state == "PENDING" and fields.get("Reason") == "DependencyNeverSatisfied":
+                    state = "NEVER"  # its dependency failed: it will never run (final here)
+                states[jid] = state
         return states
 
     def wait(self, job_ids, timeout=120.0):
