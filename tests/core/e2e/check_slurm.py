@@ -14,9 +14,10 @@ picture, every frame and the GIF byte for byte with one process's render.
 Then resubmits the film as written: every frame is skipped (its .render
 sidecar matches), none is rendered again.
 
-Slurm needs root here (its daemons run as root) and the Debian packages
-slurm-wlm and munge (prime.sh installs them). Without them this test FAILS,
-saying why: it never passes without having run Slurm.
+Slurm needs the Debian packages munge, slurmctld, slurmd and slurm-client
+(prime.sh installs them); not root: its daemons run as the user running the
+test. Without them this test FAILS, saying why: it never passes without having
+run Slurm.
 
 Run: check_slurm.py PRIME_EXE REPO_ROOT
 """

@@ -10,14 +10,16 @@ Everything lives in one temporary directory: a fresh munge key, munged with its
 own socket, pid, log and seed files; a slurm.conf for one node (this host's
 `hostname -s`, CPUs = nproc) with its state, spool, pid and log files, and its
 own free TCP ports, so a Slurm already on the machine is neither used nor
-disturbed. The daemons run as root (Slurm's SlurmUser and SlurmdUser), which is
-why the caller must be root. `SLURM_CONF` in `slurm.env` points sbatch, squeue,
-sinfo and scontrol at this conf; no file outside the directory is written.
+disturbed. Root is not needed: every daemon runs as the user who runs the test
+(SlurmUser = SlurmdUser = that user, munged with that user's key), and so do
+the jobs (tried as root and as nobody). `SLURM_CONF` in `slurm.env` points
+sbatch, squeue, sinfo and scontrol at this conf; no file outside the directory
+is written.
 
 What the experiments on Debian 12 (slurm-wlm 22.05, munge 0.5.15) showed:
   - munged refuses a socket whose directories are not searchable by all
     ("execute permissions for all required"): the temporary directory is made
-    0755 (mkdtemp makes it 0700); the key is 0600 and owned by root.
+    0755 (mkdtemp makes it 0700); the key is 0600, the user's own.
   - `AuthInfo=socket=PATH` points both the auth and the credential plugins
     (auth/munge, cred/munge) at that munged.
   - No cgroup: ProctrackType=proctrack/linuxproc, TaskPlugin=task/none,
@@ -32,6 +34,7 @@ killed. On failure the daemons' logs are printed (`SlurmHost.logs()`).
 Run by hand: python3 slurm_host.py   (starts, runs a 4-task array, prints times)
 """
 import os
+import pwd
 import shutil
 import signal
 import socket
@@ -41,8 +44,14 @@ import tempfile
 import time
 
 
+# Debian puts the daemons in /usr/sbin, which a user's PATH may lack.
+for _d in ("/usr/sbin", "/sbin"):
+    if _d not in os.environ.get("PATH", "").split(os.pathsep):
+        os.environ["PATH"] = os.environ.get("PATH", "") + os.pathsep + _d
+
+
 def _programs():
-    """The programs a single-host Slurm needs, found on PATH (root's has /usr/sbin)."""
+    """The programs a single-host Slurm needs, found on PATH (and /usr/sbin)."""
     return {
         "munged": shutil.which("munged"),        # munge
         "slurmctld": shutil.which("slurmctld"),  # slurmctld
@@ -55,9 +64,6 @@ def _programs():
 
 def unavailable():
     """None when a single-host Slurm can be started here, else why not."""
-    if os.geteuid() != 0:
-        return ("not root: slurmd and slurmctld run as root here (SlurmUser=root), "
-                "munged's key must be root's")
     missing = [n for n, p in _programs().items() if p is None]
     if missing:
         return ("not on PATH: " + ", ".join(missing) +
@@ -94,6 +100,7 @@ class SlurmHost:
         self.env = None
         self.ready_seconds = None
         self.node = socket.gethostname().split(".")[0]
+        self.user = pwd.getpwuid(os.geteuid()).pw_name
 
     # -- start ----------------------------------------------------------------
     def __enter__(self):
@@ -158,8 +165,8 @@ ClusterName=prime-test
 SlurmctldHost={self.node}(127.0.0.1)
 SlurmctldPort={ctld_port}
 SlurmdPort={slurmd_port}
-SlurmUser=root
-SlurmdUser=root
+SlurmUser={self.user}
+SlurmdUser={self.user}
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket={self.munge_socket}
