@@ -228,7 +228,7 @@ def resume(tmp, scenes):
     one, d = os.path.join(tmp, "resume-one"), os.path.join(tmp, "resume")
     os.mkdir(one)
     os.mkdir(d)
-    common = ["--camera-path", path, "--size", "64", "48", "--threads", "1", "--no-window"]
+    common = ["--camera-path", path, "--size", "480", "360", "--threads", "1", "--no-window"]
     r = run(["trace", scene, "--frames", f"0-{n - 1}", "--out", f"{one}/f%04d{ext}",
              "--png", f"{one}/f%04d.png", "-q"] + common)
     if not check(r.returncode == 0, f"(c) one process's frames: {r.stderr}"):
