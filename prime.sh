@@ -11,6 +11,8 @@ cd "$(dirname "$0")"
 PACKAGES=(cmake ninja-build g++ binutils pkg-config libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev libsdl2-dev libpng-dev libimagequant-dev libxxhash-dev nettle-dev clang libclang-rt-14-dev
           libfreetype-dev libfontconfig-dev fonts-dejavu-core   # the probe's text panel (palette/text)
+          libgif-dev                    # prime film's animated GIFs (palette/gif_film); its
+                                        # videos need ffmpeg, which is not installed here
           xvfb xauth x11-apps x11-utils xdotool   # window tests: an X server, xwd (x11-apps),
                                                   # xwininfo (x11-utils), key presses
           python3                       # the docs, tools and hand-check tests

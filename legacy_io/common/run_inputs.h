@@ -10,7 +10,10 @@
 // that does not exist yet cannot be an input. Outside a scope (unit tests
 // that write, read and rewrite the same file) nothing is recorded.
 #pragma once
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace prime::io {
 
@@ -27,6 +30,16 @@ class RunInputs {
 void protectInput(const std::string& path, const std::string& display = "");
 // The same for an already open file (readInputFile calls it with its fstat).
 void noteInput(unsigned long long device, unsigned long long inode, const std::string& display);
+// The same, with the bytes read (readInputFile calls it): their hash goes
+// into inputsDigest().
+void noteInputContent(unsigned long long device, unsigned long long inode,
+                      const std::string& display, const void* bytes, std::size_t size);
+// One hash of every input read whole so far in the current run (the hashes
+// of their bytes, sorted: neither the order of reading nor the names the
+// files were read by count), leaving out the files `excluding` names; 0
+// outside a scope. For the render records of films and bands (a frame or a
+// piece is of the same render when its scene's files hold the same bytes).
+std::uint64_t inputsDigest(const std::vector<std::string>& excluding = {});
 // Throws InputError naming both files if `output` resolves to an input of the
 // current run.
 void refuseIfInput(const std::string& output);

@@ -161,6 +161,12 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   RowCallbacks rowCallbacks;
   rowCallbacks.progress = callbacks.progress;
   rowCallbacks.abort = callbacks.abort;
+  // A band of the frame's rows from the top: render row r is the frame's
+  // row 511 - yhigh + r.
+  const int top = Frame::kSize - 1 - p.yhigh;
+  rowCallbacks.first = std::max(0, callbacks.firstRow - top);
+  rowCallbacks.last = callbacks.lastRow < 0 ? -1 : callbacks.lastRow - top;
+  if (callbacks.lastRow >= 0 && rowCallbacks.last < 0) rowCallbacks.first = rows;  // above it
   if (callbacks.rowDone)
     rowCallbacks.rowDone = [&](int row) {
       const int imageRow = Frame::kSize - 1 - (p.yhigh - row);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -19,32 +20,6 @@ namespace {
 
 // A camera file is a few lines; a megabyte is thousands of cameras.
 constexpr std::uint64_t kCameraFileCap = 1u << 20;
-
-// The number `text` names, read exactly (std::from_chars: the nearest double,
-// not through a long double as CLI11 reads); nullopt for anything else,
-// infinities and NaN included.
-std::optional<double> exactNumber(std::string_view text) {
-  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
-  double v = 0.0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v))
-    return std::nullopt;
-  return v;
-}
-
-std::optional<int> exactInt(std::string_view text) {
-  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
-  int v = 0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size()) return std::nullopt;
-  return v;
-}
-
-std::string numberText(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 // What each flag takes, for the command line and the file alike.
 struct FlagShape {
@@ -109,6 +84,32 @@ Vec3 vec(const std::vector<double>& v) {
 
 }  // namespace
 
+// The number `text` names, read exactly (std::from_chars: the nearest double,
+// not through a long double as CLI11 reads); nullopt for anything else,
+// infinities and NaN included.
+std::optional<double> exactNumber(std::string_view text) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  double v = 0.0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v))
+    return std::nullopt;
+  return v;
+}
+
+std::optional<int> exactInt(std::string_view text) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  int v = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::string numberText(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
 void addEyeFlag(CLI::App* cmd, CameraFlags& flags, const std::string& help) {
   addFlag(cmd, flags, kShapes[0], help);
 }
@@ -126,6 +127,86 @@ void addCameraFlags(CLI::App* cmd, CameraFlags& flags, const std::string& what, 
       ->type_name("FILE");
 }
 
+std::string textToAppendTo(const std::string& path, std::uint64_t cap, const std::string& what) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return "";
+  // Read as this run's own output, not as an input (which no output of the
+  // run may replace: the second C of a window would be refused).
+  std::ifstream in(path, std::ios::binary);
+  std::string text(static_cast<std::size_t>(cap) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!in.eof() && !in)
+    throw io::InputError(io::InputLocation{path}, "cannot read " + what + " to append to it");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > cap)
+    throw io::InputError(io::InputLocation{path}, "file size",
+                         "at most " + std::to_string(cap) + " bytes for " + what,
+                         "more: not appending to it");
+  if (!text.empty() && text.back() != '\n') text += '\n';
+  return text;
+}
+
+CameraLine splitCameraLine(const std::string& line) {
+  CameraLine out;
+  for (std::size_t i = 0; i < line.size();) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size()) break;
+    std::size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
+    out.words.push_back(line.substr(i, j - i));
+    out.columns.push_back(static_cast<int>(i) + 1);
+    i = j;
+  }
+  return out;
+}
+
+std::vector<std::pair<int, CameraLine>> cameraFileLines(const std::string& text) {
+  std::vector<std::pair<int, CameraLine>> lines;
+  int lineNo = 0;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    ++lineNo;
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    CameraLine words = splitCameraLine(line);
+    if (!words.words.empty()) lines.emplace_back(lineNo, std::move(words));
+  }
+  return lines;
+}
+
+CameraFlags parseCameraFlags(const CameraLine& line, const std::string& file, int lineNo,
+                             std::size_t first) {
+  const std::vector<std::string>& words = line.words;
+  CameraFlags cam;
+  for (std::size_t w = first; w < words.size();) {
+    io::InputLocation where{file, lineNo, std::nullopt, line.columns[w], static_cast<int>(w) + 1};
+    const FlagShape* shape = nullptr;
+    for (const FlagShape& s : kShapes)
+      if (words[w] == s.name) shape = &s;
+    if (shape == nullptr)
+      throw io::InputError(where, "flag", "one of --eye, --look-at, --up, --fov, --size",
+                           io::quotedWord(words[w], 40));
+    std::vector<std::string> values;
+    for (int k = 1; k <= shape->count; ++k) {
+      if (w + static_cast<std::size_t>(k) >= words.size())
+        throw io::InputError(where, shape->name, std::to_string(shape->count) + " values after it",
+                             std::to_string(k - 1));
+      values.push_back(words[w + static_cast<std::size_t>(k)]);
+    }
+    const std::string wrong = store(cam, *shape, values);
+    if (!wrong.empty()) {
+      std::string got;
+      for (const std::string& v : values) got += (got.empty() ? "" : " ") + v;
+      throw io::InputError(where, shape->name, wrong, io::quotedWord(got, 80));
+    }
+    w += static_cast<std::size_t>(shape->count) + 1;
+  }
+  return cam;
+}
+
 CameraFlags withCameraFile(const CameraFlags& flags) {
   if (flags.file.empty()) return flags;
   io::InputFileOptions options;
@@ -134,56 +215,12 @@ CameraFlags withCameraFile(const CameraFlags& flags) {
   const std::string text = io::normalizeLineBreaks(io::readInputText(flags.file, options));
   // The last camera line.
   CameraFlags fromFile;
-  int lineNo = 0, cameraLine = 0;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    ++lineNo;
-    std::string line = text.substr(start, end - start);
-    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    std::vector<std::string> words;
-    std::vector<int> columns;
-    for (std::size_t i = 0; i < line.size();) {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-      if (i >= line.size()) break;
-      std::size_t j = i;
-      while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
-      words.push_back(line.substr(i, j - i));
-      columns.push_back(static_cast<int>(i) + 1);
-      i = j;
-    }
-    if (!words.empty()) {
-      CameraFlags cam;
-      for (std::size_t w = 0; w < words.size();) {
-        io::InputLocation where{flags.file, lineNo, std::nullopt, columns[w],
-                                static_cast<int>(w) + 1};
-        const FlagShape* shape = nullptr;
-        for (const FlagShape& s : kShapes)
-          if (words[w] == s.name) shape = &s;
-        if (shape == nullptr)
-          throw io::InputError(where, "flag", "one of --eye, --look-at, --up, --fov, --size",
-                               io::quotedWord(words[w], 40));
-        std::vector<std::string> values;
-        for (int k = 1; k <= shape->count; ++k) {
-          if (w + static_cast<std::size_t>(k) >= words.size())
-            throw io::InputError(where, shape->name,
-                                 std::to_string(shape->count) + " values after it",
-                                 std::to_string(k - 1));
-          values.push_back(words[w + static_cast<std::size_t>(k)]);
-        }
-        const std::string wrong = store(cam, *shape, values);
-        if (!wrong.empty()) {
-          std::string got;
-          for (const std::string& v : values) got += (got.empty() ? "" : " ") + v;
-          throw io::InputError(where, shape->name, wrong, io::quotedWord(got, 80));
-        }
-        w += static_cast<std::size_t>(shape->count) + 1;
-      }
-      fromFile = cam;
-      cameraLine = lineNo;
-    }
-    start = end + 1;
+  int cameraLine = 0;
+  for (const auto& entry : cameraFileLines(text)) {
+    const int lineNo = entry.first;
+    const CameraLine& words = entry.second;
+    fromFile = parseCameraFlags(words, flags.file, lineNo, 0);
+    cameraLine = lineNo;
   }
   if (cameraLine == 0)
     throw io::InputError(io::InputLocation{flags.file}, "camera", "a line of camera flags",
@@ -215,25 +252,18 @@ FreeCameraSettings applyCameraFlags(const CameraFlags& flags, const FreeCameraSe
   return c;
 }
 
-std::string cameraFlagsText(const FreeCameraSettings& c) {
+std::string cameraFlagsText(const FreeCameraSettings& c, bool size) {
   auto v3 = [](const Vec3& v) {
     return numberText(v[0]) + " " + numberText(v[1]) + " " + numberText(v[2]);
   };
   return "--eye " + v3(c.eye) + " --look-at " + v3(c.lookAt) + " --up " + v3(c.up) + " --fov " +
-         numberText(c.fovY) + " --size " + std::to_string(c.width) + " " + std::to_string(c.height);
+         numberText(c.fovY) +
+         (size ? " --size " + std::to_string(c.width) + " " + std::to_string(c.height) : "");
 }
 
 void appendCamera(const std::string& path, const FreeCameraSettings& camera,
                   const std::string& comment) {
-  std::string text;
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec)) {
-    io::InputFileOptions options;
-    options.maxBytes = kCameraFileCap;
-    options.what = "a camera file";
-    text = io::readInputText(path, options);
-    if (!text.empty() && text.back() != '\n') text += '\n';
-  }
+  std::string text = textToAppendTo(path, kCameraFileCap, "a camera file");
   if (!comment.empty()) text += "# " + comment + "\n";
   text += cameraFlagsText(camera) + "\n";
   io::OutputFile out(path);

@@ -15,8 +15,11 @@
 // camera written by C renders the very frame it was written from.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "src/geom/free_camera.h"
@@ -45,6 +48,21 @@ void addCameraFlags(CLI::App* cmd, CameraFlags& flags, const std::string& what, 
 // --eye alone, with the system's own help text.
 void addEyeFlag(CLI::App* cmd, CameraFlags& flags, const std::string& help);
 
+// A camera file's line (after its comment is cut) split into words, with
+// each word's column (1-based), and the camera flags among its words from
+// `first` on. Throws io::InputError naming `file`, the line, the column and
+// the word for anything that is not a camera flag with its values.
+struct CameraLine {
+  std::vector<std::string> words;
+  std::vector<int> columns;
+};
+CameraLine splitCameraLine(const std::string& line);
+// Every line of a camera file's text (line breaks normalized) that holds a
+// word once its comment is cut, with its number (1-based).
+std::vector<std::pair<int, CameraLine>> cameraFileLines(const std::string& text);
+CameraFlags parseCameraFlags(const CameraLine& line, const std::string& file, int lineNo,
+                             std::size_t first);
+
 // The flags with --camera FILE's values filled in where the command line
 // gave none (the command line's win). Throws io::InputError naming the file,
 // line and word for anything that is not a camera.
@@ -56,9 +74,22 @@ CameraFlags withCameraFile(const CameraFlags& flags);
 // cannot be a camera (the look-at point at the eye, ...), naming the flag.
 FreeCameraSettings applyCameraFlags(const CameraFlags& flags, const FreeCameraSettings& own);
 
-// The camera as the five flags, each number in the shortest text that reads
-// back to the same double.
-std::string cameraFlagsText(const FreeCameraSettings& camera);
+// The camera as the five flags (four without `size`), each number in the
+// shortest text that reads back to the same double.
+std::string cameraFlagsText(const FreeCameraSettings& camera, bool size = true);
+
+// The number `text` names, read exactly (std::from_chars: the nearest
+// double); nullopt for anything else, infinities and NaN included. And the
+// shortest text that reads back to the same double.
+std::optional<double> exactNumber(std::string_view text);
+std::optional<int> exactInt(std::string_view text);
+std::string numberText(double v);
+
+// What a file holds that a window appends to (a camera file, a camera
+// path): its text, ending in a line break, or "" when it does not exist;
+// read as an output of the run (not recorded as an input). Throws
+// io::InputError naming the file when it is larger than `cap`.
+std::string textToAppendTo(const std::string& path, std::uint64_t cap, const std::string& what);
 
 // Appends `camera` (after a `# comment` line, if any) to the camera file
 // `path`, writing the whole file anew (io::OutputFile: all or nothing).

@@ -19,6 +19,7 @@ void addErrataCommand(CLI::App& app, Action& action);    // cmd_errata.cpp
 void addPlate1Command(CLI::App& app, Action& action);    // cmd_plate1.cpp
 void addStressCommand(CLI::App& app, Action& action);    // cmd_stress.cpp
 void addQuantizeCommand(CLI::App& app, Action& action);  // cmd_quantize.cpp (every system's PNG)
+void addFilmCommand(CLI::App& app, Action& action);      // cmd_film.cpp (PNG frames: GIF, video)
 void addCheckCommand(CLI::App& app, Action& action);     // cmd_check.cpp
 void addNewCommand(CLI::App& app, Action& action);       // cmd_new.cpp
 void addCompareCommand(CLI::App& app, Action& action);   // cmd_compare.cpp

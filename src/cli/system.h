@@ -9,8 +9,10 @@
 // row in systems() (src/cli/systems.cpp).
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -39,6 +41,14 @@ struct TraceFlags {
   bool quiet = false;         // -q
   bool timings = false;       // --timings (hidden: the benchmark scripts')
   LiveOptions live;           // --no-window --zoom --fullscreen --scale --pace --no-wait
+  // Films and bands (docs/user-guide.md, "Films and bands").
+  std::string cameraPath;  // --camera-path FILE: every frame's camera
+  std::string frames;      // --frames FIRST-LAST of the path
+  std::string rows;        // --rows FIRST-LAST of the picture, from its top
+  // Given by the system's part: its camera flags (each frame's camera goes
+  // there) and the names of its own outputs (patterns under --frames).
+  CameraFlags* camera = nullptr;
+  std::vector<std::string*> ownOutputs;
 };
 
 // One render of one system, driven by the shared skeleton (runTrace): check
@@ -81,6 +91,27 @@ class TraceJob {
   virtual void summary(const std::vector<std::string>& written) const = 0;
   virtual void timings() const {}  // --timings
   virtual double seconds() const = 0;
+  // The picture's rows (after load()): what --rows counts, from the top.
+  virtual int pictureRows() const = 0;
+  // The rows of the file `output` names (its flag) that picture rows
+  // first .. last fill, and the file's rows: the same rows unless the file
+  // places the picture on a screen (PRIME's --png). After load().
+  struct FileRows {
+    int first = 0, last = -1, rows = 0;
+  };
+  virtual FileRows fileRows(const std::string& output, int first, int last) const {
+    (void)output;
+    return {first, last, pictureRows()};
+  }
+  // --rows: only picture rows first .. last are rendered (render() hands
+  // them to the system's render as PictureCallbacks::firstRow, lastRow).
+  void setBand(int first, int last) {
+    firstRow_ = first;
+    lastRow_ = last;
+  }
+
+ protected:
+  int firstRow_ = 0, lastRow_ = -1;
 };
 
 using TraceFactory = std::function<std::unique_ptr<TraceJob>()>;
@@ -106,6 +137,26 @@ struct ProbeReport {
 };
 
 using ProbeFactory = std::function<ProbeReport()>;
+
+// ---- stitch ------------------------------------------------------------------
+
+// A picture file as rows of equal size, for `prime stitch`: the bytes before
+// the rows, then `rows` rows of `rowBytes` bytes (the file's own bytes where
+// the format is plain rows; decoded where it is not).
+struct RowPicture {
+  std::vector<std::uint8_t> head;
+  std::size_t rowBytes = 0;
+  int rows = 0;
+  std::vector<std::uint8_t> pixels;  // rows * rowBytes
+};
+
+// One kind of picture file as stitch reads and writes it. write() writes
+// `path` all or nothing; `piece` is one of the pieces (PRIME copies its
+// companion's settings). Both throw io::InputError naming the file.
+struct PieceKind {
+  RowPicture (*read)(const std::string& path);
+  void (*write)(const std::string& path, const RowPicture& picture, const std::string& piece);
+};
 
 // ---- the systems -------------------------------------------------------------
 
@@ -138,6 +189,10 @@ struct System {
   // walk's system part (src/cli/walk.h): the system's own flags (its camera
   // flags among them) and the scene to walk. Null: the system has no walk.
   WalkFactory (*walk)(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);
+  // stitch's system part: the kind of the pieces its own output flag
+  // (RenderRecord::output: "--out", "--ppm", "--rle") writes; null for a
+  // flag that is not its own (the PNGs are every system's). Null: none.
+  const PieceKind* (*pieceKind)(const std::string& output);
 };
 
 // Every system, PRIME first (the default for a directory or nothing).
@@ -158,13 +213,29 @@ void addExportPovVerb(CLI::App& app, Action& action, const System& system);
 void addExportVerb(CLI::App& app, Action& action, const System& system);
 void addViewVerb(CLI::App& app, Action& action, const System& system);
 void addWalkVerb(CLI::App& app, Action& action, const System& system);  // src/cli/walk.cpp
+void addPathVerb(CLI::App& app, Action& action, const System& system);  // src/cli/film.cpp
 
 // For the verbs: --format (checked; systemFor() read it before parsing), and
 // the help's last lines naming whose options these are.
 void addFormatOption(CLI::App* cmd, const std::string& what);
 std::string systemFooter(const System& system, const std::string& verb);
 
-// The shared skeleton of `prime trace`.
-int runTrace(TraceJob& job, const TraceFlags& flags);
+// What a film's frame or a band's piece records beside its pictures
+// (src/cli/render_record.h); null for a plain render.
+struct RecordContext {
+  std::string system;
+  std::string settings;  // every setting that changes pixels, as text
+  std::string camera;    // the frame's camera, as flags ("" for none)
+  std::optional<int> frame;
+  std::vector<std::string> notInputs;  // files read that are not the scene's (the path)
+};
+
+// The shared skeleton of `prime trace`. With `record`, a frame whose
+// outputs are recorded as done is skipped (returns 0 and sets *skipped).
+int runTrace(TraceJob& job, const TraceFlags& flags, const RecordContext* record = nullptr,
+             bool* skipped = nullptr);
+
+// `prime stitch OUT PIECE...` (src/cli/stitch.cpp).
+void addStitchCommand(CLI::App& app, Action& action);
 
 }  // namespace prime::cli

@@ -11,6 +11,8 @@
 
 #include "legacy_io/common/output_file.h"
 #include "palette/window/live_frame.h"
+#include "src/cli/camera_path_file.h"
+#include "src/cli/film.h"
 #include "src/cli/option_values.h"
 #include "src/cli/step.h"
 #include "src/cli/system.h"
@@ -147,13 +149,32 @@ void checkOutputs(const TraceJob& job) {
 
 }  // namespace
 
-int runTrace(TraceJob& job, const TraceFlags& flags) {
+int runTrace(TraceJob& job, const TraceFlags& flags, const RecordContext* record, bool* skipped) {
   checkOutputs(job);
   std::optional<Step> step;
   step.emplace("reading " + job.scene());
   job.load();
   // Again now that the inputs are known: none may be an output.
   checkOutputs(job);
+  const bool band = !flags.rows.empty();
+  Range bandRows{0, job.pictureRows() - 1};
+  if (band) {
+    const Range rows = parseRange(flags.rows, "--rows", job.pictureRows() - 1);
+    bandRows = rows;
+    if (!flags.quantize.method.empty())
+      throw CLI::ValidationError(
+          "--rows",
+          "--quantize chooses its palette from the whole picture, which a band does "
+          "not have: render the pieces without it, stitch them (prime stitch), then "
+          "quantize the whole (prime quantize)");
+    job.setBand(rows.first, rows.last);
+  }
+  const bool records = record != nullptr && (band || record->frame);
+  const std::string render = records ? renderDigest(*record) : "";
+  if (records && record->frame && outputsDone(job, render)) {
+    if (skipped != nullptr) *skipped = true;
+    return 0;
+  }
   bool writes = job.writesWithoutOutputs();
   for (const TraceJob::Output& out : job.outputs()) writes = writes || !out.path.empty();
   if (!writes)  // said before the render, which Ctrl-C can then spare
@@ -174,6 +195,7 @@ int runTrace(TraceJob& job, const TraceFlags& flags) {
   }
   step.emplace("writing the picture of " + job.scene());
   const std::vector<std::string> written = job.write();
+  if (records) writeRecords(job, written, render, *record, bandRows);
   step.reset();
   if (!quiet) {
     job.summary(written);
@@ -216,12 +238,10 @@ void addTraceVerb(CLI::App& app, Action& action, const System& system) {
       ->group("");  // for the benchmark scripts
   auto live = std::shared_ptr<LiveOptions>(flags, &flags->live);
   addLiveWindowOptions(cmd, live, true);
+  addFilmOptions(cmd, *flags);
   const TraceFactory make = system.trace(cmd, flags);
-  cmd->callback([flags, make, &action] {
-    action = [flags, make] {
-      const std::unique_ptr<TraceJob> job = make();
-      return runTrace(*job, *flags);
-    };
+  cmd->callback([cmd, flags, make, &action, name = std::string(system.name)] {
+    action = [cmd, flags, make, name] { return runFilmOrTrace(cmd, *flags, make, name); };
   });
 }
 

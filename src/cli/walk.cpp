@@ -11,6 +11,7 @@
 #include "palette/window/live_rgb_frame.h"
 #include "palette/window/screen_window.h"
 #include "src/bench/measure.h"
+#include "src/cli/camera_path_file.h"
 #include "src/cli/pixel_inspector.h"
 #include "src/cli/system.h"
 #include "src/render/progressive.h"
@@ -77,6 +78,23 @@ void saveCamera(const WalkJob& job, const WalkFlags& flags, const WalkController
   cameraKey(ctl.view().camera(), comment, flags.cameraFile, "");
 }
 
+// K: the camera as a key of the scene's camera path.
+void addPathKey(const WalkJob& job, const WalkFlags& flags, const WalkController& ctl) {
+  const std::string file = flags.pathFile.empty() ? defaultPathFile(job.name) : flags.pathFile;
+  const WalkScene& scene = *job.scene;
+  try {
+    appendPathKey(file, ctl.view().camera(),
+                  "prime walk " + job.name + ", profile " +
+                      scene.profiles()[static_cast<std::size_t>(ctl.profile())]);
+    std::fprintf(stderr,
+                 "prime: key added to the camera path %s (prime trace %s --camera-path %s "
+                 "--out frame%%04d... renders it)\n",
+                 file.c_str(), job.name.c_str(), file.c_str());
+  } catch (const std::exception& err) {
+    std::fprintf(stderr, "prime: key not saved: %s\n", err.what());
+  }
+}
+
 int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags) {
   const WalkScene& scene = *job.scene;
   if (auto why = display::headlessReason(flags.live.noWindow))
@@ -126,7 +144,8 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
   std::fprintf(
       stderr,
       "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
-      "right-drag pan, I O wheel dolly, Home R reset,%s%s%s C camera, click a pixel: its rays; "
+      "right-drag pan, I O wheel dolly, Home R reset,%s%s%s C camera, K key of the camera path, "
+      "click a pixel: its rays; "
       "as in every "
       "window: S F12 screenshot, + - 1..8 zoom, F11 fullscreen, Esc quits\n",
       window.nativeId(), start.width, start.height, startLights.empty() ? "" : " L lights,",
@@ -178,6 +197,7 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
     if (e.letter == 'p') return ctl.nextProfile(), true;
     if (e.letter == 'v') return scene.paletteView() ? (ctl.togglePaletteView(), true) : false;
     if (e.letter == 'c') return saveCamera(job, flags, ctl, startLights), true;
+    if (e.letter == 'k') return addPathKey(job, flags, ctl), true;
     return false;  // the window's
   });
 
@@ -239,6 +259,9 @@ void addWalkVerb(CLI::App& app, Action& action, const System& system) {
       ->allow_extra_args(false);
   cmd->add_option("--camera-file", flags->cameraFile,
                   "Where the C key appends the camera (default: prime-cameras.txt here)");
+  cmd->add_option("--path-file", flags->pathFile,
+                  "The camera path the K key adds a key to (default: DIR/camera.path, or "
+                  "SCENE.path beside a scene file)");
   addLiveWindowOptions(cmd, std::shared_ptr<LiveOptions>(flags, &flags->live), false, false);
   if (system.walk == nullptr) {
     cmd->callback([&action, title = std::string(system.title)] {

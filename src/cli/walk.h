@@ -15,7 +15,8 @@
 // wheel dolly, Home or R resets, L cycles camera / light 1 / light 2 ... (a
 // selected light moves with the same keys and drags instead of the camera),
 // P switches the profile, V the palette view, C prints the camera as flags
-// and appends it to the camera file, a click on a pixel draws its rays
+// and appends it to the camera file, K adds it as a key to the scene's camera
+// path (src/cli/camera_path_file.h), a click on a pixel draws its rays
 // (src/cli/pixel_inspector.h; right click: away); as in every window: S F12 screenshot,
 // + - 1..8 zoom, F11 fullscreen, Esc quits.
 #pragma once
@@ -91,6 +92,7 @@ struct WalkFlags {
   bool logFrames = false;                       // --log-frames
   std::vector<double> pivot;                    // --pivot X Y Z
   std::string cameraFile = kDefaultCameraFile;  // --camera-file
+  std::string pathFile;                         // --path-file (default: beside the scene)
   // --no-window (walk then says it needs one), --zoom, --fullscreen, --scale
   LiveOptions live;
 };

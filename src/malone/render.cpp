@@ -18,6 +18,8 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   RowCallbacks rowCallbacks;
   rowCallbacks.progress = callbacks.progress;
   rowCallbacks.abort = callbacks.abort;
+  rowCallbacks.first = callbacks.firstRow;  // the raster's rows, from the top
+  rowCallbacks.last = callbacks.lastRow;
   if (callbacks.rowDone)
     rowCallbacks.rowDone = [&](int row) {
       callbacks.rowDone(

@@ -35,10 +35,15 @@ RowsRun renderRows(int rows, int threads,
                    const std::function<std::uint64_t(int row, int thread)>& renderRow,
                    const RowCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
+  // A band (the rows first .. last of a picture rendered in pieces): only
+  // those rows, each by the same call as in the whole picture.
+  const int first = std::clamp(callbacks.first, 0, rows);
+  const int end = callbacks.last < 0 ? rows : std::clamp(callbacks.last + 1, first, rows);
+  const int bandRows = end - first;
   RowsRun run;
-  run.threads = threadCount(threads, rows);
+  run.threads = threadCount(threads, bandRows);
 
-  std::atomic<int> nextRow{0}, rowsDone{0};
+  std::atomic<int> nextRow{first}, rowsDone{0};
   std::atomic<std::uint64_t> raysSoFar{0};
   std::mutex mutex;  // guards the finished-row queue and the first error
   std::condition_variable
@@ -50,7 +55,7 @@ RowsRun renderRows(int rows, int threads,
     for (;;) {
       if (callbacks.abort && callbacks.abort->load()) break;
       const int row = nextRow.fetch_add(1);
-      if (row >= rows) break;
+      if (row >= end) break;
       try {
         raysSoFar += renderRow(row, thread);
       } catch (const RowAborted&) {
@@ -59,7 +64,7 @@ RowsRun renderRows(int rows, int threads,
         {
           std::lock_guard lock(mutex);
           if (!error) error = std::current_exception();
-          nextRow = rows;  // stop everyone
+          nextRow = end;  // stop everyone
         }
         wake.notify_all();
         break;
@@ -68,7 +73,7 @@ RowsRun renderRows(int rows, int threads,
       {
         std::lock_guard lock(mutex);
         finished.push_back(row);
-        last = ++rowsDone == rows;
+        last = ++rowsDone == bandRows;
       }
       if (last) wake.notify_all();
     }
@@ -94,11 +99,11 @@ RowsRun renderRows(int rows, int threads,
     const auto now = std::chrono::steady_clock::now();
     if (callbacks.progress && (final || now - lastProgress >= std::chrono::milliseconds(200))) {
       lastProgress = now;
-      callbacks.progress(rowsDone.load(), rows, raysSoFar.load());
+      callbacks.progress(rowsDone.load(), bandRows, raysSoFar.load());
     }
   };
   auto stop = [&] {
-    return rowsDone.load() >= rows || error || (callbacks.abort && callbacks.abort->load());
+    return rowsDone.load() >= bandRows || error || (callbacks.abort && callbacks.abort->load());
   };
   for (;;) {
     {
@@ -113,7 +118,7 @@ RowsRun renderRows(int rows, int threads,
   if (error) std::rethrow_exception(error);
   report(true);
 
-  run.aborted = rowsDone.load() < rows;
+  run.aborted = rowsDone.load() < bandRows;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

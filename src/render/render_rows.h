@@ -25,6 +25,10 @@ struct RowCallbacks {
   std::function<void(int row)> rowDone;
   // Set by anyone (Esc, Ctrl-C): no new row is started.
   const std::atomic<bool>* abort = nullptr;
+  // Only rows first .. last (last < 0: to the end) are rendered: a band of a
+  // picture rendered in pieces (`prime trace --rows`). The others are not
+  // touched; progress counts the band's rows.
+  int first = 0, last = -1;
 };
 
 // Thrown by checkAbort inside a row: renderRows abandons the row (it is not
@@ -62,6 +66,10 @@ struct PictureCallbacks {
   // until render() returns.
   std::function<void(int row, std::span<const Pixel> pixels)> rowDone;
   const std::atomic<bool>* abort = nullptr;
+  // Only the picture's rows firstRow .. lastRow (from its top; lastRow < 0:
+  // to the bottom) are rendered, each exactly as in the whole picture; the
+  // others keep their initial value (`prime trace --rows`).
+  int firstRow = 0, lastRow = -1;
 };
 
 struct RowsRun {
@@ -79,11 +87,11 @@ int startThreads(std::vector<std::thread>& pool, int count, const std::function<
 // the rows, at least one.
 int threadCount(int requested, int rows);
 
-// Calls renderRow(row, thread) once for every row 0..rows-1 on
-// threadCount(threads, rows) threads; `thread` (0..threads-1) indexes the
-// caller's per-thread state (statistics, caches). renderRow returns the rays
-// it cast, for progress. The first exception stops all threads and is
-// rethrown here; RowAborted (checkAbort) only abandons its row.
+// Calls renderRow(row, thread) once for every row 0..rows-1 (or of the band
+// callbacks.first .. last) on threadCount(threads, rows in the band) threads; `thread`
+// (0..threads-1) indexes the caller's per-thread state (statistics, caches). renderRow returns the
+// rays it cast, for progress. The first exception stops all threads and is rethrown here;
+// RowAborted (checkAbort) only abandons its row.
 RowsRun renderRows(int rows, int threads,
                    const std::function<std::uint64_t(int row, int thread)>& renderRow,
                    const RowCallbacks& callbacks = {});

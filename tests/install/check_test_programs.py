@@ -115,7 +115,7 @@ def main():
                     shipped = True
                 # An update-alternatives link (/usr/sbin/slurmd -> slurmd-wlm): the file
                 # it resolves to is the package's.
-                where = shutil.which(name)
+                where = shutil.which(name, path=os.environ.get("PATH", "") + ":/usr/sbin:/sbin")
                 if r.returncode == 0 and where and os.path.realpath(where) in r.stdout.split("\n"):
                     shipped = True
             installed = subprocess.run(["dpkg-query", "-W", "-f=${Status}", pkgs[0]],

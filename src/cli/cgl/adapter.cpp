@@ -25,6 +25,7 @@ extern const System kSystem{"cgl",
                             addViewOptions,
                             isPicture,
                             translateCallStatement,
-                            addWalkOptions};
+                            addWalkOptions,
+                            pieceKind};
 
 }  // namespace prime::cli::cgl

@@ -160,6 +160,8 @@ class CglTrace : public TraceJob {
     prime::cgl::RenderCallbacks cb;
     cb.abort = live.abortFlag();
     cb.progress = live.progress();
+    cb.firstRow = firstRow_;
+    cb.lastRow = lastRow_;
     std::vector<std::uint32_t> row(Frame::kSize);
     if (live.windowed())
       cb.rowDone = [&](int imageRow, std::span<const Rgb> colours) {
@@ -209,6 +211,7 @@ class CglTrace : public TraceJob {
                 buildSeconds_, result_->run.seconds);
   }
   double seconds() const override { return result_->run.seconds; }
+  int pictureRows() const override { return Frame::kSize; }  // the whole frame (CGL-Q25)
 
  private:
   std::shared_ptr<CglOptions> o_;
@@ -228,13 +231,16 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   auto rle = std::make_shared<std::string>();
   auto raw = std::make_shared<std::string>();
   addCglOptions(cmd, *o);
-  cmd->add_option("--rle", *rle,
+  cmd->add_option("--rle,--out", *rle,
                   "Write the picture run-length encoded, as the package did (-Dencode); "
-                  "Appendix 2's -o")
+                  "Appendix 2's -o (--out: the same, the system's own picture as every system "
+                  "names it)")
       ->check(outputName());
   cmd->add_option("--raw", *raw,
                   "Write the raw 512 x 512 x 32-bit frame (the build without encode)")
       ->check(outputName());
+  flags->camera = &o->camera;
+  flags->ownOutputs = {rle.get(), raw.get()};
   return [o, flags, rle, raw] { return std::make_unique<CglTrace>(o, flags, rle, raw); };
 }
 

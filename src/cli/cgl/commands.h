@@ -17,6 +17,7 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
 void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp
 void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
 WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);  // cmd_walk.cpp
+const PieceKind* pieceKind(const std::string& output);                               // stitch.cpp
 // export and view of its pictures (cmd_picture.cpp): RLE or raw frames.
 void addExportOptions(CLI::App* cmd, Action& action);
 void addViewOptions(CLI::App* cmd, Action& action);

@@ -23,6 +23,7 @@ extern const System kSystem{"malone",
                             nullptr,
                             nullptr,
                             nullptr,
-                            addWalkOptions};
+                            addWalkOptions,
+                            pieceKind};
 
 }  // namespace prime::cli::malone

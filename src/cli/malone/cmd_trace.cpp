@@ -96,6 +96,8 @@ class MaloneTrace : public TraceJob {
     prime::malone::RenderCallbacks cb;
     cb.abort = live.abortFlag();
     cb.progress = live.progress();
+    cb.firstRow = firstRow_;
+    cb.lastRow = lastRow_;
     const int width = scene_->viewer.xRes;
     std::vector<std::uint32_t> row(static_cast<std::size_t>(width));
     if (live.windowed())
@@ -147,6 +149,7 @@ class MaloneTrace : public TraceJob {
                 result_.run.seconds);
   }
   double seconds() const override { return result_.run.seconds; }
+  int pictureRows() const override { return scene_->viewer.yRes; }
 
  private:
   std::shared_ptr<MaloneOptions> o_;
@@ -164,8 +167,12 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
   auto o = std::make_shared<MaloneOptions>();
   auto ppm = std::make_shared<std::string>();
   addMaloneOptions(cmd, *o);
-  cmd->add_option("--ppm", *ppm, "Write the picture as a binary PPM (P6), as the original did")
+  cmd->add_option("--ppm,--out", *ppm,
+                  "Write the picture as a binary PPM (P6), as the original did (--out: the same, "
+                  "the system's own picture as every system names it)")
       ->check(outputName());
+  flags->camera = &o->camera;
+  flags->ownOutputs = {ppm.get()};
   return [o, flags, ppm] { return std::make_unique<MaloneTrace>(o, flags, ppm); };
 }
 

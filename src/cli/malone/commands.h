@@ -11,5 +11,6 @@ ProbeFactory addProbeOptions(CLI::App* cmd, const std::shared_ptr<ProbeFlags>& f
 void addBenchOptions(CLI::App* cmd, Action& action);      // cmd_bench.cpp
 void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
 WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);  // cmd_walk.cpp
+const PieceKind* pieceKind(const std::string& output);                               // stitch.cpp
 
 }  // namespace prime::cli::malone

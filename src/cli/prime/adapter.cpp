@@ -16,6 +16,6 @@ bool recognises(const std::string&, bool isFile, std::string_view) {
 extern const System kSystem{
     "prime",         "PRIME (1991)",      recognises,       addTraceOptions, addProbeOptions,
     addBenchOptions, addExportPovOptions, addExportOptions, addViewOptions,  nullptr,
-    nullptr,         addWalkOptions};
+    nullptr,         addWalkOptions,      pieceKind};
 
 }  // namespace prime::cli::prime_system

@@ -316,8 +316,12 @@ class PrimeTrace : public TraceJob {
     RenderCallbacks cb;
     cb.abort = live.abortFlag();
     cb.progress = live.progress();
-    // Quantizing replaces the indices after the render: written then.
-    if (!quantizing_) {
+    cb.firstRow = firstRow_;
+    cb.lastRow = lastRow_;
+    // Quantizing replaces the indices after the render: written then; a
+    // band's rows are not the file's first ones: written whole at the end.
+    const bool band = firstRow_ > 0 || lastRow_ >= 0;
+    if (!quantizing_ && !band) {
       io::GraphFile header;
       header.graphType = static_cast<std::int16_t>(settings.graphType);
       header.numPixAcross = static_cast<std::int16_t>(camera_->numPixAcross());
@@ -372,6 +376,28 @@ class PrimeTrace : public TraceJob {
     if (!quantizing_) noteOneIndex(result_);
   }
   double seconds() const override { return result_.seconds; }
+  int pictureRows() const override { return camera_->rows(); }
+  // The screen PNGs hold the picture where it sits on the screen (--png-area).
+  FileRows fileRows(const std::string& output, int first, int last) const override {
+    if (output != "--png" && output != "--png-8514" && output != "--true-color-png")
+      return {first, last, pictureRows()};
+    const int screenH = camera_->screenHeight();
+    int top = 0, rows = pictureRows();  // the file area: the graph's own rows
+    switch (areaOf(*display_)) {
+      case ImageArea::Screen:
+        top = at_.top;
+        rows = screenH;
+        break;
+      case ImageArea::Image:  // the picture clipped to the screen
+        top = std::min(at_.top, 0);
+        rows = std::min(screenH, at_.top + pictureRows()) - std::max(0, at_.top);
+        break;
+      case ImageArea::File:
+        break;
+    }
+    const int a = std::max(0, first + top), b = std::min(rows - 1, last + top);
+    return {a, b, rows};
+  }
 
  private:
   std::shared_ptr<std::string> dir_;
@@ -408,6 +434,8 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
       "--palette implies)");
   addDacOption(cmd, *display);
   addRenderOptions(cmd, *options);
+  flags->camera = &options->camera.flags;
+  flags->ownOutputs = {out.get()};
   return [dir, out, options, display, flags] {
     return std::make_unique<PrimeTrace>(dir, out, options, display, flags);
   };

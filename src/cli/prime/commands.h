@@ -13,5 +13,6 @@ void addExportPovOptions(CLI::App* cmd, Action& action);  // cmd_export_pov.cpp
 void addExportOptions(CLI::App* cmd, Action& action);     // cmd_export.cpp: graph file -> PNG
 void addViewOptions(CLI::App* cmd, Action& action);       // cmd_view.cpp
 WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>& flags);  // cmd_walk.cpp
+const PieceKind* pieceKind(const std::string& output);                               // stitch.cpp
 
 }  // namespace prime::cli

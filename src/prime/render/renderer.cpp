@@ -188,6 +188,8 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
   RowCallbacks rowCallbacks;
   rowCallbacks.progress = callbacks.progress;
   rowCallbacks.abort = callbacks.abort;
+  rowCallbacks.first = callbacks.firstRow;  // row i is the picture's row i from the top
+  rowCallbacks.last = callbacks.lastRow;
   if (callbacks.rowDone)
     rowCallbacks.rowDone = [&](int i) {
       const auto* first = &result.graph.pixels[static_cast<std::size_t>(i) * columns];

@@ -141,5 +141,41 @@ TEST(RenderRows, CheckAbortThrowsOnlyWhenSet) {
   EXPECT_THROW(checkAbort(&flag), RowAborted);
 }
 
+// A band (prime trace --rows): exactly its rows, each once, on any number of
+// threads; progress counts the band's rows; a band outside the picture is empty.
+TEST(RenderRows, BandRendersOnlyItsRows) {
+  for (const int threads : {1, 2, 5}) {
+    std::vector<std::atomic<int>> calls(40);
+    RowCallbacks cb;
+    cb.first = 7;
+    cb.last = 19;
+    int lastDone = -1, lastTotal = -1;
+    cb.progress = [&](int done, int total, std::uint64_t) {
+      lastDone = done;
+      lastTotal = total;
+    };
+    const RowsRun run = renderRows(
+        40, threads,
+        [&](int row, int) -> std::uint64_t {
+          ++calls[static_cast<std::size_t>(row)];
+          return 1;
+        },
+        cb);
+    EXPECT_FALSE(run.aborted);
+    for (int row = 0; row < 40; ++row)
+      EXPECT_EQ(calls[static_cast<std::size_t>(row)].load(), row >= 7 && row <= 19 ? 1 : 0)
+          << "row " << row << ", threads " << threads;
+    EXPECT_EQ(lastDone, 13);
+    EXPECT_EQ(lastTotal, 13);
+  }
+  RowCallbacks outside;
+  outside.first = 50;
+  int rendered = 0;
+  const RowsRun run = renderRows(
+      40, 2, [&](int, int) -> std::uint64_t { return ++rendered, 0; }, outside);
+  EXPECT_EQ(rendered, 0);
+  EXPECT_FALSE(run.aborted);
+}
+
 }  // namespace
 }  // namespace prime

@@ -155,9 +155,9 @@ TEST(PrimeCommand, HelpListsEveryCommandThroughTheTable) {
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_THAT(r.output, ::testing::Not(HasSubstr("internal error")));
   for (const char* c :
-       {"model",   "dump",       "trace", "probe",       "view",   "export",   "diff",
-        "palette", "export-pov", "bench", "plate1",      "stress", "quantize", "check",
-        "new",     "compare",    "walk",  "cgl-splines", "cook",   "tovector"})
+       {"model",   "dump",       "trace",   "probe",  "view",        "export",   "diff",
+        "palette", "export-pov", "bench",   "plate1", "stress",      "quantize", "film",
+        "check",   "new",        "compare", "walk",   "cgl-splines", "cook",     "tovector"})
     EXPECT_THAT(r.output, HasSubstr("\n  " + std::string(c) + " ")) << c;
 }
 
