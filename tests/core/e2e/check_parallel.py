@@ -241,13 +241,15 @@ def resume(tmp, scenes):
     p.stdin.write(jobs)
     p.stdin.close()
     end = time.monotonic() + 120
-    sidecars = lambda: [f for f in os.listdir(d) if f.endswith(ext + ".render")]
-    while not sidecars() and p.poll() is None and time.monotonic() < end:
+    def frame_done():  # a frame is done when each of its outputs has its record (written last)
+        names = set(os.listdir(d))
+        return any(f"f{i:04d}{ext}.render" in names and f"f{i:04d}.png.render" in names
+                   for i in range(n))
+    while not frame_done() and p.poll() is None and time.monotonic() < end:
         time.sleep(0.02)
     p.send_signal(signal.SIGTERM)
     first_out = p.stdout.read()
     p.wait()
-    # A frame is done when each of its outputs has its record (written last).
     done = {}
     for i in range(n):
         files = [f"f{i:04d}{ext}", f"f{i:04d}.png"]
