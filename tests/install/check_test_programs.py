@@ -42,6 +42,8 @@ PROGRAMS = {
     "sbatch": (["slurm-client"], "submitting docs/cluster.md's job arrays (submit.sh)"),
     "sinfo": (["slurm-client"], "the single-host Slurm's node state (slurm_host.py)"),
     "scontrol": (["slurm-client"], "the single-host Slurm's job states (slurm_host.py)"),
+    "squeue": (["slurm-client"], "the single-host Slurm's queue, emptied at its teardown"),
+    "scancel": (["slurm-client"], "the single-host Slurm's teardown: no job outlives it"),
 }
 # In every Debian root (Essential: yes) or brought by the clone itself.
 BASE = {

@@ -24,6 +24,7 @@ Run: check_slurm.py PRIME_EXE REPO_ROOT
 import math
 import os
 import shutil
+import signal
 import sys
 import tempfile
 import time
@@ -67,6 +68,9 @@ def job_logs(tmp):
 
 
 def main():
+    # A SIGTERM (ctest's timeout, a Ctrl-C'd make) unwinds through SlurmHost's teardown,
+    # so no daemon outlives the test; the waits above end well before ctest's TIMEOUT.
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     why = unavailable()
     if why:
         print(f"FAIL: Slurm cannot run here: {why}")
@@ -115,7 +119,7 @@ def main():
                 "PER_TASK": "2", "OUT": f"{out}/f%04d.ppm", "PNG": f"{out}/f%04d.png",
                 "FILM": f"{out}/film.gif", "FPS": "5"}, film_args)
             ids = list(bands.values()) + list(film.values())
-            states = slurm.wait(ids, timeout=300) if ids else {}
+            states = slurm.wait(ids, timeout=150) if ids else {}
             took = time.monotonic() - t0
             print(f"check_slurm: bands (4 tasks) and film (3 tasks), each with its finishing "
                   f"job, done in {took:.1f} s: {sorted(states.items())}")
@@ -133,7 +137,7 @@ def main():
                 "SCENE": malone, "CAMERA_PATH": path, "FIRST": "0", "LAST": str(FRAMES - 1),
                 "PER_TASK": "2", "OUT": f"{out}/f%04d.ppm", "PNG": f"{out}/f%04d.png"},
                 film_args)
-            states = slurm.wait(list(again.values()), timeout=120) if again else {}
+            states = slurm.wait(list(again.values()), timeout=60) if again else {}
             check(states and all(s == "COMPLETED" for s in states.values()),
                   f"resubmitted film: {states}")
             after = {f: os.stat(os.path.join(out, f)).st_mtime_ns for f in before}

@@ -27,7 +27,8 @@ What the experiments on Debian 12 (slurm-wlm 22.05, munge 0.5.15) showed:
   - `--ready-timeout` worth of polling `sinfo -h -o %T` until the node says
     idle; the node first shows unknown / down* for a second or two.
 
-The teardown (kill the daemons, then munged, then remove the directory) runs
+The teardown (scancel every job still there, stop the daemons, then munged,
+SIGKILL any job step of this Slurm left behind, remove the directory) runs
 however the block ends; a daemon that does not end on SIGTERM within 10 s is
 killed. On failure the daemons' logs are printed (`SlurmHost.logs()`).
 
@@ -59,6 +60,8 @@ def _programs():
         "sbatch": shutil.which("sbatch"),        # slurm-client, as the rest
         "sinfo": shutil.which("sinfo"),
         "scontrol": shutil.which("scontrol"),
+        "squeue": shutil.which("squeue"),
+        "scancel": shutil.which("scancel"),
     }
 
 
@@ -110,15 +113,19 @@ class SlurmHost:
         try:
             self._start()
         except BaseException:
-            self.logs(sys.stderr)
-            self.stop()
+            try:
+                self.logs(sys.stderr)
+            finally:
+                self.stop()
             raise
         return self
 
     def __exit__(self, kind, value, tb):
-        if kind is not None:
-            self.logs(sys.stderr)
-        self.stop()
+        try:
+            if kind is not None:
+                self.logs(sys.stderr)  # may fail too (a closed pipe): the teardown still runs
+        finally:
+            self.stop()
         return False
 
     def path(self, *parts):
@@ -258,7 +265,45 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
             print(f"--- {name} (last 25 lines)\n{tail}", file=out)
 
     # -- stop -----------------------------------------------------------------
+    def _cancel_jobs(self):
+        """Cancels every job still queued or running, and waits (10 s at most) for the queue
+        to empty, so that no job step outlives the daemons."""
+        if self.env is None or any(p.poll() is not None for p in self.procs.values()) \
+                or len(self.procs) < 2:
+            return
+        self.run(["scancel", "--user", self.user])
+        end = time.monotonic() + 10
+        while time.monotonic() < end:
+            r = self.run(["squeue", "-h", "-o", "%i"])
+            if r.returncode != 0 or not r.stdout.strip():
+                return
+            time.sleep(0.2)
+
+    def _kill_strays(self):
+        """SIGKILLs the job steps (slurmstepd, in sessions of their own) of this Slurm that
+        are still there: the processes holding a file of its directory open."""
+        if not self.dir:
+            return
+        for pid in os.listdir("/proc"):
+            if not pid.isdigit() or int(pid) == os.getpid():
+                continue
+            try:
+                if "slurmstepd" not in open(f"/proc/{pid}/cmdline", "rb").read().decode(
+                        errors="replace"):
+                    continue
+                fds = os.listdir(f"/proc/{pid}/fd")
+                mine = any(os.readlink(f"/proc/{pid}/fd/{fd}").startswith(self.dir + "/")
+                           for fd in fds)
+                if mine:
+                    os.kill(int(pid), signal.SIGKILL)
+            except OSError:
+                continue
+
     def stop(self):
+        try:
+            self._cancel_jobs()
+        except Exception as e:  # the teardown goes on whatever happens
+            print(f"slurm_host: cancelling the jobs: {e}", file=sys.stderr)
         for name in ("slurmd", "slurmctld"):
             proc = self.procs.pop(name, None)
             if proc is None or proc.poll() is not None:
@@ -280,6 +325,7 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
                 os.kill(pid, signal.SIGKILL)
             except ProcessLookupError:
                 pass
+        self._kill_strays()
         if self.dir and not self.keep:
             shutil.rmtree(self.dir, ignore_errors=True)
             self.dir = None
