@@ -56,14 +56,6 @@ SYSTEMS = {
     "cgl": {"scene": os.path.join(ROOT, "scenes/cgl/ball.cgl"), "ext": ".rle",
             "film": (24, 18), "bands": (32, 24), "n": 3},
 }
-# A hand-written orbit for when `prime path` is not there: eye, look-at, fov.
-ORBITS = {
-    "prime": ((500, 450, 500), 1700, 600, 45),
-    "malone": ((0, 0, 0), 4.5, 1, 35),
-    "cgl": ((0, 0, 0), 3.0, 0.5, 14),
-}
-
-
 def sh(args, **kw):
     kw.setdefault("capture_output", True)
     kw.setdefault("text", True)
@@ -85,21 +77,10 @@ def same_dirs(one, many, what, skip=("film.gif",)):
     return True
 
 
-def camera_path(system, scene, path):
-    """An orbit of FRAMES cameras: `prime path --orbit` if there is one, else by hand."""
-    r = run(["path", scene, "--orbit", str(FRAMES), "--out", path])
-    if r.returncode == 0 and os.path.isfile(path):
-        return "prime path"
-    import math
-    (cx, cy, cz), radius, height, fov = ORBITS[system]
-    with open(path, "w") as f:
-        f.write(f"# {FRAMES} keys about the scene, one a frame\nframes {FRAMES}\nloop\n")
-        for i in range(FRAMES):
-            a = 2 * math.pi * i / FRAMES
-            eye = (cx + radius * math.sin(a), cy + height, cz - radius * math.cos(a))
-            f.write("--eye %g %g %g --look-at %g %g %g --up 0 1 0 --fov %g\n"
-                    % (eye + (cx, cy, cz, fov)))
-    return "by hand"
+def camera_path(scene, path, frames=FRAMES):
+    """An orbit of FRAMES frames about the scene (prime path --orbit)."""
+    r = run(["path", scene, "--orbit", str(frames), "--out", path])
+    return check(r.returncode == 0 and os.path.isfile(path), f"prime path {scene}: {r.stderr}")
 
 
 def parallel(args, lines, **kw):
@@ -117,8 +98,9 @@ def films(tmp, scenes):
     started = time.monotonic()
     for system, s in SYSTEMS.items():
         scene, ext = scenes[system], s["ext"]
-        path = os.path.join(tmp, f"{system}-path.txt")
-        how = camera_path(system, scene, path)
+        path = os.path.join(tmp, f"{system}.path")
+        if not camera_path(scene, path):
+            continue
         one, many = os.path.join(tmp, f"{system}-film-one"), os.path.join(tmp, f"{system}-film-par")
         os.mkdir(one)
         os.mkdir(many)
@@ -134,7 +116,7 @@ def films(tmp, scenes):
                      ranges("frames", 0, FRAMES - 1, 2))
         if not check(r.returncode == 0, f"(a) {system}: parallel: {r.stdout}{r.stderr}"):
             continue
-        same_dirs(one, many, f"(a) {system} film ({how} path)")
+        same_dirs(one, many, f"(a) {system} film")
         gifs = []
         for d in (one, many):
             gif = os.path.join(d, "film.gif")
@@ -220,11 +202,9 @@ def resume(tmp, scenes):
     """(c): kill GNU parallel once frames are done, rerun the same command."""
     started = time.monotonic()
     scene, ext, n = scenes["prime"], ".scr", 8
-    path = os.path.join(tmp, "resume-path.txt")
-    global FRAMES
-    keep, FRAMES = FRAMES, n
-    camera_path("prime", scene, path)
-    FRAMES = keep
+    path = os.path.join(tmp, "resume.path")
+    if not camera_path(scene, path, n):
+        return time.monotonic() - started
     one, d = os.path.join(tmp, "resume-one"), os.path.join(tmp, "resume")
     os.mkdir(one)
     os.mkdir(d)
@@ -305,7 +285,7 @@ def remote(tmp, scenes):
     size = [str(v) for v in s["film"]]
     r = parallel(["--ssh", ssh, "--sshlogin", "1/host1,1/host2", "--workdir", d,
                   PRIME, "trace", scenes["malone"], "--camera-path",
-                  os.path.join(tmp, "malone-path.txt"), "--frames", "{}", "--size"] + size +
+                  os.path.join(tmp, "malone.path"), "--frames", "{}", "--size"] + size +
                  ["--threads", "1", "-q", "--no-window", "--out", "f%04d.ppm",
                   "--png", "f%04d.png"], ranges("frames", 0, FRAMES - 1, 1))
     if check(r.returncode == 0, f"(d) parallel --sshlogin: {r.stdout}{r.stderr}"):
@@ -321,14 +301,14 @@ def remote(tmp, scenes):
     d = os.path.join(tmp, "transfer")
     os.mkdir(d)
     shutil.copy(scenes["malone"], d)
-    shutil.copy(os.path.join(tmp, "malone-path.txt"), d)
+    shutil.copy(os.path.join(tmp, "malone.path"), d)
     work = os.path.join(tmp, "remote-work")
     r = parallel(["--ssh", ssh, "--sshlogin", "1/host1,1/host2", "--workdir", work,
-                  "--basefile", os.path.basename(scenes["malone"]), "--basefile", "malone-path.txt",
+                  "--basefile", os.path.basename(scenes["malone"]), "--basefile", "malone.path",
                   "--return", 'f{=$_=sprintf("%04d",$_)=}.ppm',
                   "--return", 'f{=$_=sprintf("%04d",$_)=}.ppm.render', "--cleanup",
                   PRIME, "trace", os.path.basename(scenes["malone"]), "--camera-path",
-                  "malone-path.txt", "--frames", "{}", "--size"] + size +
+                  "malone.path", "--frames", "{}", "--size"] + size +
                  ["--threads", "1", "-q", "--no-window", "--out", "f%04d.ppm"],
                  [f"{i}\n" for i in range(FRAMES)], cwd=d)
     if check(r.returncode == 0, f"(d) parallel --basefile --return: {r.stdout}{r.stderr}"):

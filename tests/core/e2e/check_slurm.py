@@ -21,7 +21,6 @@ run Slurm.
 
 Run: check_slurm.py PRIME_EXE REPO_ROOT
 """
-import math
 import os
 import shutil
 import signal
@@ -82,15 +81,9 @@ def main():
         if not check(r.returncode == 0, f"model plate 2: {r.stderr}"):
             return CHECKS.report("Slurm recipes")
         malone = os.path.join(ROOT, "scenes/malone/glass.mal")
-        path = os.path.join(tmp, "orbit.txt")
+        path = os.path.join(tmp, "orbit.path")
         r = run(["path", malone, "--orbit", str(FRAMES), "--out", path])
-        if r.returncode != 0:  # a camera path by hand: one camera a line
-            with open(path, "w") as f:
-                f.write(f"frames {FRAMES}\nloop\n")
-                for i in range(FRAMES):
-                    a = 2 * math.pi * i / FRAMES
-                    f.write("--eye %g 1 %g --look-at 0 0 0 --up 0 1 0 --fov 40\n"
-                            % (5 * math.sin(a), -5 * math.cos(a)))
+        check(r.returncode == 0, f"prime path: {r.stderr}")
         # One process: the references.
         ref = os.path.join(tmp, "ref")
         os.mkdir(ref)
