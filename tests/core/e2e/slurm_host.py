@@ -22,8 +22,10 @@ What the experiments on Debian 12 (slurm-wlm 22.05, munge 0.5.15) showed:
     0755 (mkdtemp makes it 0700); the key is 0600, the user's own.
   - `AuthInfo=socket=PATH` points both the auth and the credential plugins
     (auth/munge, cred/munge) at that munged.
-  - No cgroup: ProctrackType=proctrack/linuxproc, TaskPlugin=task/none,
-    no accounting, no job completion log.
+  - No cgroup: ProctrackType=proctrack/linuxproc, TaskPlugin=task/none.
+    Accounting, job completion, switch and MPI are not named: their defaults
+    are none already (checked: the same times without them), and a plugin name
+    is one more thing another Slurm release may not know.
   - `--ready-timeout` worth of polling `sinfo -h -o %T` until the node says
     idle; the node first shows unknown / down* for a second or two.
 
@@ -189,11 +191,6 @@ ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
-MpiDefault=none
-SwitchType=switch/none
-JobCompType=jobcomp/none
-JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
 ReturnToService=2
 MinJobAge=600
 SchedulerType=sched/builtin
