@@ -16,6 +16,10 @@ PACKAGES=(cmake ninja-build g++ binutils pkg-config libcli11-dev libgtest-dev li
           xvfb xauth x11-apps x11-utils xdotool   # window tests: an X server, xwd (x11-apps),
                                                   # xwininfo (x11-utils), key presses
           python3                       # the docs, tools and hand-check tests
+          parallel rsync                # GNU parallel: docs/cluster.md's recipes (check_parallel);
+                                        # rsync: its transfers to hosts without a shared filesystem
+          munge slurmctld slurmd slurm-client   # a single-host Slurm for docs/cluster.md's job
+                                        # arrays (check_slurm; Debian's slurm-wlm is these three)
           help2man groff-base)          # the man page (generated from the CLI) and its check
 # tests/install/check_test_programs.py fails when a program the tests run is
 # not provided by a package above.

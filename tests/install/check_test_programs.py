@@ -34,6 +34,16 @@ PROGRAMS = {
     "help2man": (["help2man"], "the man page"),
     "python3": (["python3", "python3-minimal"], "the docs, tools and hand-check tests"),
     "cmake": (["cmake"], "the layout tests"),
+    "parallel": (["parallel"], "GNU parallel: docs/cluster.md's recipes on local cores"),
+    "rsync": (["rsync"], "GNU parallel's --basefile/--return transfers (check_parallel)"),
+    "munged": (["munge"], "the single-host Slurm's authentication (slurm_host.py)"),
+    "slurmctld": (["slurmctld"], "the single-host Slurm's controller (slurm_host.py)"),
+    "slurmd": (["slurmd"], "the single-host Slurm's node daemon (slurm_host.py)"),
+    "sbatch": (["slurm-client"], "submitting docs/cluster.md's job arrays (submit.sh)"),
+    "sinfo": (["slurm-client"], "the single-host Slurm's node state (slurm_host.py)"),
+    "scontrol": (["slurm-client"], "the single-host Slurm's job states (slurm_host.py)"),
+    "squeue": (["slurm-client"], "the single-host Slurm's queue, emptied at its teardown"),
+    "scancel": (["slurm-client"], "the single-host Slurm's teardown: no job outlives it"),
 }
 # In every Debian root (Essential: yes) or brought by the clone itself.
 BASE = {
@@ -104,6 +114,11 @@ def main():
             for p in pkgs:
                 r = subprocess.run(["dpkg-query", "-L", p], capture_output=True, text=True)
                 if r.returncode == 0 and re.search(rf"/s?bin/{re.escape(name)}$", r.stdout, re.M):
+                    shipped = True
+                # An update-alternatives link (/usr/sbin/slurmd -> slurmd-wlm): the file
+                # it resolves to is the package's.
+                where = shutil.which(name, path=os.environ.get("PATH", "") + ":/usr/sbin:/sbin")
+                if r.returncode == 0 and where and os.path.realpath(where) in r.stdout.split("\n"):
                     shipped = True
             installed = subprocess.run(["dpkg-query", "-W", "-f=${Status}", pkgs[0]],
                                        capture_output=True, text=True).stdout
