@@ -73,9 +73,11 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
   // The outputs, each a pattern of the frame number.
   std::vector<std::string*> names = {&flags.png, &flags.trueColourPng, &flags.png8514};
   names.insert(names.end(), flags.ownOutputs.begin(), flags.ownOutputs.end());
+  // One frame may name its files as they are (a job of a band of frame K).
   std::vector<std::string> patterns;
   for (std::string* n : names) {
-    if (!n->empty()) checkFramePattern(*n);
+    if (!n->empty() && (range.count() > 1 || n->find('%') != std::string::npos))
+      checkFramePattern(*n);
     patterns.push_back(*n);
   }
   const CameraFlags original = cam;

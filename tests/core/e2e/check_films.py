@@ -155,6 +155,10 @@ with tempfile.TemporaryDirectory() as tmp:
                          (["--camera-path", "orbit.txt", "--frames", "40-60", "--png", "x%d.png"], "0-47")]:
         r = run(["trace", mal, "-q"] + args, d)
         check(r.returncode != 0 and needle in r.out, f"trace {' '.join(args)}: refused", r)
+    r = run(["trace", mal, "--camera-path", "orbit.txt", "--frames", "5", "--size", "16", "12",
+             "-q", "--png", "one.png"], d)
+    check(r.returncode == 0 and os.path.exists(os.path.join(d, "one.png.render")),
+          "one frame may name its file without a pattern", r)
     r = run(["trace", "plate3", "--camera-path", "film-prime/orbit.txt", "-q", "--png", "x%d.png"], tmp)
     check(r.returncode != 0 and "--out PATTERN" in r.out,
           "prime: a film needs --out PATTERN (a graph file every frame)", r)
