@@ -112,8 +112,8 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
       cam.up = {c.up[0], c.up[1], c.up[2]};
       cam.fov = c.fovY;
       const std::unique_ptr<TraceJob> job = make();
-      if (k == range.first && job->writesWithoutOutputs() && !flags.ownOutputs.empty() &&
-          flags.ownOutputs[0]->empty())
+      if (k == range.first && range.count() > 1 && job->writesWithoutOutputs() &&
+          !flags.ownOutputs.empty() && flags.ownOutputs[0]->empty())
         throw CLI::ValidationError("--frames", "needs --out PATTERN (frame%04d): " + system +
                                                    " writes its picture for every frame");
       record.frame = k;

@@ -531,8 +531,9 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
   ASSERT_EQ(run({PRIME_EXE, "model", s.path().string()}), 0);
   prime::test::TempScene out;  // outside the scene: a new file there would make it stale
   const std::string cameras = out.path("cameras.txt").string();
+  const std::string path = out.path("walk.path").string();
   ChildProcess walk({PRIME_EXE, "walk", s.path().string(), "--size", "96", "72", "--threads", "2",
-                     "--log-frames", "--camera-file", cameras},
+                     "--log-frames", "--camera-file", cameras, "--path-file", path},
                     env());
   ASSERT_TRUE(walk.waitForErr("frame 1 done", 60000)) << walk.err();
   const std::string id = windowId(walk.err());
@@ -548,6 +549,20 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
   clickTheMiddle(run, walk, id);
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "c"}), 0);
   ASSERT_TRUE(walk.waitForErr("camera appended to", 20000)) << walk.err();
+  // K twice: the view as the first two keys of a camera path (issue 34);
+  // a second press appends (the file is this run's output, not its input).
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "k"}), 0);
+  ASSERT_TRUE(walk.waitForErr("key added to the camera path", 20000)) << walk.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Left"}), 0);
+  ASSERT_TRUE(walk.waitForErr("frame " + std::to_string(++frame) + " done", 60000)) << walk.err();
+  const auto keyed = walk.err().size();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "k"}), 0);
+  ASSERT_TRUE(walk.readUntil(
+      [&](const std::string&, const std::string& e) {
+        return e.find("key added to the camera path", keyed) != std::string::npos;
+      },
+      20000))
+      << walk.err();
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(walk.wait(20000).value_or(-1), 0) << walk.err();
   // stdout holds the click's probe, then the flags; the file holds them too,
@@ -568,6 +583,22 @@ TEST_F(XvfbTest, WalkCameraKeyGivesFlagsThatReproduceTheFrame) {
   ASSERT_EQ(want.width, 96);
   ASSERT_EQ(want.height, 72);
   EXPECT_EQ(differingPixels(shown, want), 0u) << "the camera file did not give the walk's frame";
+  // The path's first frame is its first key, at the window's size: the frame shown.
+  std::ifstream pathIn(path);
+  const std::string pathText((std::istreambuf_iterator<char>(pathIn)),
+                             std::istreambuf_iterator<char>());
+  EXPECT_THAT(pathText, HasSubstr("size 96 72\n"));
+  std::size_t keys = 0;
+  for (std::size_t at = pathText.find("\nkey --eye "); at != std::string::npos;
+       at = pathText.find("\nkey --eye ", at + 1))
+    ++keys;
+  EXPECT_EQ(keys, 2u) << pathText;
+  ASSERT_EQ(run({PRIME_EXE, "trace", s.path().string(), "--camera-path", path, "--frames", "0",
+                 "--out", out.path("frame0.gr").string(), "--true-color-png",
+                 out.path("frame0.png").string(), "-q"}),
+            0);
+  EXPECT_EQ(differingPixels(shown, prime::readPng(out.path("frame0.png").string())), 0u)
+      << "the path's frame 0 is not the frame the walk showed when K was pressed";
 }
 
 // Malone's and CGL's walks: the same keys, and C's camera given to `trace
