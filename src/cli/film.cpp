@@ -142,9 +142,9 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
       }
       if (!flags.quiet) {
         const double eta = rendered > 0 ? renderSeconds / rendered * (n - done) : 0.0;
-        std::fprintf(stderr, "prime: frame %d (%d of %d): %s%s; ETA %s\n", k, done, n,
-                     wasDone ? "done already, skipped" : ("rendered in " + seconds(took)).c_str(),
-                     "", seconds(eta).c_str());
+        const std::string what = wasDone ? "done already, skipped" : "rendered in " + seconds(took);
+        std::fprintf(stderr, "prime: frame %d (%d of %d): %s; ETA %s\n", k, done, n, what.c_str(),
+                     seconds(eta).c_str());
       }
     }
   } catch (...) {

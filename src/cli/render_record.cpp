@@ -85,7 +85,9 @@ std::optional<RenderRecord> readRecord(const std::string& picture) {
       seen[0] = true;
     } else if (key == "xxh3") {
       std::string h;
-      if (!(words >> h) || h.size() != 16) bad("16 hex digits");
+      if (!(words >> h) || h.size() != 16 ||
+          h.find_first_not_of("0123456789abcdef") != std::string::npos)
+        bad("16 hex digits");
       r.hash = std::stoull(h, nullptr, 16);
       seen[1] = true;
     } else if (key == "render") {

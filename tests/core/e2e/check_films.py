@@ -217,6 +217,13 @@ with tempfile.TemporaryDirectory() as tmp:
         f.write(b"\x7f")
     r = run(["stitch", "s.ppm", "a.ppm", "b.ppm"], d)
     check(r.returncode != 0 and "b.ppm" in r.out and "changed" in r.out, "a changed piece is refused", r)
+    with open(os.path.join(d, "a.ppm.render"), "r+") as f:
+        text = f.read().replace("xxh3 ", "xxh3 zz", 1)
+        f.seek(0)
+        f.write(text)
+    r = run(["stitch", "s.ppm", "a.ppm", "b.ppm"], d)
+    check(r.returncode != 0 and "a.ppm.render:4" in r.out and "xxh3" in r.out,
+          "a damaged render record is refused naming its file, line and field", r)
     r = run(["trace", mal, "-q", "--rows", "0-9", "--quantize", "median-cut", "--png", "q.png"], d)
     check(r.returncode != 0 and "--quantize" in r.out and not os.path.exists(os.path.join(d, "q.png")),
           "--rows with --quantize is refused (the palette is the whole picture's)", r)
