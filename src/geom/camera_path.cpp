@@ -67,6 +67,10 @@ CameraKey CameraPath::at(int segment, double u) const {
   };
   const CameraKey k0 = key(segment - 1), k1 = key(segment), k2 = key(segment + 1),
                   k3 = key(segment + 2);
+  // At its ends a segment is its keys, exactly (not through the cubic's
+  // terms: 0 x a tangent that overflowed would be NaN).
+  if (u == 0.0) return k1;
+  if (u == 1.0) return k2;
   auto tangent = [](const Vec3& before, const Vec3& after) {
     return Vec3{(after[0] - before[0]) / 2, (after[1] - before[1]) / 2, (after[2] - before[2]) / 2};
   };
