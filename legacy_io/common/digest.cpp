@@ -19,24 +19,39 @@ std::string hex16(std::uint64_t value) {
   return buf;
 }
 
+struct Xxh3Stream::State {
+  XXH3_state_t* s = XXH3_createState();
+  ~State() { XXH3_freeState(s); }
+};
+
+Xxh3Stream::Xxh3Stream() : state_(std::make_unique<State>()) {
+  if (state_->s == nullptr) throw std::bad_alloc();
+  XXH3_64bits_reset(state_->s);
+}
+Xxh3Stream::~Xxh3Stream() = default;
+
+void Xxh3Stream::add(std::span<const std::uint8_t> bytes) {
+  XXH3_64bits_update(state_->s, bytes.data(), bytes.size());
+}
+
+std::uint64_t Xxh3Stream::digest() const {
+  return XXH3_64bits_digest(state_->s);
+}
+
 std::optional<FileDigest> fileXxh3(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  XXH3_state_t* state = XXH3_createState();
-  if (state == nullptr) throw std::bad_alloc();
-  XXH3_64bits_reset(state);
+  Xxh3Stream hash;
   FileDigest d;
   std::vector<char> buf(1 << 16);
   while (in) {
     in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
     const auto n = static_cast<std::size_t>(in.gcount());
-    XXH3_64bits_update(state, buf.data(), n);
+    hash.add({reinterpret_cast<const std::uint8_t*>(buf.data()), n});
     d.bytes += n;
   }
-  const bool failed = in.bad();
-  d.hash = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
-  if (failed) return std::nullopt;
+  if (in.bad()) return std::nullopt;
+  d.hash = hash.digest();
   return d;
 }
 

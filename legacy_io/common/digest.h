@@ -3,7 +3,9 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -14,6 +16,22 @@ inline std::uint64_t xxh3(std::string_view text) {
   return xxh3(text.data(), text.size());
 }
 std::string hex16(std::uint64_t value);
+
+// XXH3 of bytes handed over piece by piece, in order: the same as xxh3() of
+// all of them (a picture hashed as it is written, a file as it is read).
+class Xxh3Stream {
+ public:
+  Xxh3Stream();
+  ~Xxh3Stream();
+  Xxh3Stream(const Xxh3Stream&) = delete;
+  Xxh3Stream& operator=(const Xxh3Stream&) = delete;
+  void add(std::span<const std::uint8_t> bytes);
+  std::uint64_t digest() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 // The XXH3 and size of a file's bytes (an output of the run, read back:
 // not recorded as an input); nullopt when it cannot be read.
 struct FileDigest {

@@ -1,7 +1,5 @@
 #include "palette/prime/graph_info.h"
 
-#include <xxhash.h>
-
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -29,26 +27,7 @@ const char* graphHashName(GraphHashKind kind) {
 
 std::uint64_t graphHash(GraphHashKind kind, std::span<const std::uint8_t> bytes) {
   if (kind == GraphHashKind::Fnv1a64) return fnv1a64(bytes);
-  return XXH3_64bits(bytes.data(), bytes.size());
-}
-
-struct Xxh3Stream::State {
-  XXH3_state_t* s = XXH3_createState();
-  ~State() { XXH3_freeState(s); }
-};
-
-Xxh3Stream::Xxh3Stream() : state_(std::make_unique<State>()) {
-  if (state_->s == nullptr) throw std::bad_alloc();
-  XXH3_64bits_reset(state_->s);
-}
-Xxh3Stream::~Xxh3Stream() = default;
-
-void Xxh3Stream::add(std::span<const std::uint8_t> bytes) {
-  XXH3_64bits_update(state_->s, bytes.data(), bytes.size());
-}
-
-std::uint64_t Xxh3Stream::digest() const {
-  return XXH3_64bits_digest(state_->s);
+  return io::xxh3(bytes.data(), bytes.size());
 }
 
 std::string graphInfoPath(const std::string& graphPath) {

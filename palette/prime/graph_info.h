@@ -23,6 +23,7 @@
 #include <string>
 #include <string_view>
 
+#include "legacy_io/common/digest.h"
 #include "palette/prime/palettes.h"
 #include "palette/prime/screen.h"
 
@@ -36,20 +37,8 @@ const char* graphHashName(GraphHashKind kind);  // "xxh3-64", "fnv1a64": the fil
 std::uint64_t graphHash(GraphHashKind kind, std::span<const std::uint8_t> bytes);
 
 // XXH3 (64 bits, seed 0) of bytes handed over piece by piece, in order: the
-// same as graphHash(Xxh3_64, all of them).
-class Xxh3Stream {
- public:
-  Xxh3Stream();
-  ~Xxh3Stream();
-  Xxh3Stream(const Xxh3Stream&) = delete;
-  Xxh3Stream& operator=(const Xxh3Stream&) = delete;
-  void add(std::span<const std::uint8_t> bytes);
-  std::uint64_t digest() const;
-
- private:
-  struct State;
-  std::unique_ptr<State> state_;
-};
+// same as graphHash(Xxh3_64, all of them). The shared core's.
+using Xxh3Stream = io::Xxh3Stream;
 
 struct GraphInfo {
   std::uint64_t graphBytes = 0;  // the graph file's size

@@ -1,9 +1,8 @@
-// stitch's Malone part: the PPM (P6) that --ppm writes, as rows.
-#include <cctype>
-
-#include "legacy_io/common/error.h"
-#include "legacy_io/common/input_file.h"
+// stitch's Malone part: the PPM (P6) that --ppm writes, as rows, read and
+// written by Malone's own PPM code (legacy_io/malone/ppm.h): its bytes are
+// exact (a byte b read as b / 255 is written back as b).
 #include "legacy_io/common/output_file.h"
+#include "legacy_io/malone/ppm.h"
 #include "src/cli/malone/commands.h"
 
 namespace prime::cli::malone {
@@ -11,35 +10,16 @@ namespace prime::cli::malone {
 namespace {
 
 RowPicture readPpmRows(const std::string& path) {
-  io::InputFileOptions options;
-  options.what = "a PPM piece";
-  options.maxBytes = std::uint64_t{1} << 34;
-  const std::vector<std::uint8_t> bytes = io::readInputFile(path, options);
-  // P6, width, height, maxval, each after white space, then one white space.
-  std::size_t at = 0;
-  int fields[3] = {0, 0, 0};
-  auto bad = [&](const std::string& what) {
-    throw io::InputError({path, std::nullopt, at}, "PPM header", what, "something else");
-  };
-  if (bytes.size() < 2 || bytes[0] != 'P' || bytes[1] != '6') bad("P6");
-  at = 2;
-  for (int& f : fields) {
-    while (at < bytes.size() && std::isspace(bytes[at])) ++at;
-    if (at >= bytes.size() || !std::isdigit(bytes[at])) bad("a number");
-    while (at < bytes.size() && std::isdigit(bytes[at]) && f < 100000000)
-      f = f * 10 + (bytes[at++] - '0');
-  }
-  if (at >= bytes.size() || !std::isspace(bytes[at]) || fields[2] != 255) bad("maxval 255");
-  ++at;
+  const RgbImage raster = prime::malone::readPpm(path);
+  // The header ppmBytes writes, then the rows: the header is what is left
+  // before width x height x 3 bytes.
+  const std::vector<std::uint8_t> bytes = prime::malone::ppmBytes(raster);
   RowPicture p;
-  p.head.assign(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(at));
-  p.rowBytes = static_cast<std::size_t>(fields[0]) * 3;
-  p.rows = fields[1];
-  if (bytes.size() - at != p.rowBytes * static_cast<std::size_t>(p.rows))
-    throw io::InputError({path, std::nullopt, bytes.size()}, "pixels",
-                         std::to_string(p.rowBytes * static_cast<std::size_t>(p.rows)) + " bytes",
-                         std::to_string(bytes.size() - at) + " bytes");
-  p.pixels.assign(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end());
+  p.rowBytes = static_cast<std::size_t>(raster.width) * 3;
+  p.rows = raster.height;
+  const std::size_t head = bytes.size() - p.rowBytes * static_cast<std::size_t>(p.rows);
+  p.head.assign(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(head));
+  p.pixels.assign(bytes.begin() + static_cast<std::ptrdiff_t>(head), bytes.end());
   return p;
 }
 
