@@ -275,6 +275,10 @@ def resume(tmp, scenes):
 FAKE_SSH = """#!/bin/sh
 while [ $# -gt 0 ]; do case "$1" in -*) shift ;; *) break ;; esac; done
 echo "$1" >> "$0.hosts"
+# Each host its own home (a login's directory): what one host removes
+# (--cleanup of the basefiles) is not another's.
+home="$0-home-$1"
+mkdir -p "$home" && cd "$home" && export HOME="$home"
 shift
 [ "${1:-}" = -- ] && shift
 exec sh -c "$*"
@@ -311,7 +315,10 @@ def remote(tmp, scenes):
     os.mkdir(d)
     shutil.copy(scenes["malone"], d)
     shutil.copy(os.path.join(tmp, "malone.path"), d)
-    work = os.path.join(tmp, "remote-work")
+    # A work directory in each host's home: two hosts share no files (with one
+    # shared directory, the first host's --cleanup removed the basefiles from
+    # under the other's jobs).
+    work = "prime-work"
     r = parallel(["--ssh", ssh, "--sshlogin", "1/host1,1/host2", "--workdir", work,
                   "--basefile", os.path.basename(scenes["malone"]), "--basefile", "malone.path",
                   "--return", 'f{=$_=sprintf("%04d",$_)=}.ppm',
@@ -326,8 +333,10 @@ def remote(tmp, scenes):
                 a, b = os.path.join(one, f), os.path.join(d, f)
                 check(os.path.isfile(b) and open(a, "rb").read() == open(b, "rb").read(),
                       f"(d) {f} returned by --return differs from one process's (or is missing)")
-        left = os.listdir(work) if os.path.isdir(work) else []
-        check(not left, f"(d) --cleanup left {left} in the hosts' work directory")
+        for host in ("host1", "host2"):
+            w = os.path.join(f"{ssh}-home-{host}", work)
+            left = os.listdir(w) if os.path.isdir(w) else []
+            check(not left, f"(d) --cleanup left {left} in {host}'s work directory")
     return time.monotonic() - started
 
 
