@@ -279,6 +279,10 @@ echo "$1" >> "$0.hosts"
 # (--cleanup of the basefiles) is not another's.
 home="$0-home-$1"
 mkdir -p "$home" && cd "$home" && export HOME="$home"
+# A login sets SHELL to the user's shell; parallel's remote wrapper runs the job
+# with $SHELL, and without one ran nothing and still exited 0 (seen in CI, whose
+# environment has no SHELL).
+export SHELL=/bin/sh
 shift
 [ "${1:-}" = -- ] && shift
 exec sh -c "$*"
