@@ -75,6 +75,12 @@ std::uint64_t inputsDigest(const std::vector<std::string>& excluding) {
   return xxh3(hashes.data(), hashes.size() * sizeof(std::uint64_t));
 }
 
+void forgetInputsContent() {
+  Registry& r = registry();
+  std::lock_guard lock(r.mutex);
+  r.content.clear();
+}
+
 void protectInput(const std::string& path, const std::string& display) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))

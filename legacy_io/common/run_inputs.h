@@ -40,6 +40,11 @@ void noteInputContent(unsigned long long device, unsigned long long inode,
 // outside a scope. For the render records of films and bands (a frame or a
 // piece is of the same render when its scene's files hold the same bytes).
 std::uint64_t inputsDigest(const std::vector<std::string>& excluding = {});
+// Forgets the bytes read so far for inputsDigest (not the inputs: they stay
+// protected). PRIME's --model calls it after building the databases: a
+// render's digest is of what it read (the databases), the same whether this
+// run or an earlier one built them.
+void forgetInputsContent();
 // Throws InputError naming both files if `output` resolves to an input of the
 // current run.
 void refuseIfInput(const std::string& output);

@@ -58,37 +58,65 @@ std::optional<ImageArea> imageAreaFromName(std::string_view name) {
   return std::nullopt;
 }
 
-Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area) {
+std::vector<std::uint8_t> pngPalette(const Rgb8Table& colours) {
+  std::vector<std::uint8_t> out;
+  out.reserve(colours.size() * 3);
+  for (const Rgb8& c : colours) out.insert(out.end(), {c.r, c.g, c.b});
+  return out;
+}
+
+namespace {
+
+IndexedImage8 screenIndices(const Screen& screen, Rect area) {
   area = intersect(area, screen.bounds());
-  Image8 img = blank(area.w, area.h);
+  IndexedImage8 img;
+  img.width = area.w;
+  img.height = area.h;
+  img.indices.reserve(static_cast<std::size_t>(area.w) * static_cast<std::size_t>(area.h));
   for (int y = 0; y < area.h; ++y) {
-    const auto row = screen.row(area.y + y);
-    for (int x = 0; x < area.w; ++x)
-      set(img, x, y, colours[row[static_cast<std::size_t>(area.x + x)]]);
+    const auto row =
+        screen.row(area.y + y)
+            .subspan(static_cast<std::size_t>(area.x), static_cast<std::size_t>(area.w));
+    img.indices.insert(img.indices.end(), row.begin(), row.end());
   }
+  return img;
+}
+
+}  // namespace
+
+Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area) {
+  IndexedImage8 img = screenIndices(screen, area);
+  img.palette = pngPalette(colours);
+  return colourImage(img);
+}
+
+IndexedImage8 exportIndexed(const Screen& screen, const io::GraphFile& graph,
+                            std::size_t pixelsPresent, Placement at, const Rgb8Table& colours,
+                            ImageArea area) {
+  IndexedImage8 img;
+  switch (area) {
+    case ImageArea::Screen:
+      img = screenIndices(screen, screen.bounds());
+      break;
+    case ImageArea::File:
+      img.width = graph.width();
+      img.height = graph.height();
+      img.indices.resize(graph.pixels.size());
+      for (std::size_t i = 0; i < graph.pixels.size(); ++i)
+        img.indices[i] =
+            i < pixelsPresent ? static_cast<std::uint8_t>(graph.pixels[i] & 0xFF) : 0;  // Q12
+      break;
+    case ImageArea::Image:
+      img = screenIndices(screen, imageAreaOrThrow(screen.width(), screen.height(), graph, at));
+      break;
+  }
+  img.palette = pngPalette(colours);
   return img;
 }
 
 Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent,
                    Placement at, const Rgb8Table& colours, ImageArea area) {
-  switch (area) {
-    case ImageArea::Screen:
-      return screenImage(screen, colours, screen.bounds());
-    case ImageArea::File: {
-      Image8 img = blank(graph.width(), graph.height());
-      for (std::size_t i = 0; i < graph.pixels.size(); ++i) {
-        const int index = i < pixelsPresent ? (graph.pixels[i] & 0xFF) : 0;  // Q12
-        const int w = graph.width();
-        set(img, static_cast<int>(i % static_cast<std::size_t>(w)),
-            static_cast<int>(i / static_cast<std::size_t>(w)),
-            colours[static_cast<std::size_t>(index)]);
-      }
-      return img;
-    }
-    case ImageArea::Image:
-      break;
-  }
-  return screenImage(screen, colours, imageAreaOrThrow(screen.width(), screen.height(), graph, at));
+  return colourImage(exportIndexed(screen, graph, pixelsPresent, at, colours, area));
 }
 
 Rgb8 trueColour(const Rgb& c) {

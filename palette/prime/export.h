@@ -34,6 +34,14 @@ Image8 screenImage(const Screen& screen, const Rgb8Table& colours, Rect area);
 // image area is empty (the file lies entirely off the screen).
 Image8 exportImage(const Screen& screen, const io::GraphFile& graph, std::size_t pixelsPresent,
                    Placement at, const Rgb8Table& colours, ImageArea area);
+// The same picture as the screen holds it: its palette indices (each the
+// graph file's `value & 0xFF`, Q12), with `colours` as the 256-entry palette
+// (exportImage is this picture's colours).
+IndexedImage8 exportIndexed(const Screen& screen, const io::GraphFile& graph,
+                            std::size_t pixelsPresent, Placement at, const Rgb8Table& colours,
+                            ImageArea area);
+// The palette of an indexed PNG: the 256 colours in index order.
+std::vector<std::uint8_t> pngPalette(const Rgb8Table& colours);
 
 // One unquantised colour on an 8-bit display: each channel clamped to 0..1
 // and rounded to the nearest of 0..255; NaN is 0.

@@ -54,6 +54,7 @@ std::string formatGraphInfo(const GraphInfo& info) {
       s << "dac " << i << " " << int{e.r} << " " << int{e.g} << " " << int{e.b} << "\n";
     }
   }
+  for (const auto& [key, value] : info.text) s << "text " << key << ": " << value << "\n";
   return s.str();
 }
 
@@ -99,6 +100,16 @@ GraphInfo parseGraphInfo(std::string_view text, const std::string& fileName) {
     std::string_view line = text.substr(pos, end - pos);
     pos = end + 1;
     ++lineNo;
+    if (header && line.substr(0, 5) == "text ") {  // taken whole, '#' included
+      const std::size_t colon = line.find(": ", 5);
+      if (colon == std::string_view::npos || colon == 5)
+        throw io::InputError({fileName, lineNo}, "text", "'text KEYWORD: VALUE'",
+                             "'" + std::string(line) + "'");
+      info.text.emplace_back(std::string(line.substr(5, colon - 5)),
+                             std::string(line.substr(colon + 2)));
+      if (pos > text.size()) break;
+      continue;
+    }
     if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
     const std::vector<std::string> w = words(line);
@@ -182,7 +193,7 @@ GraphInfo parseGraphInfo(std::string_view text, const std::string& fileName) {
       e.b = number<std::uint8_t>(w[4], 0, 63, at, "dac blue");
       ++dacLines;
     } else {
-      throw io::InputError(at, "keyword", "graph, profile, screen, at, palette or dac",
+      throw io::InputError(at, "keyword", "graph, profile, screen, at, palette, dac or text",
                            "'" + w[0] + "'");
     }
     if (pos > text.size()) break;

@@ -15,6 +15,9 @@
 //   palette listing                      or: palette inline DESCRIPTION...
 //   dac 0 0 0 0                          with `inline` only: 256 lines
 //   ...                                  INDEX R G B, 0..63, in index order
+//   text Software: prime 1.0.0           what made the picture: the PNGs'
+//   text Scene: plate2                   tEXt chunks, KEYWORD: VALUE, one a
+//   ...                                  line, taken whole ('#' included)
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -22,6 +25,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "legacy_io/common/digest.h"
 #include "palette/prime/palettes.h"
@@ -49,6 +54,8 @@ struct GraphInfo {
   Placement at;
   Palette palette;       // name: a built-in name, or the inline table's description
   bool inline_ = false;  // the DAC entries are in the file (a quantized render)
+  // What made the picture (the render's provenance; none in older files).
+  std::vector<std::pair<std::string, std::string>> text;
 };
 
 // FNV-1a, 64 bits. `h` continues a hash: fnv1a64(b, fnv1a64(a)) is the hash

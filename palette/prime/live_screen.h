@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "palette/prime/dac.h"
+#include "palette/prime/export.h"
 #include "palette/prime/palettes.h"
 #include "palette/prime/screen.h"
 #include "palette/window/live_frame.h"
@@ -104,6 +105,14 @@ class LiveScreen : public LiveFrame {
     std::lock_guard lock(mutex_);
     return "palette " + palettes_[paletteIndex_].name + " (DAC " + std::string(dacTo8Name(dac_)) +
            ")";
+  }
+  bool indexed(IndexedImage8& out) const override {
+    std::lock_guard lock(mutex_);
+    out.width = screen_.width();
+    out.height = screen_.height();
+    out.indices.assign(screen_.pixels().begin(), screen_.pixels().end());
+    out.palette = pngPalette(present(palettes_[paletteIndex_].dac, dac_));
+    return true;
   }
   Palette palette() const {
     std::lock_guard lock(mutex_);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "palette/png_image.h"
 #include "palette/rect.h"
 #include "palette/window/window_module.h"
 
@@ -62,6 +63,10 @@ class LiveFrame {
   // What the window's title says about the frame ("palette listing (DAC
   // round)"), or nothing.
   virtual std::string describe() const { return {}; }
+  // Any thread: the whole picture as palette indices and the palette they
+  // are shown through, when the frame is one (PRIME's 8514/A screen): what
+  // a screenshot keeps. False for a true-colour frame.
+  virtual bool indexed(IndexedImage8&) const { return false; }
 };
 
 }  // namespace prime::display

@@ -384,22 +384,33 @@ struct ScreenWindow::Impl {
     return quit;
   }
 
+  // The S key: the frame at its own size (an 8514/A screen as its 256
+  // indices and palette, an indexed PNG; else its colours), not the window's
+  // scaled pixels; prime-screenshot-N.png, the first N not taken.
   std::string saveScreenshot() {
     fs::path path;
     for (int n = 1;; ++n) {
       path = fs::path(config.screenshotDir) / ("prime-screenshot-" + std::to_string(n) + ".png");
       if (!fs::exists(path)) break;
     }
-    Image8 img;
-    img.width = frameWidth;
-    img.height = frameHeight;
-    img.rgb.resize(frame.size() * 3);
-    for (std::size_t i = 0; i < frame.size(); ++i) {
-      img.rgb[3 * i] = static_cast<std::uint8_t>(frame[i] >> 16);
-      img.rgb[3 * i + 1] = static_cast<std::uint8_t>(frame[i] >> 8);
-      img.rgb[3 * i + 2] = static_cast<std::uint8_t>(frame[i]);
+    PngMeta meta = config.screenshot;
+    meta.aspectX = meta.aspectY = 1;
+    if (const std::string d = screen.describe(); !d.empty()) meta.text.push_back({"Display", d});
+    IndexedImage8 indexed;
+    if (screen.indexed(indexed)) {
+      writeIndexedPng(path.string(), indexed, meta);
+      return path.string();
     }
-    writePng(path.string(), img);
+    Image8 img;
+    img.width = screen.width();
+    img.height = screen.height();
+    img.rgb.resize(latest.size() * 3);
+    for (std::size_t i = 0; i < latest.size(); ++i) {
+      img.rgb[3 * i] = static_cast<std::uint8_t>(latest[i] >> 16);
+      img.rgb[3 * i + 1] = static_cast<std::uint8_t>(latest[i] >> 8);
+      img.rgb[3 * i + 2] = static_cast<std::uint8_t>(latest[i]);
+    }
+    writePng(path.string(), img, meta);
     return path.string();
   }
 };

@@ -47,6 +47,9 @@ struct WindowConfig {
   bool fullscreen = false;               // --fullscreen (F11 toggles)
   ScaleMode scale = ScaleMode::Integer;  // --scale: fullscreen and resized windows
   bool paced = false;                    // --pace: no row shown before setRowLimit
+  // What the S key's screenshots say made them (tEXt, pHYs); the frame's
+  // describe() is added as "Display".
+  PngMeta screenshot;
 };
 
 class ScreenWindow {

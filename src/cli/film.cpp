@@ -19,11 +19,14 @@ namespace {
 // Flags that change no pixel of any output: the outputs' names, threads,
 // the window, messages, and films' and bands' own.
 bool pixelFree(const CLI::Option* o) {
-  static const char* const names[] = {
-      "--out",        "--ppm",     "--rle",     "--raw",     "--png",         "--true-color-png",
-      "--png-8514",   "--threads", "--quiet",   "--timings", "--no-window",   "--zoom",
-      "--fullscreen", "--scale",   "--no-wait", "--pace",    "--camera-path", "--frames",
-      "--rows",       "--help",    "--model"};
+  static const char* const names[] = {"--out",          "--ppm",         "--rle",
+                                      "--raw",          "--png",         "--true-color-png",
+                                      "--png-8514",     "--threads",     "--quiet",
+                                      "--timings",      "--no-window",   "--zoom",
+                                      "--fullscreen",   "--scale",       "--no-wait",
+                                      "--pace",         "--camera-path", "--frames",
+                                      "--rows",         "--help",        "--model",
+                                      "--png-upscaled", "--upscale-fit"};
   for (const std::string& n : o->get_lnames())
     for (const char* x : names)
       if (n == std::string(x).substr(2)) return true;
@@ -258,6 +261,75 @@ std::string renderDigest(const RecordContext& record) {
                            "\nsettings\n" + record.settings + "camera " + record.camera +
                            "\ninputs " + io::hex16(io::inputsDigest(record.notInputs)) + "\n";
   return io::hex16(io::xxh3(text));
+}
+
+namespace {
+
+// The camera as given (flags, or a camera file's last line, or both), as
+// flags: the same text for the same camera however it was given.
+std::string givenCameraText(const CameraFlags& given) {
+  const CameraFlags c = withCameraFile(given);
+  std::string text;
+  auto add = [&](const char* name, const std::vector<double>& v) {
+    if (v.empty()) return;
+    text += std::string(text.empty() ? "" : " ") + name;
+    for (double x : v) text += " " + numberText(x);
+  };
+  add("--eye", c.eye);
+  add("--look-at", c.lookAt);
+  add("--up", c.up);
+  if (c.fov > 0.0) add("--fov", {c.fov});
+  if (!c.size.empty())
+    text += std::string(text.empty() ? "" : " ") + "--size " + std::to_string(c.size[0]) + " " +
+            std::to_string(c.size[1]);
+  return text;
+}
+
+bool cameraSetting(const std::string& line) {
+  for (const char* flag : {"--eye ", "--look-at ", "--up ", "--fov ", "--size ", "--camera "})
+    if (line.rfind(flag, 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+PngMeta provenanceOf(const TraceJob& job, const RecordContext& record, const CameraFlags* camera) {
+  PngMeta meta;
+  meta.aspectX = meta.aspectY = 1;  // every system's pixels are shown square
+  auto add = [&](std::string key, std::string text) {
+    meta.text.push_back({std::move(key), std::move(text)});
+  };
+  add("Software", std::string("prime ") + PRIME_VERSION);
+  std::string title = record.system;
+  for (const System& s : systems())
+    if (record.system == s.name) title = s.title;
+  add("System", title);
+  std::string scene = job.scene();
+  while (scene.size() > 1 && scene.back() == '/') scene.pop_back();
+  add("Scene",
+      scene.substr(scene.find_last_of('/') == std::string::npos ? 0 : scene.find_last_of('/') + 1));
+  std::vector<std::string> notScene = record.notInputs;
+  if (camera != nullptr && !camera->file.empty()) notScene.push_back(camera->file);
+  add("Scene digest",
+      "xxh3 " + io::hex16(io::inputsDigest(notScene)) + " (of the bytes of every scene file read)");
+  for (PngText& t : job.describe()) meta.text.push_back(std::move(t));
+  // The settings one a line, the camera's apart (as the camera it is).
+  std::string settings, line;
+  for (char c : record.settings) {
+    if (c != '\n') {
+      line += c;
+      continue;
+    }
+    if (!cameraSetting(line + " ")) settings += (settings.empty() ? "" : " ") + line;
+    line.clear();
+  }
+  add("Settings", settings.empty() ? "(the defaults)" : settings);
+  const std::string given =
+      record.camera.empty() && camera != nullptr && camera->given() ? givenCameraText(*camera) : "";
+  if (!record.camera.empty() || !given.empty())
+    add("Camera", record.camera.empty() ? given : record.camera);
+  if (record.frame) add("Frame", std::to_string(*record.frame));
+  return meta;
 }
 
 bool outputsDone(const TraceJob& job, const std::string& render) {

@@ -118,7 +118,7 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     try {
       window_ = std::make_unique<display::ScreenWindow>(
           frame, display::WindowConfig{options_.caption, options_.zoom, ".", options_.fullscreen,
-                                       options_.scale, paced()});
+                                       options_.scale, paced(), options_.screenshot});
     } catch (const std::exception& e) {
       headless = e.what();
       window_.reset();

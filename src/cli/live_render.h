@@ -39,6 +39,9 @@ struct LiveOptions {
   double pace = 0.0;
   bool pace1991 = false;
   int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
+  // What the S key's screenshots say made them (runTrace: the render's
+  // provenance).
+  PngMeta screenshot;
   // The C key: print and save the render's camera (src/cli/camera_flags.h,
   // cameraKey); unset: C does nothing.
   std::function<void()> cameraKey;

@@ -20,23 +20,40 @@ namespace prime::cli {
 
 namespace {
 
-// Every system's PNGs (--png, --true-color-png, --png-8514) as RGB rows.
+// Every system's PNGs (--png, --true-color-png, --png-8514): rows of
+// palette indices (an 8514/A screen) or of RGB; the stitched file is written
+// as the pieces were, with their palette, pHYs and text (one render's pieces
+// say the same: --rows is not among the settings they name).
 RowPicture readPngRows(const std::string& path) {
-  const Image8 img = readPng(path);
+  const PngFile png = readPngFile(path);
+  const int w = png.indexed ? png.palette.width : png.rgb.width;
+  const int h = png.indexed ? png.palette.height : png.rgb.height;
   RowPicture p;
-  p.head = {static_cast<std::uint8_t>(img.width >> 8), static_cast<std::uint8_t>(img.width),
-            static_cast<std::uint8_t>(img.height >> 8), static_cast<std::uint8_t>(img.height)};
-  p.rowBytes = static_cast<std::size_t>(img.width) * 3;
-  p.rows = img.height;
-  p.pixels = img.rgb;
+  p.head = {static_cast<std::uint8_t>(w >> 24),    static_cast<std::uint8_t>(w >> 16),
+            static_cast<std::uint8_t>(w >> 8),     static_cast<std::uint8_t>(w),
+            static_cast<std::uint8_t>(h >> 24),    static_cast<std::uint8_t>(h >> 16),
+            static_cast<std::uint8_t>(h >> 8),     static_cast<std::uint8_t>(h),
+            static_cast<std::uint8_t>(png.indexed)};
+  p.rowBytes = static_cast<std::size_t>(w) * (png.indexed ? 1 : 3);
+  p.rows = h;
+  p.pixels = png.indexed ? png.palette.indices : png.rgb.rgb;
   return p;
 }
-void writePngRows(const std::string& path, const RowPicture& p, const std::string&) {
-  Image8 img;
-  img.width = static_cast<int>(p.rowBytes / 3);
-  img.height = p.rows;
-  img.rgb = p.pixels;
-  writePng(path, img);
+void writePngRows(const std::string& path, const RowPicture& p, const std::string& piece) {
+  PngFile like = readPngFile(piece);  // its palette and text
+  if (like.indexed) {
+    IndexedImage8& img = like.palette;
+    img.width = static_cast<int>(p.rowBytes);
+    img.height = p.rows;
+    img.indices = p.pixels;
+    writeIndexedPng(path, img, like.meta);
+  } else {
+    Image8 img;
+    img.width = static_cast<int>(p.rowBytes / 3);
+    img.height = p.rows;
+    img.rgb = p.pixels;
+    writePng(path, img, like.meta);
+  }
 }
 constexpr PieceKind kPng{readPngRows, writePngRows};
 

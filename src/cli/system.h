@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "palette/png_image.h"
 #include "src/cli/commands.h"
 #include "src/cli/live_render.h"
 #include "src/cli/quantize_options.h"
@@ -113,9 +114,18 @@ class TraceJob {
     firstRow_ = first;
     lastRow_ = last;
   }
+  // The system's own lines of what made the picture (PRIME: the profile, the
+  // palette, the DAC's rule, the --fix ids), after load(): provenance()
+  // adds them to the shared ones.
+  virtual std::vector<PngText> describe() const { return {}; }
+  // What the picture files say made them (every PNG's tEXt and pHYs, PRIME's
+  // companion): set by runTrace after load(), before render().
+  void setProvenance(PngMeta meta) { provenance_ = std::move(meta); }
+  const PngMeta& provenance() const { return provenance_; }
 
  protected:
   int firstRow_ = 0, lastRow_ = -1;
+  PngMeta provenance_;
 };
 
 using TraceFactory = std::function<std::unique_ptr<TraceJob>()>;
@@ -233,6 +243,16 @@ struct RecordContext {
   std::optional<int> frame;
   std::vector<std::string> notInputs;  // files read that are not the scene's (the path)
 };
+
+// What made a picture, for its files (docs/user-guide.md, "What a picture
+// says about itself"): the program and its version, the system, the scene's
+// name (its last path component: the same on every machine) and the XXH3 of
+// every file it read, the job's own lines (describe()), every setting that
+// changes pixels, and a film frame's camera; square pixels (pHYs 1:1). One
+// line each, no time: the same render gives the same bytes.
+// `camera`: the system's camera flags (TraceFlags::camera), or null.
+PngMeta provenanceOf(const TraceJob& job, const RecordContext& record,
+                     const CameraFlags* camera = nullptr);
 
 // The shared skeleton of `prime trace`. With `record`, a frame whose
 // outputs are recorded as done is skipped (returns 0 and sets *skipped).

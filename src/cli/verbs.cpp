@@ -169,6 +169,7 @@ int runTrace(TraceJob& job, const TraceFlags& flags, const RecordContext* record
           "quantize the whole (prime quantize)");
     job.setBand(rows.first, rows.last);
   }
+  if (record != nullptr) job.setProvenance(provenanceOf(job, *record, flags.camera));
   const bool records = record != nullptr && (band || record->frame);
   const std::string render = records ? renderDigest(*record) : "";
   if (records && record->frame && outputsDone(job, render)) {
@@ -184,6 +185,7 @@ int runTrace(TraceJob& job, const TraceFlags& flags, const RecordContext* record
   LiveOptions options = flags.live;
   options.quiet = quiet;
   options.commandName = "trace";
+  options.screenshot = job.provenance();
   job.configure(options);
   LiveRender live(job.frame(), options);
   step.emplace("rendering " + job.scene());

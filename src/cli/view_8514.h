@@ -6,11 +6,14 @@
 #pragma once
 #include <string>
 
+#include "palette/png_image.h"
 #include "src/render/rgb_image.h"
 
 namespace prime::cli {
 
-// Writes `picture` through ColorNum and the listing's palette as a PNG.
-void write8514Png(const std::string& path, const RgbImage& picture);
+// Writes `picture` as the 8514/A would have shown it: through ColorNum
+// (IBM8514HI) as the screen's indices, with the listing's palette (its DAC
+// rounded to 8 bits) as an indexed PNG, and `meta`.
+void write8514Png(const std::string& path, const RgbImage& picture, PngMeta meta = {});
 
 }  // namespace prime::cli

@@ -140,7 +140,9 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
       });
 
   display::ScreenWindow window(
-      frame, {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale});
+      frame,
+      {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale, false,
+       PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION}, {"Scene", job.name}}, 1, 1}});
   std::fprintf(
       stderr,
       "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "

@@ -41,23 +41,28 @@ def png_size(path):
 
 
 def png_rows(path):
-    """The RGB rows of an 8-bit RGB, non-interlaced PNG (what prime writes)."""
+    """The RGB rows of an 8-bit RGB or 8-bit palette, non-interlaced PNG (what
+    prime writes: an 8514/A picture is indexed), palette entries as RGB."""
     data = open(path, "rb").read()
-    pos, idat, width, height = 8, b"", 0, 0
+    pos, idat, width, height, kind_of, plte = 8, b"", 0, 0, 2, b""
     while pos < len(data):
         n, kind = struct.unpack(">I4s", data[pos:pos + 8])
         body = data[pos + 8:pos + 8 + n]
         if kind == b"IHDR":
             width, height = struct.unpack(">II", body[:8])
+            kind_of = body[9]
+        elif kind == b"PLTE":
+            plte = body
         elif kind == b"IDAT":
             idat += body
         pos += 12 + n
-    raw, stride, rows, prev = zlib.decompress(idat), width * 3, [], bytearray(width * 3)
+    bpp = 1 if kind_of == 3 else 3
+    raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
     for y in range(height):
         f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
         for i in range(stride):
-            a = line[i - 3] if i >= 3 else 0
-            b, c = prev[i], prev[i - 3] if i >= 3 else 0
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
             if f == 1:
                 line[i] = (line[i] + a) & 255
             elif f == 2:
@@ -68,6 +73,25 @@ def png_rows(path):
                 p = a + b - c
                 pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
                 line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
         prev = line
+        if bpp == 1:
+            line = b"".join(plte[3 * v:3 * v + 3] for v in line)
+        rows.append(bytes(line))
     return rows
+
+
+def png_text(path):
+    """The tEXt chunks of a PNG, as a dict."""
+    data, pos, text = open(path, "rb").read(), 8, {}
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"tEXt":
+            key, _, value = data[pos + 8:pos + 8 + n].partition(b"\0")
+            text[key.decode("latin-1")] = value.decode("latin-1")
+        pos += 12 + n
+    return text
+
+
+def same_pixels(a, b):
+    """Whether two PNGs show the same pixels (whatever their text says)."""
+    return png_size(a) == png_size(b) and png_rows(a) == png_rows(b)

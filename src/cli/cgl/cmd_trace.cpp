@@ -188,15 +188,16 @@ class CglTrace : public TraceJob {
       written.push_back(*raw_);
     }
     if (!flags_->png.empty()) {
-      writePng(flags_->png, quantizedImage(frameImage(result_->frame), flags_->quantize));
+      writePng(flags_->png, quantizedImage(frameImage(result_->frame), flags_->quantize),
+               provenance_);
       written.push_back(flags_->png);
     }
     if (!flags_->trueColourPng.empty()) {
-      writePng(flags_->trueColourPng, frameImage(result_->frame));
+      writePng(flags_->trueColourPng, frameImage(result_->frame), provenance_);
       written.push_back(flags_->trueColourPng);
     }
     if (!flags_->png8514.empty()) {
-      write8514Png(flags_->png8514, prime::cgl::toRgbImage(result_->frame));
+      write8514Png(flags_->png8514, prime::cgl::toRgbImage(result_->frame), provenance_);
       written.push_back(flags_->png8514);
     }
     return written;

@@ -125,15 +125,16 @@ class MaloneTrace : public TraceJob {
       written.push_back(*ppm_);
     }
     if (!flags_->png.empty()) {
-      writePng(flags_->png, quantizedImage(toImage8(result_.raster), flags_->quantize));
+      writePng(flags_->png, quantizedImage(toImage8(result_.raster), flags_->quantize),
+               provenance_);
       written.push_back(flags_->png);
     }
     if (!flags_->trueColourPng.empty()) {
-      writePng(flags_->trueColourPng, toImage8(result_.raster));
+      writePng(flags_->trueColourPng, toImage8(result_.raster), provenance_);
       written.push_back(flags_->trueColourPng);
     }
     if (!flags_->png8514.empty()) {
-      write8514Png(flags_->png8514, result_.raster);
+      write8514Png(flags_->png8514, result_.raster, provenance_);
       written.push_back(flags_->png8514);
     }
     return written;

@@ -22,6 +22,7 @@ void addExportOptions(CLI::App* cmd, Action& action) {
   addAreaOption(cmd, *o, "--area");
   addGeometryOptions(cmd, *o);
   addInfoOption(cmd, *o);
+  addUpscaleOptions(cmd, *o);
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
@@ -31,9 +32,16 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       Screen screen(g.width, g.height);
       drawGraph(screen, f.graph, g.at, f.pixelsPresent);
-      const Image8 img = exportImage(screen, f.graph, f.pixelsPresent, g.at,
-                                     present(palette.dac, dacOf(*o)), areaOf(*o));
-      writePng(*out, img);
+      const IndexedImage8 img = exportIndexed(screen, f.graph, f.pixelsPresent, g.at,
+                                              present(palette.dac, dacOf(*o)), areaOf(*o));
+      // What made the picture, as its companion says (the render's
+      // provenance), then the palette's lines.
+      PngMeta meta;
+      meta.aspectX = meta.aspectY = 1;
+      if (info)
+        for (const auto& [key, value] : info->text)
+          if (key != "Palette" && key != "DAC to 8 bits") meta.text.push_back({key, value});
+      write8514Pngs(*out, img, meta, *o, paletteLabel(palette));
       if (!*quiet)
         std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
                   << " area; the file's " << f.graph.width() << " x " << f.graph.height()

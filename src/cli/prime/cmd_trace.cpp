@@ -93,26 +93,18 @@ void noteOneIndex(const RenderResult& r) {
 // show it as the render did. Written after the graph file, each through
 // OutputFile; a companion that does not match its graph file's bytes is
 // ignored by view and export (G9).
+// `info` is what the render knows (profile, screen, placement, palette,
+// provenance); the size and hash are of the bytes written.
 void writeCompanion(const std::string& graphPath, std::size_t graphBytes, std::uint64_t graphHash,
-                    int screenWidth, int screenHeight, const std::string& profile, Placement at,
-                    const Palette& palette, bool inlinePalette) {
-  GraphInfo info;
+                    GraphInfo info) {
   info.graphBytes = graphBytes;
   info.graphHash = graphHash;
-  info.profile = profile;
-  info.screenWidth = screenWidth;  // a free camera's picture is its own screen (T32)
-  info.screenHeight = screenHeight;
-  info.at = at;
-  info.palette = palette;
-  info.inline_ = inlinePalette;
   writeGraphInfo(graphInfoPath(graphPath), info);
 }
-void writeCompanion(const std::string& graphPath, const io::GraphFile& graph, int screenWidth,
-                    int screenHeight, const std::string& profile, Placement at,
-                    const Palette& palette, bool inlinePalette) {
+void writeCompanion(const std::string& graphPath, const io::GraphFile& graph,
+                    const GraphInfo& info) {
   const std::vector<std::uint8_t> bytes = io::toBytes(graph);
-  writeCompanion(graphPath, bytes.size(), graphHash(GraphHashKind::Xxh3_64, bytes), screenWidth,
-                 screenHeight, profile, at, palette, inlinePalette);
+  writeCompanion(graphPath, bytes.size(), graphHash(GraphHashKind::Xxh3_64, bytes), info);
 }
 
 // The graph file written while the render runs: each finished row goes out
@@ -158,22 +150,18 @@ class GraphStream {
 // The graph file and its companion: the file's bytes written from the
 // pixels as they are, then hashed (a streamed render's file was hashed as
 // it was written).
-void writeGraphAndCompanion(const std::string& target, const io::GraphFile& graph, int screenWidth,
-                            int screenHeight, const std::string& profile, Placement at,
-                            const Palette& palette, bool inlinePalette,
-                            GraphStream* streamed = nullptr) {
+void writeGraphAndCompanion(const std::string& target, const io::GraphFile& graph,
+                            const GraphInfo& info, GraphStream* streamed = nullptr) {
   if (streamed && streamed->complete()) {  // every row is in it already, and in its hash
     streamed->commit();
-    writeCompanion(target, streamed->bytes(), streamed->hash(), screenWidth, screenHeight, profile,
-                   at, palette, inlinePalette);
+    writeCompanion(target, streamed->bytes(), streamed->hash(), info);
     return;
   }
   io::writeGraphFile(target, graph);
   Xxh3Stream hash;  // (XXH3: a millisecond for a 4x picture, G12)
   io::forEachGraphFileBytes(graph, [&hash](std::span<const std::uint8_t> b) { hash.add(b); });
   const std::size_t bytes = 2 * (3 + graph.pixels.size());  // toBytes' size
-  writeCompanion(target, bytes, hash.digest(), screenWidth, screenHeight, profile, at, palette,
-                 inlinePalette);
+  writeCompanion(target, bytes, hash.digest(), info);
 }
 
 // --quantize (thesis 4.4, T59): every pixel of the graph file (the listing's
@@ -220,23 +208,31 @@ void writeAborted(const RenderResult& result, const std::vector<char>& finished,
             << " (prime view shows it); no PNG written\n";
 }
 
-// The PNGs of a finished render: the emulated screen's area through the
-// display palette, and the unquantised colours of the same area.
-void writePngs(const RenderResult& result, const PrimeCamera& camera, Placement at,
-               const Palette& palette, const DisplayOptions& display, const std::string& png,
-               const std::string& trueColourPng) {
+// The PNGs of a finished render: the emulated screen's area as the screen
+// holds it (its indices, the DAC as the palette) and its upscaled copy, and
+// the unquantised colours of the same area. Returns the files written.
+std::vector<std::string> writePngs(const RenderResult& result, const PrimeCamera& camera,
+                                   Placement at, const Palette& palette,
+                                   const DisplayOptions& display, const std::string& png,
+                                   const std::string& trueColourPng, const PngMeta& meta) {
   // The listing's screen, or a free camera's picture as its own screen (T32).
   const int screenW = camera.screenWidth(), screenH = camera.screenHeight();
   const ImageArea area = areaOf(display);
-  if (!png.empty()) {
+  std::vector<std::string> written;
+  if (!png.empty() || !display.pngUpscaled.empty()) {
     Screen screen(screenW, screenH);
     drawGraph(screen, result.graph, at);
-    writePng(png, exportImage(screen, result.graph, result.graph.pixels.size(), at,
-                              present(palette.dac, dacOf(display)), area));
+    written = write8514Pngs(png,
+                            exportIndexed(screen, result.graph, result.graph.pixels.size(), at,
+                                          present(palette.dac, dacOf(display)), area),
+                            meta, display, paletteLabel(palette));
   }
-  if (!trueColourPng.empty())
+  if (!trueColourPng.empty()) {
     writePng(trueColourPng,
-             exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area));
+             exportTrueColour(screenW, screenH, result.graph, result.rgb.pixels, at, area), meta);
+    written.push_back(trueColourPng);
+  }
+  return written;
 }
 
 class PrimeTrace : public TraceJob {
@@ -259,7 +255,8 @@ class PrimeTrace : public TraceJob {
             {"the .partial's .info", graphInfoPath(partial_)},
             {"--png", flags_->png},
             {"--true-color-png", flags_->trueColourPng},
-            {"--png-8514", flags_->png8514}};
+            {"--png-8514", flags_->png8514},
+            {"--png-upscaled", display_->pngUpscaled}};
   }
   bool writesWithoutOutputs() const override { return true; }  // the graph file
   std::string scene() const override { return *dir_; }
@@ -337,35 +334,48 @@ class PrimeTrace : public TraceJob {
   }
   bool aborted() const override { return result_.aborted; }
   void abort() override {
-    const int screenW = camera_->screenWidth(), screenH = camera_->screenHeight();
     writeAborted(result_, finished_, target_, partial_, [&](const io::GraphFile& head) {
-      writeCompanion(partial_, head, screenW, screenH, options_->profile, at_,
-                     *findBuiltinPalette(mappingPalette_), false);
+      writeCompanion(partial_, head, companion(*findBuiltinPalette(mappingPalette_), false));
     });
     if (!flags_->quiet) printSummary(result_, partial_);
   }
+  // What the companion says besides the graph file's size and hash (G7).
+  GraphInfo companion(const Palette& palette, bool inlinePalette) const {
+    GraphInfo info;
+    info.profile = options_->profile;
+    // A free camera's picture is its own screen (T32).
+    info.screenWidth = camera_->screenWidth();
+    info.screenHeight = camera_->screenHeight();
+    info.at = at_;
+    info.palette = palette;
+    info.inline_ = inlinePalette;
+    for (const PngText& t : provenance_.text) info.text.emplace_back(t.keyword, t.text);
+    return info;
+  }
   std::vector<std::string> write() override {
-    const int screenW = camera_->screenWidth(), screenH = camera_->screenHeight();
     if (quantizing_) {
       const Palette quantized = quantizeGraph(result_, flags_->quantize);
       if (display_->palette.empty()) palette_ = quantized;
-      writeGraphAndCompanion(target_, result_.graph, screenW, screenH, options_->profile, at_,
-                             quantized, true);
+      writeGraphAndCompanion(target_, result_.graph, companion(quantized, true));
     } else {
-      writeGraphAndCompanion(target_, result_.graph, screenW, screenH, options_->profile, at_,
-                             *findBuiltinPalette(mappingPalette_), false,
+      writeGraphAndCompanion(target_, result_.graph,
+                             companion(*findBuiltinPalette(mappingPalette_), false),
                              stream_ ? &*stream_ : nullptr);
     }
     std::error_code ec;
     std::filesystem::remove(partial_, ec);  // an older aborted run's
     std::filesystem::remove(graphInfoPath(partial_), ec);
     // --png and --png-8514 are the same picture here: PRIME's own screen.
-    writePngs(result_, *camera_, at_, palette_, *display_, flags_->png, flags_->trueColourPng);
-    if (!flags_->png8514.empty())
-      writePngs(result_, *camera_, at_, palette_, *display_, flags_->png8514, "");
-    std::vector<std::string> written;
-    for (const std::string& f : {target_, flags_->png, flags_->trueColourPng, flags_->png8514})
-      if (!f.empty()) written.push_back(f);
+    std::vector<std::string> written = {target_};
+    for (std::string& f : writePngs(result_, *camera_, at_, palette_, *display_, flags_->png,
+                                    flags_->trueColourPng, provenance_))
+      written.push_back(std::move(f));
+    if (!flags_->png8514.empty()) {
+      DisplayOptions once = *display_;
+      once.pngUpscaled.clear();  // written with --png
+      writePngs(result_, *camera_, at_, palette_, once, flags_->png8514, "", provenance_);
+      written.push_back(flags_->png8514);
+    }
     return written;
   }
   void summary(const std::vector<std::string>&) const override {
@@ -376,6 +386,12 @@ class PrimeTrace : public TraceJob {
     if (!quantizing_) noteOneIndex(result_);
   }
   double seconds() const override { return result_.seconds; }
+  std::vector<PngText> describe() const override {
+    const std::string fixes = fixIds(options_->settings.trace.fixes);
+    std::vector<PngText> t = {{"Profile", options_->profile}};
+    if (!fixes.empty()) t.push_back({"Fixes", "--fix " + fixes + " (prime errata)"});
+    return t;
+  }
   int pictureRows() const override { return camera_->rows(); }
   // The screen PNGs hold the picture where it sits on the screen (--png-area).
   FileRows fileRows(const std::string& output, int first, int last) const override {
@@ -433,9 +449,10 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
       "Palette for the window and PNG: listing, plate3, vga or a palette file (default: the one "
       "--palette implies)");
   addDacOption(cmd, *display);
+  addUpscaleOptions(cmd, *display);
   addRenderOptions(cmd, *options);
   flags->camera = &options->camera.flags;
-  flags->ownOutputs = {out.get()};
+  flags->ownOutputs = {out.get(), &display->pngUpscaled};
   flags->firstFrameOnly = {&options->model};
   return [dir, out, options, display, flags] {
     return std::make_unique<PrimeTrace>(dir, out, options, display, flags);

@@ -40,7 +40,9 @@ void addViewOptions(CLI::App* cmd, Action& action) {
       if (!headless) {
         try {
           window = std::make_unique<display::ScreenWindow>(
-              live, display::WindowConfig{*file, o->zoom, ".", o->fullscreen, scaleOf(*o)});
+              live, display::WindowConfig{
+                        *file, o->zoom, ".", o->fullscreen, scaleOf(*o), false,
+                        PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION}}, 1, 1}});
         } catch (const display::WindowError& e) {
           headless = e.what();
         }

@@ -59,6 +59,63 @@ display::ScaleMode scaleOf(const DisplayOptions& o) {
   return o.scale == "aspect" ? display::ScaleMode::Aspect : display::ScaleMode::Integer;
 }
 
+void addUpscaleOptions(CLI::App* cmd, DisplayOptions& o) {
+  cmd->add_option("--png-upscaled", o.pngUpscaled,
+                  "Also write an integer-upscaled copy of the PNG (nearest neighbour, the "
+                  "largest whole factor that fits --upscale-fit)")
+      ->type_name("FILE");
+  cmd->add_option("--upscale-fit", o.upscaleFit,
+                  "The size the upscaled copy must fit, W H (default 3840 2160)")
+      ->expected(2)
+      ->check(CLI::Range(1, 65535));
+}
+
+std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how) {
+  std::string rule;
+  switch (how) {
+    case DacTo8::Round:
+      rule =
+          "round: v8 = (v6 * 255 + 31) / 63, the nearest 8-bit level to v6 / 63; "
+          "v6 = (v8 * 63 + 127) / 255";
+      break;
+    case DacTo8::Replicate:
+      rule = "replicate: v8 = v6 * 4 + v6 / 16 (bit replication); v6 = v8 / 4";
+      break;
+    case DacTo8::Truncate:
+      rule = "truncate: v8 = v6 * 255 / 63; v6 = (v8 * 63 + 254) / 255";
+      break;
+  }
+  return {{"Palette", paletteName + " (the IBM 8514/A DAC, 6 bits a channel)"},
+          {"DAC to 8 bits", rule}};
+}
+
+std::string paletteLabel(const Palette& palette) {
+  if (findBuiltinPalette(palette.name) || palette.description.empty()) return palette.name;
+  return palette.description;
+}
+
+std::vector<std::string> write8514Pngs(const std::string& path, const IndexedImage8& image,
+                                       PngMeta meta, const DisplayOptions& o,
+                                       const std::string& paletteName) {
+  for (PngText& t : paletteText(paletteName, dacOf(o))) meta.text.push_back(std::move(t));
+  std::vector<std::string> written;
+  if (!path.empty()) {
+    writeIndexedPng(path, image, meta);
+    written.push_back(path);
+  }
+  if (!o.pngUpscaled.empty()) {
+    const int k = fitFactor(image.width, image.height, o.upscaleFit[0], o.upscaleFit[1]);
+    meta.text.push_back({"Upscaled", std::to_string(k) + " x " + std::to_string(k) +
+                                         ", nearest neighbour (the largest whole factor that "
+                                         "fits " +
+                                         std::to_string(o.upscaleFit[0]) + " x " +
+                                         std::to_string(o.upscaleFit[1]) + ")"});
+    writeIndexedPng(o.pngUpscaled, upscale(image, k), meta);
+    written.push_back(o.pngUpscaled);
+  }
+  return written;
+}
+
 DacTo8 dacOf(const DisplayOptions& o) {
   return dacTo8FromName(o.dac).value_or(kDefaultDacTo8);
 }

@@ -27,7 +27,9 @@ struct DisplayOptions {
   bool fullscreen = false;        // --fullscreen
   std::string scale = "integer";  // --scale integer|aspect (G23)
   bool noWindow = false;
-  bool noInfo = false;  // --no-info: ignore the graph file's companion (G8)
+  bool noInfo = false;                      // --no-info: ignore the graph file's companion (G8)
+  std::string pngUpscaled;                  // --png-upscaled FILE
+  std::vector<int> upscaleFit{3840, 2160};  // --upscale-fit W H
 };
 
 void addPaletteOption(CLI::App* cmd, DisplayOptions& o, const std::string& defaultText);
@@ -38,6 +40,24 @@ void addGeometryOptions(CLI::App* cmd, DisplayOptions& o);
 // --no-window, --zoom, --fullscreen and --scale.
 void addWindowOptions(CLI::App* cmd, DisplayOptions& o);
 display::ScaleMode scaleOf(const DisplayOptions& o);
+
+// --png-upscaled FILE and --upscale-fit W H: an integer-upscaled copy of the
+// PNG (nearest neighbour, the largest whole factor that fits W x H), as
+// DOSBox Staging's upscaled screenshots.
+void addUpscaleOptions(CLI::App* cmd, DisplayOptions& o);
+// Writes the screen's PNG `path` (indexed: the 8514/A's 256 indices and the
+// DAC as its palette) and, when --png-upscaled names one, its upscaled copy,
+// both with `meta` and the palette's lines (paletteText). Returns the files
+// written.
+std::vector<std::string> write8514Pngs(const std::string& path, const IndexedImage8& image,
+                                       PngMeta meta, const DisplayOptions& o,
+                                       const std::string& paletteName);
+// What an indexed PNG's palette is: "Palette" (its name) and "DAC to 8 bits"
+// (the rule that made 8-bit PLTE entries of the DAC's 6-bit values).
+std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how);
+// The palette as a PNG names it: a built-in's name, else its description (a
+// quantized palette: the same from trace and from export of its companion).
+std::string paletteLabel(const Palette& palette);
 
 DacTo8 dacOf(const DisplayOptions& o);
 ImageArea areaOf(const DisplayOptions& o);

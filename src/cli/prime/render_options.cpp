@@ -173,6 +173,7 @@ Scene prepareScene(const std::string& dir, bool model) {
     const io::Model built = io::buildModel(scene);
     io::writeModel(scene, built, lock.get());
     for (const auto& w : built.warnings) std::cerr << "prime: warning: " << w << "\n";
+    io::forgetInputsContent();  // the render's digest: of the databases it reads
   }
   // Held while the databases are read: no prime model switches them meanwhile.
   const auto reading = io::openModelForReading(scene);  // M19

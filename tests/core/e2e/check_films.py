@@ -27,6 +27,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../support"))
+from prime_checks import png_text, same_pixels  # noqa (after the path)
+
 PRIME, ROOT = sys.argv[1], sys.argv[2]
 failures = []
 CASES = 0
@@ -96,9 +99,13 @@ with tempfile.TemporaryDirectory() as tmp:
             r = run(["trace", scene, "-q", "--png", f"key{k}.png"] + ks[k // 2] + size +
                     [o.replace("F%04d", f"key{k}") for o in outs], d)
             ok(r, f"{name}: the key's camera as flags")
-            check(same(os.path.join(d, f"F{k:04d}.png"), os.path.join(d, f"key{k}.png")) and
+            # The same pixels; the PNGs' text differs (the frame's names its frame).
+            frame_png = os.path.join(d, f"F{k:04d}.png")
+            check(same_pixels(frame_png, os.path.join(d, f"key{k}.png")) and
                   same(os.path.join(d, f"F{k:04d}.{ext}"), os.path.join(d, f"key{k}.{ext}")),
                   f"{name}: film frame {k} is the picture of key {k // 2 + 1}'s camera")
+            check(png_text(frame_png).get("Frame") == str(k),
+                  f"{name}: frame {k}'s PNG says which frame it is: {png_text(frame_png)}")
         check(not same(os.path.join(d, "F0000.png"), os.path.join(d, "F0001.png")),
               f"{name}: the camera moves between frames")
         # Resume: frame 1 damaged, frame 3's record gone; the rest skipped.
