@@ -97,12 +97,22 @@ GifFilm::~GifFilm() {
 }
 
 void GifFilm::addFrame(const IndexedFrame& frame, int delay) {
-  if (gif_ == nullptr) throw std::logic_error("GifFilm::addFrame after close");
   if (frame.width != width_ || frame.height != height_)
     throw std::invalid_argument("a frame of " + std::to_string(frame.width) + " x " +
                                 std::to_string(frame.height) + " in a GIF of " +
                                 std::to_string(width_) + " x " + std::to_string(height_));
-  const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
+  addFrameAt(frame, 0, 0, delay);
+}
+
+void GifFilm::addFrameAt(const IndexedFrame& frame, int left, int top, int delay) {
+  if (gif_ == nullptr) throw std::logic_error("GifFilm::addFrame after close");
+  if (frame.width < 1 || frame.height < 1 || left < 0 || top < 0 || frame.width > width_ - left ||
+      frame.height > height_ - top)
+    throw std::invalid_argument("a frame of " + std::to_string(frame.width) + " x " +
+                                std::to_string(frame.height) + " at (" + std::to_string(left) +
+                                ", " + std::to_string(top) + ") in a GIF of " +
+                                std::to_string(width_) + " x " + std::to_string(height_));
+  const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
   if (frame.palette.empty() || frame.palette.size() > 256 || frame.indices.size() != pixels)
     throw std::invalid_argument("a frame needs 1..256 palette entries and one index a pixel");
   if (delay < 0 || delay > 65535)
@@ -114,7 +124,7 @@ void GifFilm::addFrame(const IndexedFrame& frame, int delay) {
                                 std::to_string(frame.palette.size()) + " palette entries");
 
   GraphicsControlBlock control{};
-  control.DisposalMode = DISPOSE_DO_NOT;  // each frame covers the screen
+  control.DisposalMode = DISPOSE_DO_NOT;  // the next frame draws over this one
   control.UserInputFlag = false;
   control.DelayTime = delay;
   control.TransparentColor = NO_TRANSPARENT_COLOR;
@@ -132,15 +142,16 @@ void GifFilm::addFrame(const IndexedFrame& frame, int delay) {
     colours[i] = {frame.palette[i][0], frame.palette[i][1], frame.palette[i][2]};
   ColorMapObject* map = GifMakeMapObject(size, colours.data());
   if (map == nullptr) throw std::bad_alloc();
-  const int put = EGifPutImageDesc(gif_, 0, 0, width_, height_, false, map);
+  const int put = EGifPutImageDesc(gif_, left, top, frame.width, frame.height, false, map);
   GifFreeMapObject(map);  // giflib keeps its own copy
   if (put == GIF_ERROR) fail("frame's image descriptor", gif_->Error);
   // EGifPutLine masks the line it is given in place: a copy of each row.
-  std::vector<GifPixelType> row(static_cast<std::size_t>(width_));
-  for (int y = 0; y < height_; ++y) {
-    const auto from = frame.indices.begin() + static_cast<std::ptrdiff_t>(y) * width_;
-    std::copy(from, from + width_, row.begin());
-    if (EGifPutLine(gif_, row.data(), width_) == GIF_ERROR) fail("frame's pixels", gif_->Error);
+  std::vector<GifPixelType> row(static_cast<std::size_t>(frame.width));
+  for (int y = 0; y < frame.height; ++y) {
+    const auto from = frame.indices.begin() + static_cast<std::ptrdiff_t>(y) * frame.width;
+    std::copy(from, from + frame.width, row.begin());
+    if (EGifPutLine(gif_, row.data(), frame.width) == GIF_ERROR)
+      fail("frame's pixels", gif_->Error);
   }
   ++frames_;
 }

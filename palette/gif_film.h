@@ -3,8 +3,8 @@
 // by every command that makes a film: `prime film` (src/cli/cmd_film.cpp)
 // and, later, an animated capture of a display. docs/user-guide.md, "Films".
 //
-//   - The logical screen is the frame size; every frame covers all of it,
-//     with its own local colour map (no global one), so frames of different
+//   - The logical screen is the frame size; a frame covers all of it or a
+//     part (addFrameAt), with its own local colour map (no global one), so frames of different
 //     palettes (a 256-colour display whose DAC changes, or frames quantized
 //     one by one) are each exact.
 //   - A NETSCAPE2.0 application extension holds the loop count (0: forever).
@@ -66,6 +66,10 @@ class GifFilm {
   // power of two (at least 2). Throws std::invalid_argument for a frame that
   // does not fit, std::runtime_error when the writing fails.
   void addFrame(const IndexedFrame& frame, int delay);
+  // A frame that covers part of the screen, its top-left at (left, top),
+  // drawn over what the frames before it left (disposal: do not dispose):
+  // what changed since the last frame, as a screen recording needs.
+  void addFrameAt(const IndexedFrame& frame, int left, int top, int delay);
   // Writes the trailer; the caller then commits `out`.
   void close();
 

@@ -216,9 +216,12 @@ bool LiveRender::paced() const {
 
 double LiveRender::rowsPerSecond() const {
   if (!options_.pace1991) return options_.pace;
-  // The rays each row took so far (before the first row: one a pixel), at
-  // the 1991 rate (G24).
   const int d = rowsDone_;
+  // The era model's time of the rows finished (G24).
+  if (options_.seconds1991)
+    if (const double s = options_.seconds1991(); d > 0 && s > 0) return d / s;
+  // The rays each row took so far (before the first row: one a pixel), at
+  // the flat 1991 rate.
   const std::uint64_t rays = rays_;
   const double raysPerRow =
       d > 0 && rays > 0 ? static_cast<double>(rays) / d : static_cast<double>(std::max(width_, 1));

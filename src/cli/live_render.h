@@ -38,6 +38,10 @@ struct LiveOptions {
   // estimates it from the rays each row took (G24).
   double pace = 0.0;
   bool pace1991 = false;
+  // With --pace 1991: the 1991 seconds of the rows finished so far, by the
+  // system's era model (PRIME: src/prime/render/era_cost.h); unset: the
+  // flat 300 rays a second.
+  std::function<double()> seconds1991;
   int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
   // What the S key's screenshots say made them (runTrace: the render's
   // provenance).

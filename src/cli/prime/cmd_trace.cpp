@@ -10,6 +10,7 @@
 // there is kept as it was, and TARGET.partial holds the header and the rows
 // finished from the top, as the listing's exit(1) would have left them.
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -31,6 +32,7 @@
 #include "src/cli/prime/render_options.h"
 #include "src/cli/quantize_options.h"
 #include "src/cli/system.h"
+#include "src/prime/render/era_cost.h"
 
 namespace prime::cli {
 
@@ -239,8 +241,9 @@ class PrimeTrace : public TraceJob {
  public:
   PrimeTrace(std::shared_ptr<std::string> dir, std::shared_ptr<std::string> out,
              std::shared_ptr<RenderOptions> options, std::shared_ptr<DisplayOptions> display,
-             std::shared_ptr<TraceFlags> flags)
-      : dir_(std::move(dir)),
+             std::shared_ptr<TraceFlags> flags, std::shared_ptr<RecordFlags> record)
+      : record_(std::move(record)),
+        dir_(std::move(dir)),
         options_(std::move(options)),
         display_(std::move(display)),
         flags_(std::move(flags)),
@@ -256,7 +259,8 @@ class PrimeTrace : public TraceJob {
             {"--png", flags_->png},
             {"--true-color-png", flags_->trueColourPng},
             {"--png-8514", flags_->png8514},
-            {"--png-upscaled", display_->pngUpscaled}};
+            {"--png-upscaled", display_->pngUpscaled},
+            {"--record", record_->file}};
   }
   bool writesWithoutOutputs() const override { return true; }  // the graph file
   std::string scene() const override { return *dir_; }
@@ -267,6 +271,12 @@ class PrimeTrace : public TraceJob {
     quantizing_ = !flags_->quantize.method.empty();
     options_->settings.keepColours =
         !flags_->trueColourPng.empty() || quantizing_;  // only these read them
+    // --record and --pace 1991 time each row by the era model, from the
+    // counts of the listing's own work (no skipped tests: the same pixels).
+    if (!record_->file.empty() || flags_->live.pace1991) {
+      options_->settings.rowStats = &rowStats_;
+      options_->settings.trace.skipUnneededWork = false;
+    }
     const RenderSettings& settings = options_->settings;
     camera_.emplace(settings.camera);
     at_ = {camera_->screenX(0), camera_->screenY(0)};
@@ -288,6 +298,8 @@ class PrimeTrace : public TraceJob {
     options.caption = *dir_;
     options.keys = "P palette, D DAC";
     options.firstRow = at_.top;  // the image's row 0 on the screen
+    if (options_->settings.rowStats != nullptr)
+      options.seconds1991 = [this] { return seconds1991Done_.load(); };
     const auto& s = options_->settings;
     options.cameraKey = [free = s.camera.free, dir = *dir_,
                          profile = options_->profile +
@@ -327,6 +339,8 @@ class PrimeTrace : public TraceJob {
     }
     cb.rowDone = [&](int row, std::span<const std::int16_t> indices) {
       finished_[static_cast<std::size_t>(row)] = 1;
+      if (!rowStats_.empty())  // written before this call (RenderSettings::rowStats)
+        seconds1991Done_ = seconds1991Done_ + rowSeconds1991(row);
       if (stream_) stream_->row(row, indices);
       if (live.windowed()) screen_->drawRow(at_, row, indices);  // PutPixel(j, i, color)
     };
@@ -370,6 +384,17 @@ class PrimeTrace : public TraceJob {
     for (std::string& f : writePngs(result_, *camera_, at_, palette_, *display_, flags_->png,
                                     flags_->trueColourPng, provenance_))
       written.push_back(std::move(f));
+    if (!record_->file.empty()) {
+      std::vector<double> rowSeconds(static_cast<std::size_t>(camera_->rows()));
+      for (int r = 0; r < camera_->rows(); ++r)
+        rowSeconds[static_cast<std::size_t>(r)] =
+            flags_->live.pace > 0 ? 1.0 / flags_->live.pace : rowSeconds1991(r);
+      recordGraphDrawing(
+          *record_, result_.graph, at_, camera_->screenWidth(), camera_->screenHeight(),
+          present(palette_.dac, dacOf(*display_)), rowSeconds,
+          flags_->live.pace > 0 ? "--pace rows a second" : "the 1991 estimate", flags_->quiet);
+      written.push_back(record_->file);
+    }
     if (!flags_->png8514.empty()) {
       DisplayOptions once = *display_;
       once.pngUpscaled.clear();  // written with --png
@@ -380,12 +405,36 @@ class PrimeTrace : public TraceJob {
   }
   void summary(const std::vector<std::string>&) const override {
     printSummary(result_, target_);
+    if (!rowStats_.empty()) {  // --pace 1991, --record: the era model beside the flat rate
+      double era = 0.0;
+      for (int r = 0; r < camera_->rows(); ++r) era += rowSeconds1991(r);
+      std::printf(
+          "1991 estimate: %s on a 20 MHz 386 + 387 (docs/prime/pace-1991.md); the flat "
+          "%.0f rays a second would say %s\n",
+          minutesText(era).c_str(), kFlatRaysPerSecond1991,
+          minutesText(static_cast<double>(result_.stats.rays()) / kFlatRaysPerSecond1991).c_str());
+    }
     if (const std::string ids = fixIds(options_->settings.trace.fixes); !ids.empty())
       std::printf("1991 profile with listing quirks corrected: --fix %s (prime errata)\n",
                   ids.c_str());
     if (!quantizing_) noteOneIndex(result_);
   }
   double seconds() const override { return result_.seconds; }
+  // The era model's time of row r (its counts, its pixels, the scene's lights).
+  double rowSeconds1991(int r) const {
+    return seconds1991(rowStats_[static_cast<std::size_t>(r)],
+                       static_cast<std::uint64_t>(camera_->columns()),
+                       static_cast<int>(scene_->lights.size()));
+  }
+  static std::string minutesText(double s) {
+    char buf[48];
+    if (s < 60)
+      std::snprintf(buf, sizeof buf, "%.1f s", s);
+    else
+      std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
+                    static_cast<int>(s) % 60);
+    return buf;
+  }
   std::vector<PngText> describe() const override {
     const std::string fixes = fixIds(options_->settings.trace.fixes);
     std::vector<PngText> t = {{"Profile", options_->profile}};
@@ -416,6 +465,9 @@ class PrimeTrace : public TraceJob {
   }
 
  private:
+  std::shared_ptr<RecordFlags> record_;
+  std::vector<TraceStats> rowStats_;  // --record, --pace 1991: each row's counts
+  std::atomic<double> seconds1991Done_{0.0};
   std::shared_ptr<std::string> dir_;
   std::shared_ptr<RenderOptions> options_;
   std::shared_ptr<DisplayOptions> display_;
@@ -450,12 +502,14 @@ TraceFactory addTraceOptions(CLI::App* cmd, const std::shared_ptr<TraceFlags>& f
       "--palette implies)");
   addDacOption(cmd, *display);
   addUpscaleOptions(cmd, *display);
+  auto record = std::make_shared<RecordFlags>();
+  addRecordOptions(cmd, *record);
   addRenderOptions(cmd, *options);
   flags->camera = &options->camera.flags;
-  flags->ownOutputs = {out.get(), &display->pngUpscaled};
+  flags->ownOutputs = {out.get(), &display->pngUpscaled, &record->file};
   flags->firstFrameOnly = {&options->model};
-  return [dir, out, options, display, flags] {
-    return std::make_unique<PrimeTrace>(dir, out, options, display, flags);
+  return [dir, out, options, display, flags, record] {
+    return std::make_unique<PrimeTrace>(dir, out, options, display, flags, record);
   };
 }
 

@@ -1,10 +1,13 @@
 #include "src/cli/prime/display_options.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <iostream>
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
+#include "palette/prime/drawing_record.h"
 
 namespace prime::cli {
 
@@ -114,6 +117,43 @@ std::vector<std::string> write8514Pngs(const std::string& path, const IndexedIma
     written.push_back(o.pngUpscaled);
   }
   return written;
+}
+
+void addRecordOptions(CLI::App* cmd, RecordFlags& r) {
+  cmd->add_option("--record", r.file,
+                  "Keep the drawing: the screen as it was drawn, pixel by pixel, as an animated "
+                  "GIF (timed by --pace; without it by the 1991 estimate), sped up to "
+                  "--record-length")
+      ->type_name("FILE.gif");
+  cmd->add_option("--record-length", r.length,
+                  "The recording's length in seconds, the final screen's 3 s hold apart "
+                  "(default 20)")
+      ->check(CLI::Range(0.1, 86400.0));
+  cmd->add_option("--record-speed", r.speed,
+                  "Instead of a length: the drawing's seconds a second of the recording (1: as "
+                  "drawn)")
+      ->check(CLI::Range(1e-3, 1e9));
+  cmd->add_option("--record-fps", r.fps, "The recording's frames a second at most (default 25)")
+      ->check(CLI::Range(1.0, 100.0));
+}
+
+void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placement at, int screenW,
+                        int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
+                        const std::string& timeSource, bool quiet) {
+  DrawingRecordOptions o;
+  o.fps = r.fps;
+  const double total = drawingSeconds(rowSeconds);
+  o.speed = r.speed > 0 ? r.speed : std::max(total / r.length, 1e-3);
+  const DrawingRecordSummary done =
+      recordDrawing(r.file, graph, at, screenW, screenH, colours, rowSeconds, o);
+  if (quiet) return;
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "recorded %s: %d frames, the drawing's %.0f s (%s) at %.4g x in a %.1f s clip "
+                "(the final screen held 3 s)\n",
+                r.file.c_str(), done.frames, done.drawingSeconds, timeSource.c_str(), o.speed,
+                done.clipSeconds);
+  std::fputs(line, stdout);
 }
 
 DacTo8 dacOf(const DisplayOptions& o) {

@@ -4,6 +4,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,21 @@ std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how);
 // The palette as a PNG names it: a built-in's name, else its description (a
 // quantized palette: the same from trace and from export of its companion).
 std::string paletteLabel(const Palette& palette);
+
+// --record FILE and its clip's length, speed and frame rate (trace, view):
+// the drawing kept as an animated GIF (palette/prime/drawing_record.h).
+struct RecordFlags {
+  std::string file;    // --record FILE.gif
+  double length = 20;  // --record-length SECONDS: the clip, before its hold
+  double speed = 0;    // --record-speed X: drawing seconds a clip second (0: from length)
+  double fps = 25;     // --record-fps N
+};
+void addRecordOptions(CLI::App* cmd, RecordFlags& r);
+// Records the drawing of `graph` (rows timed by `rowSeconds`) into r.file
+// and says what it wrote unless quiet.
+void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placement at, int screenW,
+                        int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
+                        const std::string& timeSource, bool quiet);
 
 DacTo8 dacOf(const DisplayOptions& o);
 ImageArea areaOf(const DisplayOptions& o);

@@ -137,7 +137,7 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
     std::fill(row + j0, row + j1, index);
   };
 
-  auto renderRow = [&](int i, int thread) -> std::uint64_t {
+  auto renderRowWork = [&](int i, int thread) -> std::uint64_t {
     PerThread& local = perThread[thread];
     TraceStats& stats = local.stats;
     const std::uint64_t raysBefore = stats.rays();
@@ -183,6 +183,18 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
           static_cast<std::int16_t>(local.indexOf.get(color, stats));
     }
     return stats.rays() - raysBefore;
+  };
+
+  // keepRowStats: each row's counts (the 1991 pace's cost of a row); a row
+  // is one thread's, so each entry is written once.
+  std::vector<TraceStats>* const rowStats = settings.rowStats;
+  if (rowStats) rowStats->assign(static_cast<std::size_t>(rows), TraceStats{});
+  auto renderRow = [&](int i, int thread) -> std::uint64_t {
+    if (!rowStats) return renderRowWork(i, thread);
+    const TraceStats before = perThread[thread].stats;
+    const std::uint64_t rays = renderRowWork(i, thread);
+    (*rowStats)[static_cast<std::size_t>(i)] = perThread[thread].stats - before;
+    return rays;
   };
 
   RowCallbacks rowCallbacks;

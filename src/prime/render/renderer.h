@@ -35,6 +35,10 @@ struct RenderSettings {
   // Keep every pixel's unquantised colour in RenderResult::rgb (true-colour
   // PNG, prime bench); false leaves rgb empty and saves its memory.
   bool keepColours = true;
+  // Each row's counts (--pace 1991 and --record: the era model's cost of a
+  // row), written into (*rowStats)[row] before the row's rowDone; render()
+  // sizes it. Null: not kept.
+  std::vector<TraceStats>* rowStats = nullptr;
 };
 
 struct RenderResult {

@@ -22,5 +22,7 @@ struct TraceStats : RayCounts {
 
   TraceStats& operator+=(const TraceStats& o);
 };
+// What `a` counted beyond `b` (a later and an earlier count of one tracer).
+TraceStats operator-(const TraceStats& a, const TraceStats& b);
 
 }  // namespace prime
