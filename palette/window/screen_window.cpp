@@ -332,6 +332,9 @@ struct ScreenWindow::Impl {
       case Key::Down:
       case Key::Home:
       case Key::Zero:
+      case Key::Pause:  // the pace's (src/cli/live_render.cpp), through the input handler
+      case Key::Faster:
+      case Key::Slower:
         return;
     }
   }

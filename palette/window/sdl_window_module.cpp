@@ -265,6 +265,15 @@ class SdlWindow final : public WindowBackend {
         return Key::Screenshot;
       case SDLK_F11:
         return Key::Fullscreen;
+      case SDLK_SPACE:
+      case SDLK_PAUSE:
+        return Key::Pause;
+      case SDLK_RIGHTBRACKET:
+      case SDLK_GREATER:
+        return Key::Faster;
+      case SDLK_LEFTBRACKET:
+      case SDLK_LESS:
+        return Key::Slower;
       case SDLK_LEFT:
         return Key::Left;
       case SDLK_RIGHT:

@@ -16,8 +16,9 @@ namespace prime::display::module {
 // Changes whenever WindowBackend, Event or the factory change: a module from
 // another build refuses to open rather than being called wrongly.
 // 2: mouse, arrows, letters (G20). 3: hidden until show(), resizable,
-// fullscreen, the display's usable size, F11 (G23).
-inline constexpr int kInterfaceVersion = 3;
+// fullscreen, the display's usable size, F11 (G23). 4: Space, [ and ] (the
+// pace's pause and speed).
+inline constexpr int kInterfaceVersion = 4;
 
 // The keys the window knows, already sorted by meaning.
 enum class Key {
@@ -36,6 +37,9 @@ enum class Key {
   Home,
   Zero,        // 0 and 9 (Digit stays 1..8, the zoom keys): Event::digit 0 or 9
   Fullscreen,  // F11
+  Pause,       // Space, Pause
+  Faster,      // ] >
+  Slower,      // [ <
 };
 
 struct Event {

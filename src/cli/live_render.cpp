@@ -14,6 +14,8 @@
 #include <string>
 #include <thread>
 
+#include "src/cli/camera_flags.h"
+
 namespace prime::cli {
 
 namespace {
@@ -106,6 +108,21 @@ void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, 
                 "Close the window when the render is done instead of waiting for Esc");
 }
 
+namespace {
+
+// m:ss, or h:mm:ss.
+std::string clockText(double seconds) {
+  const long s = std::lround(std::max(seconds, 0.0));
+  char buf[32];
+  if (s >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  return buf;
+}
+
+}  // namespace
+
 int interruptingSignal() {
   return gSignal;
 }
@@ -128,6 +145,18 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
   if (window_)
     window_->setInputHandler([this](const display::module::Event& e) {
       if (inspector_ && inspector_->handle(e)) return true;
+      using display::module::Key;
+      if (e.type == display::module::Event::Type::Key && paced() &&
+          (e.key == Key::Pause || e.key == Key::Faster || e.key == Key::Slower)) {
+        // The pace's keys: Space pauses and resumes, ] and [ double and halve it.
+        if (e.key == Key::Pause) paused_ = !paused_;
+        if (e.key == Key::Faster) speed_ = std::min(speed_ * 2.0, 4096.0);
+        if (e.key == Key::Slower) speed_ = std::max(speed_ / 2.0, 1.0 / 64.0);
+        if (!options_.quiet)
+          std::cerr << (paused_ ? "\nprime: paused (Space resumes)\n"
+                                : "\nprime: pace x" + numberText(speed_) + "\n");
+        return true;
+      }
       if (!options_.cameraKey || e.type != display::module::Event::Type::Key || e.letter != 'c')
         return false;
       options_.cameraKey();
@@ -142,6 +171,7 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
                   << "; Esc aborts (keys: + - zoom, "
                   << (options_.keys.empty() ? "" : options_.keys + ", ")
                   << (options_.cameraKey ? "C camera, " : "") << "S screenshot"
+                  << (paced() ? ", Space pause, [ ] slower / faster" : "")
                   << (options_.probe ? "; when done, click a pixel: its rays" : "") << ")\n")
                      .str()
               << std::flush;
@@ -182,26 +212,45 @@ void LiveRender::run(const std::function<void()>& render) {
     // --pace (G24): the finished rows reach the display no faster than the
     // pace; after the render the display catches up at it (Esc stops that).
     display::RowPacer pacer;
-    const auto start = std::chrono::steady_clock::now();
+    // The pace's own clock: it stops while paused and runs speed_ times as
+    // fast as the wall's.
+    auto last = std::chrono::steady_clock::now();
+    double clock = 0.0, lastLine = -1.0;
     int shown = 0;
     const auto pace = [&] {
       if (!paced()) return;
-      const double now =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      shown = pacer.advance(rowsDone_, now, rowsPerSecond());
+      const auto now = std::chrono::steady_clock::now();
+      if (!paused_) clock += std::chrono::duration<double>(now - last).count() * speed_;
+      last = now;
+      shown = pacer.advance(rowsDone_, clock, rowsPerSecond());
       window_->setRowLimit(options_.firstRow + shown);
     };
     while (!done || (paced() && !abort_ && shown < rowsDone_)) {
       pace();
       if (window_->poll(30)) abort_ = true;  // Esc, close, Ctrl-C: ExitOnEsc
       const int d = paced() ? shown : rowsDone_.load(), n = rows_;
-      window_->setStatus(abort_ ? "aborting"
-                                : "rows " + std::to_string(d) + "/" + std::to_string(n) + " (" +
-                                      std::to_string(n > 0 ? 100 * d / n : 0) + "%)");
+      std::string status = "rows " + std::to_string(d) + "/" + std::to_string(n) + " (" +
+                           std::to_string(n > 0 ? 100 * d / n : 0) + "%)";
+      if (paced() && n > 0) {
+        // The replay's time and what is left of it at this speed.
+        const double total = n / std::max(rowsPerSecond(), 1e-9);
+        status += ", " + std::string(options_.pace1991 ? "1991 time " : "") + clockText(clock) +
+                  " of " + clockText(total) + ", " + clockText((total - clock) / speed_) + " left" +
+                  (speed_ != 1.0 ? " at x" + numberText(speed_) : "") +
+                  (paused_ ? " (paused)" : "");
+        if (tty_ && clock - lastLine >= 0.5 * speed_) {
+          std::fprintf(stderr, "\r%s   ", status.c_str());
+          lastLine = clock;
+        }
+      }
+      window_->setStatus(abort_ ? "aborting" : status);
     }
     worker.join();
     if (paced()) window_->setRowLimit(INT_MAX);  // an abort shows what was drawn
     if (tty_) std::fprintf(stderr, "\n");
+    if (paced() && !abort_ && !options_.quiet)
+      std::cerr << "prime: the replay is done: " << rows_.load() << " rows in " << clockText(clock)
+                << (options_.pace1991 ? " of 1991 time" : "") << "\n";
     if (error) std::rethrow_exception(error);
   } else {
     SignalsAbort signals(abort_);

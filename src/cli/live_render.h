@@ -113,6 +113,9 @@ class LiveRender {
   std::atomic<bool> abort_{false};
   std::atomic<int> rowsDone_{0}, rows_{0};
   std::atomic<std::uint64_t> rays_{0};
+  // The pace's keys (the window's thread only): Space, ] and [.
+  bool paused_ = false;
+  double speed_ = 1.0;
   int width_ = 0;  // the frame's
   bool tty_ = false;
 };

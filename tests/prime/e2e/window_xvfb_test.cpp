@@ -312,6 +312,31 @@ TEST_F(XvfbTest, TraceDrawsEachPixelWherePutPixelPutItAndWaitsForEsc) {
   EXPECT_EQ(s.read("graph_scr"), withWindow);
 }
 
+// --pace 1991 in a window: the 1991 replay (minutes of it) paused with
+// Space, sped up with ] until it is done, said so, and the window waits.
+TEST_F(XvfbTest, PacedReplayPausesSpeedsUpAndSaysWhenItIsDone) {
+  prime::test::TempScene s;
+  sphere(s);
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ChildProcess trace({PRIME_EXE, "trace", "--model", "--pace", "1991", s.path().string()}, env());
+  ASSERT_TRUE(trace.waitForErr("Space pause, [ ] slower / faster", 60000)) << trace.err();
+  const std::string id = windowId(trace.err());
+  ASSERT_FALSE(id.empty()) << trace.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "space"}), 0);
+  EXPECT_TRUE(trace.waitForErr("prime: paused (Space resumes)", 10000)) << trace.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "space"}), 0);
+  EXPECT_TRUE(trace.waitForErr("prime: pace x1\n", 10000)) << trace.err();
+  for (int i = 0; i < 13; ++i)
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "bracketright"}), 0);
+  EXPECT_TRUE(trace.waitForErr("prime: pace x4096\n", 10000)) << trace.err();
+  ASSERT_TRUE(trace.waitForErr("prime: the replay is done: 769 rows in ", 60000)) << trace.err();
+  EXPECT_THAT(trace.err(), HasSubstr(" of 1991 time\n"));
+  ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 20000)) << trace.err();
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
+  EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
+  EXPECT_THAT(trace.out(), HasSubstr("1991 estimate: "));
+}
+
 TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
   prime::test::TempScene s;
   sphere(s);
