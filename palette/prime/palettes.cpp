@@ -1,5 +1,6 @@
 #include "palette/prime/palettes.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "legacy_io/common/error.h"
@@ -78,6 +79,40 @@ Palette resolvePalette(const std::string& nameOrFile) {
                          "no such palette or file");
   }
   return readPaletteFile(nameOrFile);
+}
+
+std::string_view monitorName(Monitor m) {
+  switch (m) {
+    case Monitor::Mono8503:
+      return "8503";
+    case Monitor::Mono8503Summed:
+      return "8503-summed";
+    case Monitor::Colour8514:
+      break;
+  }
+  return "8514";
+}
+
+std::optional<Monitor> monitorFromName(std::string_view name) {
+  for (Monitor m : {Monitor::Colour8514, Monitor::Mono8503, Monitor::Mono8503Summed})
+    if (name == monitorName(m)) return m;
+  return std::nullopt;
+}
+
+Palette onMonitor(Palette palette, Monitor m) {
+  if (m == Monitor::Colour8514) return palette;
+  for (Dac6& e : palette.dac) {
+    const int grey =
+        m == Monitor::Mono8503 ? e.g : std::min(63, (77 * e.r + 151 * e.g + 28 * e.b + 0x80) >> 8);
+    e = {static_cast<std::uint8_t>(grey), static_cast<std::uint8_t>(grey),
+         static_cast<std::uint8_t>(grey)};
+  }
+  const std::string shown = m == Monitor::Mono8503
+                                ? " on the IBM 8503 monochrome display"
+                                : " on the IBM 8503, greys summed as the VGA BIOS";
+  palette.name += " (" + std::string(monitorName(m)) + ")";
+  palette.description = (palette.description.empty() ? palette.name : palette.description) + shown;
+  return palette;
 }
 
 }  // namespace prime

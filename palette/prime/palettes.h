@@ -40,6 +40,21 @@ const std::vector<std::string>& builtinPaletteNames();
 // The built-in palette of that name ("8514" is another name for "listing");
 // nullopt if there is none.
 std::optional<Palette> findBuiltinPalette(std::string_view name);
+
+// The display the 8514/A drove (--monitor; docs/prime/palette.md, "The
+// monitor"). The adapter's DAC sends red, green and blue whatever is
+// attached; a monochrome display (the IBM 8503) shows the green signal as
+// its grey. The 8514/A and its Adapter Interface do no grey-scale summing
+// (that is the VGA BIOS's, INT 10h AX=101Bh: 30 % red, 59 % green, 11 %
+// blue), which Mono8503Summed shows for comparison.
+enum class Monitor { Colour8514, Mono8503, Mono8503Summed };
+std::string_view monitorName(Monitor m);  // "8514", "8503", "8503-summed"
+std::optional<Monitor> monitorFromName(std::string_view name);
+// The palette as the monitor shows it: unchanged on the 8514 colour
+// display; on a monochrome one every entry grey (its green level, or the
+// VGA BIOS's sum (77 R + 151 G + 28 B + 128) / 256 of the 6-bit values),
+// named for the monitor.
+Palette onMonitor(Palette palette, Monitor m);
 // The palette a graph file's graphType implies: 0 -> "vga", anything else ->
 // "listing" (RayTrace.c: 0 = DETECT, 1 = IBM8514HI). A Colour Plate 3 render
 // also writes graphType 1: view it with --palette plate3.

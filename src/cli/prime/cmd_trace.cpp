@@ -290,7 +290,7 @@ class PrimeTrace : public TraceJob {
     display_->noWindow = flags_->live.noWindow;
     const bool headless = display::headlessReason(display_->noWindow).has_value();
     screen_.emplace(headless ? 1 : camera_->screenWidth(), headless ? 1 : camera_->screenHeight(),
-                    windowPalettes(palette_), dacOf(*display_));
+                    windowPalettes(palette_, *display_), dacOf(*display_));
   }
   bool quiet() const override { return flags_->quiet; }
   display::LiveFrame& frame() override { return *screen_; }
@@ -369,7 +369,7 @@ class PrimeTrace : public TraceJob {
   std::vector<std::string> write() override {
     if (quantizing_) {
       const Palette quantized = quantizeGraph(result_, flags_->quantize);
-      if (display_->palette.empty()) palette_ = quantized;
+      if (display_->palette.empty()) palette_ = onMonitorOf(*display_, quantized);
       writeGraphAndCompanion(target_, result_.graph, companion(quantized, true));
     } else {
       writeGraphAndCompanion(target_, result_.graph,

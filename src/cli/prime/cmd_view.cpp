@@ -35,7 +35,7 @@ void addViewOptions(CLI::App* cmd, Action& action) {
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, false);
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       auto headless = display::headlessReason(o->noWindow);
-      display::LiveScreen live(g.width, g.height, windowPalettes(palette), dacOf(*o));
+      display::LiveScreen live(g.width, g.height, windowPalettes(palette, *o), dacOf(*o));
       std::unique_ptr<display::ScreenWindow> window;
       if (!headless) {
         try {

@@ -22,6 +22,15 @@ void addDacOption(CLI::App* cmd, DisplayOptions& o) {
   cmd->add_option("--dac", o.dac,
                   "How the 6-bit DAC values become 8-bit: round (default), replicate, truncate")
       ->check(CLI::IsMember({"round", "replicate", "truncate"}));
+  cmd->add_option("--monitor", o.monitor,
+                  "The display the 8514/A drove: 8514 (the colour display; default), 8503 (the "
+                  "monochrome display: the green signal as grey), 8503-summed (greys summed "
+                  "30/59/11 as the VGA BIOS did, for comparison)")
+      ->check(CLI::IsMember({"8514", "8503", "8503-summed"}));
+}
+
+Palette onMonitorOf(const DisplayOptions& o, Palette palette) {
+  return onMonitor(std::move(palette), monitorFromName(o.monitor).value_or(Monitor::Colour8514));
 }
 
 void addAreaOption(CLI::App* cmd, DisplayOptions& o, const std::string& name) {
@@ -165,13 +174,15 @@ ImageArea areaOf(const DisplayOptions& o) {
 }
 
 Palette paletteOf(const DisplayOptions& o, const std::string& impliedName) {
-  return resolvePalette(o.palette.empty() ? impliedName : o.palette);
+  return onMonitorOf(o, resolvePalette(o.palette.empty() ? impliedName : o.palette));
 }
 
-std::vector<Palette> windowPalettes(const Palette& first) {
+std::vector<Palette> windowPalettes(const Palette& first, const DisplayOptions& o) {
   std::vector<Palette> all{first};
-  for (const auto& name : builtinPaletteNames())
-    if (name != first.name) all.push_back(*findBuiltinPalette(name));
+  for (const auto& name : builtinPaletteNames()) {
+    Palette p = onMonitorOf(o, *findBuiltinPalette(name));
+    if (p.name != first.name) all.push_back(std::move(p));
+  }
   return all;
 }
 
@@ -210,7 +221,7 @@ Geometry geometryOf(const DisplayOptions& o, const std::optional<GraphInfo>& inf
 
 Palette paletteOf(const DisplayOptions& o, const std::optional<GraphInfo>& info,
                   const std::string& impliedName) {
-  if (o.palette.empty() && info) return info->palette;
+  if (o.palette.empty() && info) return onMonitorOf(o, info->palette);
   return paletteOf(o, impliedName);
 }
 

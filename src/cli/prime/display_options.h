@@ -19,11 +19,12 @@
 namespace prime::cli {
 
 struct DisplayOptions {
-  std::string palette;         // empty: the one the graph type (or the mapping) implies
-  std::string dac = "round";   // 6-to-8-bit conversion
-  std::string area = "image";  // PNG area
-  std::vector<int> at;         // --at X Y
-  std::vector<int> screen;     // --screen W H (view, export)
+  std::string palette;           // empty: the one the graph type (or the mapping) implies
+  std::string dac = "round";     // 6-to-8-bit conversion
+  std::string monitor = "8514";  // --monitor 8514|8503|8503-summed
+  std::string area = "image";    // PNG area
+  std::vector<int> at;           // --at X Y
+  std::vector<int> screen;       // --screen W H (view, export)
   int zoom = 1;
   bool fullscreen = false;        // --fullscreen
   std::string scale = "integer";  // --scale integer|aspect (G23)
@@ -80,7 +81,10 @@ ImageArea areaOf(const DisplayOptions& o);
 // The palette to show: --palette if given, else `impliedName`.
 Palette paletteOf(const DisplayOptions& o, const std::string& impliedName);
 // `first`, then the other built-in palettes: what the window's P key cycles.
-std::vector<Palette> windowPalettes(const Palette& first);
+// `first` is already on the monitor; the others are put on `o`'s.
+std::vector<Palette> windowPalettes(const Palette& first, const DisplayOptions& o);
+// --monitor: the palette as that display shows it (palette/prime/palettes.h).
+Palette onMonitorOf(const DisplayOptions& o, Palette palette);
 
 struct Geometry {
   int width = Screen::kWidth, height = Screen::kHeight;

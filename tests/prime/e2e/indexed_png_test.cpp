@@ -188,4 +188,41 @@ TEST(IndexedPng, SettingsThatChangePixelsAreNamedAndAnUpscaledCopyIsWhole) {
   EXPECT_THAT(u.text["Upscaled"], HasSubstr("2 x 2"));
 }
 
+// --monitor 8503: the same indices, the palette the monochrome display
+// showed (the green signal as grey); 8503-summed the VGA BIOS's sum.
+TEST(IndexedPng, TheMonochromeMonitorShowsTheGreenSignalAsGrey) {
+  prime::test::TempScene s;
+  fs::copy(fs::path(PRIME_SCENES) / "plate2", s.path(), fs::copy_options::recursive);
+  std::string err;
+  const fs::path colour = s.path("c.png"), mono = s.path("m.png"), summed = s.path("s.png");
+  ASSERT_EQ(
+      tracePrime({"trace", s.path().string(), "--model", "--png", colour.string(), "-q"}, &err), 0)
+      << err;
+  ASSERT_EQ(
+      tracePrime({"trace", s.path().string(), "--png", mono.string(), "--monitor", "8503", "-q"},
+                 &err),
+      0)
+      << err;
+  ASSERT_EQ(tracePrime({"trace", s.path().string(), "--png", summed.string(), "--monitor",
+                        "8503-summed", "-q"},
+                       &err),
+            0)
+      << err;
+  Decoded c = decode(colour), m = decode(mono), v = decode(summed);
+  EXPECT_EQ(m.pixels, c.pixels) << "the monitor changes no index";
+  const prime::DacTable dac = prime::findBuiltinPalette("listing")->dac;
+  ASSERT_EQ(m.palette.size(), 256u);
+  ASSERT_EQ(v.palette.size(), 256u);
+  for (std::size_t i = 0; i < 256; ++i) {
+    const int green = (dac[i].g * 255 + 31) / 63;
+    EXPECT_EQ(m.palette[i].red, green) << i;
+    EXPECT_EQ(m.palette[i].green, green) << i;
+    EXPECT_EQ(m.palette[i].blue, green) << i;
+    const int sum6 = std::min(63, (77 * dac[i].r + 151 * dac[i].g + 28 * dac[i].b + 128) >> 8);
+    EXPECT_EQ(v.palette[i].green, (sum6 * 255 + 31) / 63) << i;
+  }
+  EXPECT_THAT(m.text["Palette"], HasSubstr("8503 monochrome"));
+  EXPECT_THAT(m.text["Settings"], HasSubstr("--monitor 8503"));
+}
+
 }  // namespace indexed_png
