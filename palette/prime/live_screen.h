@@ -114,6 +114,8 @@ class LiveScreen : public LiveFrame {
     out.palette = pngPalette(present(palettes_[paletteIndex_].dac, dac_));
     return true;
   }
+  bool paletteChart(Image8& out) const override;
+  std::string pixelAbout(int x, int y) const override;
   Palette palette() const {
     std::lock_guard lock(mutex_);
     return palettes_[paletteIndex_];

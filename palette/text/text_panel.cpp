@@ -201,6 +201,17 @@ std::vector<std::string> wrapLines(std::string_view text, int columns, int maxLi
   return all;
 }
 
+void drawText(Image8& image, int x, int top, std::string_view text,
+              std::array<std::uint8_t, 3> ink) {
+  Font& font = Font::get();
+  const std::lock_guard<std::mutex> hold(font.lock());
+  const int baseline = top + font.ascender();
+  for (const char32_t c : decode(text)) {
+    font.draw(image, x, baseline, c, ink);
+    x += font.cell().advance;
+  }
+}
+
 TextCell textCell() {
   return Font::get().cell();
 }

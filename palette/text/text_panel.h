@@ -4,6 +4,8 @@
 // DejaVu Sans Mono, fonts-dejavu-core), rendered by FreeType, anti-aliased;
 // it is found and opened once per process, on the first panel.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +28,11 @@ std::vector<std::string> wrapLines(std::string_view text, int columns, int maxLi
 // the picture high. Returns the box. Throws std::runtime_error when no
 // monospace font can be found or opened (saying which package gives one).
 Rect drawTextPanel(Image8& image, std::string_view text, int keepClear);
+
+// One line of `text` (UTF-8) in `ink`, its cells' top-left at (x, top),
+// clipped to the picture (throws as drawTextPanel).
+void drawText(Image8& image, int x, int top, std::string_view text,
+              std::array<std::uint8_t, 3> ink);
 
 // The font's cell: the advance of a character and the height of a line, in
 // pixels (throws as drawTextPanel).

@@ -67,6 +67,12 @@ class LiveFrame {
   // are shown through, when the frame is one (PRIME's 8514/A screen): what
   // a screenshot keeps. False for a true-colour frame.
   virtual bool indexed(IndexedImage8&) const { return false; }
+  // The T key: a chart of the frame's palette, the frame's size (PRIME: the
+  // 256 DAC entries with their indices and 6-bit values); false: none.
+  virtual bool paletteChart(Image8&) const { return false; }
+  // What the pointer is over, for the title ("pixel (x, y): index 123 -> DAC
+  // 12 34 56 -> RGB 48 137 226"); empty: nothing to say.
+  virtual std::string pixelAbout(int, int) const { return {}; }
 };
 
 }  // namespace prime::display

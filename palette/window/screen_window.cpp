@@ -143,6 +143,8 @@ struct ScreenWindow::Impl {
   bool exposed = false;
   bool quit = false;
   std::string title;
+  std::string hover;        // what the pointer is over (the frame's pixelAbout)
+  bool chartShown = false;  // the T key's palette chart is the overlay
   std::function<bool(const module::Event&)> inputHandler;
 
   Size picture() const { return {screen.width(), screen.height()}; }
@@ -226,6 +228,7 @@ struct ScreenWindow::Impl {
     else if (zoom != 1)
       t += " - zoom " + std::to_string(zoom) + "x";
     if (!status.empty()) t += " - " + status;
+    if (!hover.empty()) t += " - " + hover;
     if (t != title) {
       title = t;
       window->setTitle(title.c_str());
@@ -267,6 +270,7 @@ struct ScreenWindow::Impl {
       unshown.mark(changed);
       if (!overlay.empty()) {
         overlay.clear();
+        chartShown = false;
         unshown.mark({0, 0, screen.width(), screen.height()});
       }
     }
@@ -298,6 +302,18 @@ struct ScreenWindow::Impl {
 
   void onKey(const module::Event& e) {
     using module::Key;
+    if (e.letter == 't') {  // the palette chart, and back
+      Image8 chart;
+      if (chartShown) {
+        overlay.clear();
+        chartShown = false;
+        unshown.mark({0, 0, screen.width(), screen.height()});
+      } else if (screen.paletteChart(chart)) {
+        setOverlay(chart);
+        chartShown = true;
+      }
+      return;
+    }
     switch (e.key) {
       case Key::Escape:
         quit = true;
@@ -355,8 +371,20 @@ struct ScreenWindow::Impl {
         everything = true;
         followWindowSize();
         break;
+      case module::Event::Type::MouseMotion: {
+        std::string about;
+        if (!fit.empty() && e.x >= fit.x && e.y >= fit.y && e.x < fit.x + fit.w &&
+            e.y < fit.y + fit.h)
+          about = screen.pixelAbout(
+              static_cast<int>(static_cast<long long>(e.x - fit.x) * screen.width() / fit.w),
+              static_cast<int>(static_cast<long long>(e.y - fit.y) * screen.height() / fit.h));
+        if (about != hover) {
+          hover = about;
+          updateTitle();
+        }
+        break;
+      }
       case module::Event::Type::Other:
-      case module::Event::Type::MouseMotion:
       case module::Event::Type::MouseButton:
       case module::Event::Type::Wheel:
         break;
@@ -390,6 +418,18 @@ struct ScreenWindow::Impl {
   // The S key: the frame at its own size (an 8514/A screen as its 256
   // indices and palette, an indexed PNG; else its colours), not the window's
   // scaled pixels; prime-screenshot-N.png, the first N not taken.
+  void setOverlay(const Image8& drawing) {
+    if (drawing.width != screen.width() || drawing.height != screen.height())
+      throw WindowError("an overlay of " + std::to_string(drawing.width) + " x " +
+                        std::to_string(drawing.height) + " on a picture of " +
+                        std::to_string(screen.width()) + " x " + std::to_string(screen.height()));
+    overlay.resize(latest.size());
+    for (std::size_t i = 0; i < overlay.size(); ++i)
+      overlay[i] = static_cast<std::uint32_t>(drawing.rgb[3 * i]) << 16 |
+                   static_cast<std::uint32_t>(drawing.rgb[3 * i + 1]) << 8 | drawing.rgb[3 * i + 2];
+    unshown.mark({0, 0, screen.width(), screen.height()});
+  }
+
   std::string saveScreenshot() {
     fs::path path;
     for (int n = 1;; ++n) {
@@ -463,22 +503,15 @@ Image8 ScreenWindow::picture() const {
 }
 
 void ScreenWindow::showOverlay(const Image8& drawing) {
-  Impl& w = *impl_;
-  if (drawing.width != w.screen.width() || drawing.height != w.screen.height())
-    throw WindowError("an overlay of " + std::to_string(drawing.width) + " x " +
-                      std::to_string(drawing.height) + " on a picture of " +
-                      std::to_string(w.screen.width()) + " x " + std::to_string(w.screen.height()));
-  w.overlay.resize(w.latest.size());
-  for (std::size_t i = 0; i < w.overlay.size(); ++i)
-    w.overlay[i] = static_cast<std::uint32_t>(drawing.rgb[3 * i]) << 16 |
-                   static_cast<std::uint32_t>(drawing.rgb[3 * i + 1]) << 8 | drawing.rgb[3 * i + 2];
-  w.unshown.mark({0, 0, w.screen.width(), w.screen.height()});
+  impl_->setOverlay(drawing);
+  impl_->chartShown = false;
 }
 
 void ScreenWindow::clearOverlay() {
   Impl& w = *impl_;
   if (w.overlay.empty()) return;
   w.overlay.clear();
+  w.chartShown = false;
   w.unshown.mark({0, 0, w.screen.width(), w.screen.height()});
 }
 

@@ -157,8 +157,9 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
                                 : "\nprime: pace x" + numberText(speed_) + "\n");
         return true;
       }
-      if (!options_.cameraKey || e.type != display::module::Event::Type::Key || e.letter != 'c')
-        return false;
+      if (e.type != display::module::Event::Type::Key) return false;
+      if (e.letter == 'r' && options_.recordKey) return options_.recordKey(), true;
+      if (!options_.cameraKey || e.letter != 'c') return false;
       options_.cameraKey();
       return true;
     });
@@ -170,7 +171,8 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
                   << "prime: drawing in window 0x" << std::hex << window_->nativeId()
                   << "; Esc aborts (keys: + - zoom, "
                   << (options_.keys.empty() ? "" : options_.keys + ", ")
-                  << (options_.cameraKey ? "C camera, " : "") << "S screenshot"
+                  << (options_.cameraKey ? "C camera, " : "")
+                  << (options_.recordKey ? "R recording, " : "") << "S screenshot"
                   << (paced() ? ", Space pause, [ ] slower / faster" : "")
                   << (options_.probe ? "; when done, click a pixel: its rays" : "") << ")\n")
                      .str()

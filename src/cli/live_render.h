@@ -43,6 +43,9 @@ struct LiveOptions {
   // flat 300 rays a second.
   std::function<double()> seconds1991;
   int firstRow = 0;  // the frame row of the render's row 0 (PRIME: the placement)
+  // The R key: keep the drawing as prime-recording-N.gif (PRIME: --record's
+  // film of the render shown); unset: R does nothing.
+  std::function<void()> recordKey;
   // What the S key's screenshots say made them (runTrace: the render's
   // provenance).
   PngMeta screenshot;

@@ -273,10 +273,12 @@ class PrimeTrace : public TraceJob {
         !flags_->trueColourPng.empty() || quantizing_;  // only these read them
     // --record and --pace 1991 time each row by the era model, from the
     // counts of the listing's own work (no skipped tests: the same pixels).
-    if (!record_->file.empty() || flags_->live.pace1991) {
-      options_->settings.rowStats = &rowStats_;
-      options_->settings.trace.skipUnneededWork = false;
-    }
+    // (Every render keeps the rows' counts: the window's R key records by
+    // them; without --record or --pace 1991 they are the port's, which
+    // skips work the listing did.)
+    options_->settings.rowStats = &rowStats_;
+    listingCounts_ = !record_->file.empty() || flags_->live.pace1991;
+    if (listingCounts_) options_->settings.trace.skipUnneededWork = false;
     const RenderSettings& settings = options_->settings;
     camera_.emplace(settings.camera);
     at_ = {camera_->screenX(0), camera_->screenY(0)};
@@ -298,8 +300,24 @@ class PrimeTrace : public TraceJob {
     options.caption = *dir_;
     options.keys = "P palette, D DAC";
     options.firstRow = at_.top;  // the image's row 0 on the screen
-    if (options_->settings.rowStats != nullptr)
-      options.seconds1991 = [this] { return seconds1991Done_.load(); };
+    if (listingCounts_) options.seconds1991 = [this] { return seconds1991Done_.load(); };
+    // R: the drawing of the finished render, timed as --record would time it.
+    options.recordKey = [this] {
+      if (!rendered_ || result_.aborted) {
+        std::cerr << "prime: R records the drawing once the render is done\n";
+        return;
+      }
+      try {
+        RecordFlags r = *record_;
+        r.file = freeRecordingName();
+        recordGraphDrawing(r, result_.graph, at_, camera_->screenWidth(), camera_->screenHeight(),
+                           present(palette_.dac, dacOf(*display_)), rowTimes(), rowTimesSource(),
+                           false);
+        std::fflush(stdout);
+      } catch (const std::exception& e) {
+        std::cerr << "prime: recording failed: " << e.what() << "\n";
+      }
+    };
     const auto& s = options_->settings;
     options.cameraKey = [free = s.camera.free, dir = *dir_,
                          profile = options_->profile +
@@ -339,12 +357,15 @@ class PrimeTrace : public TraceJob {
     }
     cb.rowDone = [&](int row, std::span<const std::int16_t> indices) {
       finished_[static_cast<std::size_t>(row)] = 1;
-      if (!rowStats_.empty())  // written before this call (RenderSettings::rowStats)
+      if (listingCounts_)  // written before this call (RenderSettings::rowStats)
         seconds1991Done_ = seconds1991Done_ + rowSeconds1991(row);
       if (stream_) stream_->row(row, indices);
       if (live.windowed()) screen_->drawRow(at_, row, indices);  // PutPixel(j, i, color)
     };
-    live.run([&] { result_ = prime::render(*scene_, settings, cb); });
+    live.run([&] {
+      result_ = prime::render(*scene_, settings, cb);
+      rendered_ = true;
+    });
   }
   bool aborted() const override { return result_.aborted; }
   void abort() override {
@@ -385,14 +406,9 @@ class PrimeTrace : public TraceJob {
                                     flags_->trueColourPng, provenance_))
       written.push_back(std::move(f));
     if (!record_->file.empty()) {
-      std::vector<double> rowSeconds(static_cast<std::size_t>(camera_->rows()));
-      for (int r = 0; r < camera_->rows(); ++r)
-        rowSeconds[static_cast<std::size_t>(r)] =
-            flags_->live.pace > 0 ? 1.0 / flags_->live.pace : rowSeconds1991(r);
-      recordGraphDrawing(
-          *record_, result_.graph, at_, camera_->screenWidth(), camera_->screenHeight(),
-          present(palette_.dac, dacOf(*display_)), rowSeconds,
-          flags_->live.pace > 0 ? "--pace rows a second" : "the 1991 estimate", flags_->quiet);
+      recordGraphDrawing(*record_, result_.graph, at_, camera_->screenWidth(),
+                         camera_->screenHeight(), present(palette_.dac, dacOf(*display_)),
+                         rowTimes(), rowTimesSource(), flags_->quiet);
       written.push_back(record_->file);
     }
     if (!flags_->png8514.empty()) {
@@ -405,7 +421,7 @@ class PrimeTrace : public TraceJob {
   }
   void summary(const std::vector<std::string>&) const override {
     printSummary(result_, target_);
-    if (!rowStats_.empty()) {  // --pace 1991, --record: the era model beside the flat rate
+    if (listingCounts_) {  // --pace 1991, --record: the era model beside the flat rate
       double era = 0.0;
       for (int r = 0; r < camera_->rows(); ++r) era += rowSeconds1991(r);
       std::printf(
@@ -425,6 +441,20 @@ class PrimeTrace : public TraceJob {
     return seconds1991(rowStats_[static_cast<std::size_t>(r)],
                        static_cast<std::uint64_t>(camera_->columns()),
                        static_cast<int>(scene_->lights.size()));
+  }
+  // Each row's time in a recording: 1 / N with --pace N, else the era model.
+  std::vector<double> rowTimes() const {
+    std::vector<double> t(static_cast<std::size_t>(camera_->rows()));
+    for (int r = 0; r < camera_->rows(); ++r)
+      t[static_cast<std::size_t>(r)] =
+          flags_->live.pace > 0 ? 1.0 / flags_->live.pace : rowSeconds1991(r);
+    return t;
+  }
+  std::string rowTimesSource() const {
+    if (flags_->live.pace > 0) return "--pace rows a second";
+    return listingCounts_ ? "the 1991 estimate"
+                          : "the 1991 estimate of the port's counts, which skip work the listing "
+                            "did: --pace 1991 counts the listing's";
   }
   static std::string minutesText(double s) {
     char buf[48];
@@ -468,6 +498,8 @@ class PrimeTrace : public TraceJob {
   std::shared_ptr<RecordFlags> record_;
   std::vector<TraceStats> rowStats_;  // --record, --pace 1991: each row's counts
   std::atomic<double> seconds1991Done_{0.0};
+  bool listingCounts_ = false;         // rowStats_ count the listing's own work
+  std::atomic<bool> rendered_{false};  // result_ holds the finished render
   std::shared_ptr<std::string> dir_;
   std::shared_ptr<RenderOptions> options_;
   std::shared_ptr<DisplayOptions> display_;

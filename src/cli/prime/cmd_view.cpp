@@ -1,13 +1,17 @@
 // prime view FILE: replay a graph file onto the emulated 8514/A screen in a
 // window, through a palette (default: the one its graphType implies), and
 // wait for Esc as WaitForEsc did.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 #include "palette/prime/live_screen.h"
 #include "palette/window/screen_window.h"
+#include "src/cli/camera_flags.h"
 #include "src/cli/commands.h"
+#include "src/cli/live_render.h"
 #include "src/cli/option_values.h"
 #include "src/cli/prime/display_options.h"
 
@@ -27,13 +31,48 @@ void addViewOptions(CLI::App* cmd, Action& action) {
   addWindowOptions(cmd, *o);
   cmd->add_option("--rows-per-second", *rate,
                   "Replay row by row at this rate (default 0: all at once)")
-      ->check(atLeast(0));
+      ->check(atLeast(0))
+      ->group("");  // the older name of --pace N
+  auto pace1991 = std::make_shared<bool>(false);
+  cmd->add_option_function<std::string>(
+         "--pace",
+         [rate, pace1991](const std::string& text) {
+           LiveOptions parsed;
+           parsePace(text, parsed);
+           *rate = parsed.pace;
+           *pace1991 = parsed.pace1991;
+         },
+         "Replay row by row: N rows a second, or 1991 (a graph file holds no counts of the "
+         "work: one ray a pixel at 300 rays a second; trace --pace 1991 has the era model). "
+         "Space pauses, ] and [ double and halve it")
+      ->type_name("N|1991");
+  auto record = std::make_shared<RecordFlags>();
+  addRecordOptions(cmd, *record);
   cmd->callback([=, &action] {
     action = [=] {
       const std::optional<GraphInfo> info = graphInfoFor(*o, *file);
       const Geometry g = geometryOf(*o, info);
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, false);
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
+      const int columns = f.graph.width();
+      // Each row's time: --pace N, or 1991's flat rate of one ray a pixel.
+      const bool paced = *rate > 0 || *pace1991;
+      std::vector<double> rowSeconds(static_cast<std::size_t>(f.graph.height()),
+                                     *rate > 0 ? 1.0 / *rate : columns / kRaysPerSecond1991);
+      // What a recording draws: the rows present (a .partial's missing rows
+      // take no time and leave the screen as cleared).
+      std::vector<double> recordTimes = rowSeconds;
+      if (!f.complete())
+        for (std::size_t r = (f.pixelsPresent + columns - 1) / columns; r < recordTimes.size(); ++r)
+          recordTimes[r] = 0.0;
+      io::GraphFile shownGraph = f.graph;
+      for (std::size_t i = f.pixelsPresent; i < shownGraph.pixels.size(); ++i)
+        shownGraph.pixels[i] = 0;
+      const std::string timeSource =
+          *rate > 0 ? "--pace rows a second" : "one ray a pixel at 300 a second";
+      if (!record->file.empty())
+        recordGraphDrawing(*record, shownGraph, g.at, g.width, g.height,
+                           present(palette.dac, dacOf(*o)), recordTimes, timeSource, false);
       auto headless = display::headlessReason(o->noWindow);
       display::LiveScreen live(g.width, g.height, windowPalettes(palette, *o), dacOf(*o));
       std::unique_ptr<display::ScreenWindow> window;
@@ -48,12 +87,43 @@ void addViewOptions(CLI::App* cmd, Action& action) {
         }
       }
       if (!window) {
-        std::cerr << "prime: running headless (" << *headless
-                  << "): nothing to show; `prime export " << *file
-                  << " OUT.png` writes the picture\n";
+        if (record->file.empty())
+          std::cerr << "prime: running headless (" << *headless
+                    << "): nothing to show; `prime export " << *file
+                    << " OUT.png` writes the picture\n";
         return 0;
       }
-      const int columns = f.graph.width();
+      // The pace's keys: Space pauses, ] and [ double and halve it.
+      bool paused = false;
+      double speed = 1.0;
+      window->setInputHandler([&](const display::module::Event& e) {
+        using display::module::Key;
+        if (e.type == display::module::Event::Type::Key && e.letter == 'r') {
+          // R: the drawing kept, timed as --record would time it.
+          try {
+            RecordFlags r = *record;
+            r.file = freeRecordingName();
+            recordGraphDrawing(r, shownGraph, g.at, g.width, g.height,
+                               present(palette.dac, dacOf(*o)), recordTimes, timeSource, false);
+            std::fflush(stdout);
+          } catch (const std::exception& ex) {
+            std::cerr << "prime: recording failed: " << ex.what() << "\n";
+          }
+          return true;
+        }
+        if (!paced || e.type != display::module::Event::Type::Key) return false;
+        if (e.key == Key::Pause)
+          paused = !paused;
+        else if (e.key == Key::Faster)
+          speed = std::min(speed * 2.0, 4096.0);
+        else if (e.key == Key::Slower)
+          speed = std::max(speed / 2.0, 1.0 / 64.0);
+        else
+          return false;
+        std::cerr << (paused ? "prime: paused (Space resumes)\n"
+                             : "prime: pace x" + numberText(speed) + "\n");
+        return true;
+      });
       const int rowsPresent =
           columns > 0 ? static_cast<int>((f.pixelsPresent + columns - 1) / columns) : 0;
       const auto rowSpan = [&](int row) {
@@ -61,17 +131,19 @@ void addViewOptions(CLI::App* cmd, Action& action) {
         return std::span(f.graph.pixels)
             .subspan(start, std::min<std::size_t>(columns, f.pixelsPresent - start));
       };
-      const auto start = std::chrono::steady_clock::now();
+      auto last = std::chrono::steady_clock::now();
+      double clock = 0.0, rowEnds = 0.0;  // the pace's time; the drawn rows' times summed
       int drawn = 0;
       bool announced = false;
       for (;;) {
-        int due = rowsPresent;
-        if (*rate > 0) {
-          const double s =
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          due = std::min(rowsPresent, static_cast<int>(s * *rate) + 1);
+        const auto now = std::chrono::steady_clock::now();
+        if (!paused) clock += std::chrono::duration<double>(now - last).count() * speed;
+        last = now;
+        // A row shows once the pace's clock has reached its start (the first at once).
+        for (; drawn < rowsPresent && (!paced || rowEnds <= clock); ++drawn) {
+          live.drawRow(g.at, drawn, rowSpan(drawn));
+          rowEnds += rowSeconds[static_cast<std::size_t>(drawn)];
         }
-        for (; drawn < due; ++drawn) live.drawRow(g.at, drawn, rowSpan(drawn));
         window->setStatus((drawn < rowsPresent
                                ? "row " + std::to_string(drawn) + "/" + std::to_string(rowsPresent)
                                : std::to_string(rowsPresent) + " rows") +

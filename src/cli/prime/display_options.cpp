@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/common/error.h"
@@ -136,7 +137,7 @@ void addRecordOptions(CLI::App* cmd, RecordFlags& r) {
       ->type_name("FILE.gif");
   cmd->add_option("--record-length", r.length,
                   "The recording's length in seconds, the final screen's 3 s hold apart "
-                  "(default 20)")
+                  "(default: 20, or as drawn when the drawing is shorter)")
       ->check(CLI::Range(0.1, 86400.0));
   cmd->add_option("--record-speed", r.speed,
                   "Instead of a length: the drawing's seconds a second of the recording (1: as "
@@ -152,7 +153,9 @@ void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placem
   DrawingRecordOptions o;
   o.fps = r.fps;
   const double total = drawingSeconds(rowSeconds);
-  o.speed = r.speed > 0 ? r.speed : std::max(total / r.length, 1e-3);
+  o.speed = r.speed > 0    ? r.speed
+            : r.length > 0 ? std::max(total / r.length, 1e-3)
+                           : std::max(total / 20.0, 1.0);  // never slower than drawn
   const DrawingRecordSummary done =
       recordDrawing(r.file, graph, at, screenW, screenH, colours, rowSeconds, o);
   if (quiet) return;
@@ -163,6 +166,14 @@ void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placem
                 r.file.c_str(), done.frames, done.drawingSeconds, timeSource.c_str(), o.speed,
                 done.clipSeconds);
   std::fputs(line, stdout);
+}
+
+std::string freeRecordingName() {
+  for (int n = 1;; ++n) {
+    const std::string name = "prime-recording-" + std::to_string(n) + ".gif";
+    std::error_code ec;
+    if (!std::filesystem::exists(name, ec)) return name;
+  }
 }
 
 DacTo8 dacOf(const DisplayOptions& o) {

@@ -64,10 +64,11 @@ std::string paletteLabel(const Palette& palette);
 // --record FILE and its clip's length, speed and frame rate (trace, view):
 // the drawing kept as an animated GIF (palette/prime/drawing_record.h).
 struct RecordFlags {
-  std::string file;    // --record FILE.gif
-  double length = 20;  // --record-length SECONDS: the clip, before its hold
-  double speed = 0;    // --record-speed X: drawing seconds a clip second (0: from length)
-  double fps = 25;     // --record-fps N
+  std::string file;   // --record FILE.gif
+  double length = 0;  // --record-length SECONDS: the clip, before its hold (0: 20 s, or as
+                      // drawn when the drawing is shorter)
+  double speed = 0;   // --record-speed X: drawing seconds a clip second (0: from length)
+  double fps = 25;    // --record-fps N
 };
 void addRecordOptions(CLI::App* cmd, RecordFlags& r);
 // Records the drawing of `graph` (rows timed by `rowSeconds`) into r.file
@@ -75,6 +76,10 @@ void addRecordOptions(CLI::App* cmd, RecordFlags& r);
 void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placement at, int screenW,
                         int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
                         const std::string& timeSource, bool quiet);
+
+// The first prime-recording-N.gif (N = 1, 2, ...) not taken in the current
+// directory: the R key's file.
+std::string freeRecordingName();
 
 DacTo8 dacOf(const DisplayOptions& o);
 ImageArea areaOf(const DisplayOptions& o);

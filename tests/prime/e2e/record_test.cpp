@@ -20,6 +20,7 @@ namespace record_test {
 namespace fs = std::filesystem;
 using prime::test::ChildProcess;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 struct Recording {
   int width = 0, height = 0, frames = 0;
@@ -125,6 +126,33 @@ TEST(Record, Plate2AtThe1991PaceInATwentySecondClipEndsOnTheFinalScreen) {
             0)
       << out;
   EXPECT_EQ(bytesOf(gif), first);
+}
+
+// view --record of the graph file trace wrote, at the same --pace, is the
+// same recording byte for byte: the drawing depends on the picture and the
+// rows' times only. Headless, with no window to wait for.
+TEST(Record, ViewOfTheGraphFileRecordsWhatTraceRecordedAtTheSamePace) {
+  prime::test::TempScene s;
+  fs::copy(fs::path(PRIME_SCENES) / "plate3", s.path(), fs::copy_options::recursive);
+  std::string out;
+  ASSERT_EQ(runPrime({"trace", s.path().string(), "--model", "--pace", "120", "--record",
+                      s.path("t.gif").string(), "--no-window", "-q"},
+                     &out),
+            0)
+      << out;
+  ASSERT_EQ(runPrime({"view", s.path("graph_scr").string(), "--pace", "120", "--record",
+                      s.path("v.gif").string(), "--no-window"},
+                     &out),
+            0)
+      << out;
+  EXPECT_THAT(out, HasSubstr("recorded " + s.path("v.gif").string()));
+  EXPECT_THAT(out, Not(HasSubstr("nothing to show")));
+  const std::string t = bytesOf(s.path("t.gif")), v = bytesOf(s.path("v.gif"));
+  EXPECT_FALSE(t.empty());
+  EXPECT_EQ(t, v);
+  // 769 rows at 120 a second: 6.4 s, recorded as drawn (never slowed).
+  const Recording r = decode(s.path("v.gif"));
+  EXPECT_NEAR(static_cast<double>(r.hundredths - r.lastDelay), 641.0, 5.0);
 }
 
 }  // namespace record_test

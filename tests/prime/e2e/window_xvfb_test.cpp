@@ -17,6 +17,7 @@
 
 #include "legacy_io/prime/graph_file.h"
 #include "palette/png_image.h"
+#include "palette/prime/palettes.h"
 #include "tests/support/child_process.h"
 #include "tests/support/temp_scene.h"
 
@@ -288,6 +289,54 @@ TEST_F(XvfbTest, ZoomAndScreenshotKeys) {
   EXPECT_EQ(view.wait(20000).value_or(-1), 0);
 }
 
+// The T key shows the 256 DAC entries as a chart (each a swatch, its
+// index and 6-bit values) and T again the picture; the pointer over a pixel
+// puts index -> DAC -> RGB in the title.
+TEST_F(XvfbTest, TheDacChartKeyAndThePixelUnderThePointer) {
+  prime::test::TempScene d;
+  prime::io::writeGraphFile(d.path("g").string(), patternGraph());
+  const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
+  ASSERT_EQ(run({PRIME_EXE, "export", d.path("g").string(), d.path("want.png").string(), "--area",
+                 "screen"}),
+            0);
+  const prime::Image8 want = prime::readPng(d.path("want.png").string());
+  ChildProcess view({PRIME_EXE, "view", d.path("g").string()}, env());
+  ASSERT_TRUE(view.waitForErr("; Esc or close the window to quit\n", 30000)) << view.err();
+  const std::string id = windowId(view.err());
+  EXPECT_EQ(captureMatches(run, id, d.path("a.xwd"), want, 1), "");
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "t"}), 0);
+  // Entry 200 in the chart: column 200 / 32 = 6 of 8, row 200 % 32 = 8 of
+  // 32; a swatch pixel clear of its label.
+  const prime::Rgb8 entry = prime::present(prime::findBuiltinPalette("listing")->dac)[200];
+  bool charted = false;
+  for (int attempt = 0; attempt < 25 && !charted; ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    if (run({"xwd", "-silent", "-id", id, "-out", d.path("c.xwd").string()}) != 0) continue;
+    const prime::Image8 shot = readXwd(d.path("c.xwd").string());
+    const std::uint8_t* p =
+        &shot.rgb[(static_cast<std::size_t>(8 * 24 + 20) * shot.width + 6 * 128 + 124) * 3];
+    charted = p[0] == entry.r && p[1] == entry.g && p[2] == entry.b;
+  }
+  EXPECT_TRUE(charted) << "no chart of the DAC after T";
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "t"}), 0);
+  EXPECT_EQ(captureMatches(run, id, d.path("b.xwd"), want, 1), "");
+  // The pixel (676, 1) of the screen: the file's (1, 1), 71 + 37 - 300 = -192,
+  // index -192 & 0xFF = 64.
+  EXPECT_EQ(run({"xdotool", "mousemove", "--window", id, "--sync", "676", "1"}), 0);
+  std::string title;
+  for (int attempt = 0; attempt < 25; ++attempt) {
+    ChildProcess name({"xdotool", "getwindowname", id}, env());
+    name.wait(10000);
+    title = name.out();
+    if (title.find("index 64 -> DAC") != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  EXPECT_THAT(title, HasSubstr("pixel (676, 1): index 64 -> DAC "));
+  EXPECT_THAT(title, HasSubstr(" -> RGB "));
+  view.signal(SIGTERM);
+  EXPECT_EQ(view.wait(20000).value_or(-1), 0);
+}
+
 using prime::test::sphere;
 
 TEST_F(XvfbTest, TraceDrawsEachPixelWherePutPixelPutItAndWaitsForEsc) {
@@ -318,8 +367,10 @@ TEST_F(XvfbTest, PacedReplayPausesSpeedsUpAndSaysWhenItIsDone) {
   prime::test::TempScene s;
   sphere(s);
   const auto run = [this](const std::vector<std::string>& argv) { return toolOrSay(argv); };
-  ChildProcess trace({PRIME_EXE, "trace", "--model", "--pace", "1991", s.path().string()}, env());
+  ChildProcess trace({PRIME_EXE, "trace", "--model", "--pace", "1991", s.path().string()}, env(),
+                     s.path().string());
   ASSERT_TRUE(trace.waitForErr("Space pause, [ ] slower / faster", 60000)) << trace.err();
+  EXPECT_THAT(trace.err(), HasSubstr("R recording, "));
   const std::string id = windowId(trace.err());
   ASSERT_FALSE(id.empty()) << trace.err();
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "space"}), 0);
@@ -332,9 +383,16 @@ TEST_F(XvfbTest, PacedReplayPausesSpeedsUpAndSaysWhenItIsDone) {
   ASSERT_TRUE(trace.waitForErr("prime: the replay is done: 769 rows in ", 60000)) << trace.err();
   EXPECT_THAT(trace.err(), HasSubstr(" of 1991 time\n"));
   ASSERT_TRUE(trace.waitForErr("the window stays open until Esc", 20000)) << trace.err();
+  // R: the drawing kept, in the current directory.
+  EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "r"}), 0);
+  for (int i = 0; i < 50 && !s.exists("prime-recording-1.gif"); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_TRUE(s.exists("prime-recording-1.gif"));
   EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "Escape"}), 0);
   EXPECT_EQ(trace.wait(20000).value_or(-1), 0) << trace.err();
   EXPECT_THAT(trace.out(), HasSubstr("1991 estimate: "));
+  EXPECT_THAT(trace.out(), HasSubstr("recorded prime-recording-1.gif: "));
+  EXPECT_THAT(trace.out(), HasSubstr("(the 1991 estimate)"));
 }
 
 TEST_F(XvfbTest, EscAbortsTraceAndLeavesOnlyAPartialFile) {
