@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -140,9 +141,11 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
       });
 
   display::ScreenWindow window(
-      frame,
-      {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale, false,
-       PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION}, {"Scene", job.name}}, 1, 1}});
+      frame, {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale, false,
+              PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION},
+                       {"Scene", std::filesystem::path(job.name).filename().string()}},
+                      1,
+                      1}});
   std::fprintf(
       stderr,
       "prime: walk: window 0x%lx, %d x %d: arrows / left-drag orbit, shift+arrows / "
