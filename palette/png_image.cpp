@@ -229,13 +229,20 @@ PngFile readPngFile(const std::string& path) {
   options.what = "a PNG picture";
   const std::vector<std::uint8_t> bytes = io::readInputFile(path, options);
   PngFile file;
-  file.rgb = pngFromBytes(bytes, path);  // every check, and the pixels of any PNG
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  checkChunkLengths(bytes, path);              // before libpng allocates for any chunk
+  std::string why = "libpng could not start";  // libpng's message, if it stops
+  png_structp png = png_create_read_struct(
+      PNG_LIBPNG_VER_STRING, &why,
+      [](png_structp p, png_const_charp message) {
+        *static_cast<std::string*>(png_get_error_ptr(p)) = message;
+        png_longjmp(p, 1);
+      },
+      nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   MemoryRead source{&bytes};
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
-    throw std::runtime_error(path + ": cannot read PNG");
+    throw std::runtime_error(path + ": cannot read PNG: " + why);
   }
   png_set_read_fn(png, &source, readFromMemory);
   png_read_info(png, info);
@@ -244,7 +251,10 @@ PngFile readPngFile(const std::string& path) {
   png_get_IHDR(png, info, &w, &h, &depth, &type, nullptr, nullptr, nullptr);
   png_colorp plte = nullptr;
   int entries = 0;
-  if (type == PNG_COLOR_TYPE_PALETTE && depth == 8 &&
+  // zlib never expands data more than 1032 times: a header that claims more
+  // one-byte pixels than the file can hold is refused unallocated.
+  const bool fits = static_cast<std::uint64_t>(w) * h <= 1032ull * bytes.size();
+  if (type == PNG_COLOR_TYPE_PALETTE && depth == 8 && fits &&
       png_get_PLTE(png, info, &plte, &entries) != 0 &&
       png_get_interlace_type(png, info) == PNG_INTERLACE_NONE) {
     IndexedImage8& img = file.palette;
@@ -257,7 +267,6 @@ PngFile readPngFile(const std::string& path) {
       png_read_row(png, &img.indices[static_cast<std::size_t>(y) * w], nullptr);
     png_read_end(png, info);
     file.indexed = true;
-    file.rgb = Image8{};
   }
   png_textp texts = nullptr;
   const int n = png_get_text(png, info, &texts, nullptr);
@@ -273,6 +282,7 @@ PngFile readPngFile(const std::string& path) {
     file.meta.aspectY = static_cast<int>(ay);
   }
   png_destroy_read_struct(&png, &info, nullptr);
+  if (!file.indexed) file.rgb = pngFromBytes(bytes, path);  // any other PNG, with its checks
   return file;
 }
 

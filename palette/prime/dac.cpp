@@ -21,6 +21,19 @@ std::string_view dacTo8Name(DacTo8 how) {
   return "round";
 }
 
+std::string_view dacTo8Rule(DacTo8 how) {
+  switch (how) {
+    case DacTo8::Replicate:
+      return "replicate: v8 = v6 * 4 + v6 / 16 (bit replication); v6 = v8 / 4";
+    case DacTo8::Truncate:
+      return "truncate: v8 = v6 * 255 / 63; v6 = (v8 * 63 + 254) / 255";
+    case DacTo8::Round:
+      break;
+  }
+  return "round: v8 = (v6 * 255 + 31) / 63, the nearest 8-bit level to v6 / 63; "
+         "v6 = (v8 * 63 + 127) / 255";
+}
+
 std::optional<DacTo8> dacTo8FromName(std::string_view name) {
   for (DacTo8 how : {DacTo8::Round, DacTo8::Replicate, DacTo8::Truncate})
     if (name == dacTo8Name(how)) return how;

@@ -59,6 +59,9 @@ constexpr std::uint8_t dacTo8(int v6, DacTo8 how) {
 
 std::string_view dacTo8Name(DacTo8 how);                      // "round", "replicate", "truncate"
 std::optional<DacTo8> dacTo8FromName(std::string_view name);  // the inverse; nullopt if unknown
+// The rule as a formula and its inverse, for what a picture says about
+// itself (a PNG's "DAC to 8 bits" text): "round: v8 = (v6 * 255 + 31) / 63, ...".
+std::string_view dacTo8Rule(DacTo8 how);
 
 // A colour on an 8-bit-per-channel display (PNG, window).
 struct Rgb8 {

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "palette/rect.h"
+#include "palette/window/window_module.h"
 
 namespace prime::display {
 
@@ -111,6 +112,43 @@ class RowPacer {
   bool started_ = false;
   double last_ = 0.0;
   double shown_ = 0.0;
+};
+
+// The pace's own clock and its keys: Space pauses and resumes, ] and [
+// double and halve the speed (x1/64 .. x4096). Time is the caller's, in
+// seconds, so a test can fake it.
+class PaceClock {
+ public:
+  // The pace's time after `wallSeconds` more of the caller's: nothing while
+  // paused, `speed()` times as much otherwise.
+  double advance(double wallSeconds) {
+    if (!paused_) now_ += std::max(0.0, wallSeconds) * speed_;
+    return now_;
+  }
+  // True when `key` is one of the pace's (and it took effect).
+  bool onKey(module::Key key) {
+    switch (key) {
+      case module::Key::Pause:
+        paused_ = !paused_;
+        return true;
+      case module::Key::Faster:
+        speed_ = std::min(speed_ * 2.0, 4096.0);
+        return true;
+      case module::Key::Slower:
+        speed_ = std::max(speed_ / 2.0, 1.0 / 64.0);
+        return true;
+      default:
+        return false;
+    }
+  }
+  bool paused() const { return paused_; }
+  double speed() const { return speed_; }
+  double now() const { return now_; }
+
+ private:
+  bool paused_ = false;
+  double speed_ = 1.0;
+  double now_ = 0.0;
 };
 
 }  // namespace prime::display

@@ -46,19 +46,6 @@ std::string pixelSettings(const CLI::App* cmd) {
   return text;
 }
 
-std::string seconds(double s) {
-  char buf[32];
-  if (s < 60)
-    std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else if (s < 3600)
-    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
-                  static_cast<int>(s) % 60);
-  else
-    std::snprintf(buf, sizeof buf, "%d h %02d min", static_cast<int>(s) / 3600,
-                  static_cast<int>(s) / 60 % 60);
-  return buf;
-}
-
 int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
             const std::string& system) {
   if (flags.camera == nullptr)
@@ -145,9 +132,10 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
       }
       if (!flags.quiet) {
         const double eta = rendered > 0 ? renderSeconds / rendered * (n - done) : 0.0;
-        const std::string what = wasDone ? "done already, skipped" : "rendered in " + seconds(took);
+        const std::string what =
+            wasDone ? "done already, skipped" : "rendered in " + durationText(took);
         std::fprintf(stderr, "prime: frame %d (%d of %d): %s; ETA %s\n", k, done, n, what.c_str(),
-                     seconds(eta).c_str());
+                     durationText(eta).c_str());
       }
     }
   } catch (...) {
@@ -156,11 +144,11 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
   }
   restore();
   if (!flags.quiet)
-    std::printf(
-        "frames %d-%d of %s: %d rendered, %d done already (skipped), in %s\n", range.first,
-        range.last, file.name.c_str(), rendered, skipped,
-        seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
-            .c_str());
+    std::printf("frames %d-%d of %s: %d rendered, %d done already (skipped), in %s\n", range.first,
+                range.last, file.name.c_str(), rendered, skipped,
+                durationText(
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())
+                    .c_str());
   return 0;
 }
 
@@ -293,6 +281,12 @@ bool cameraSetting(const std::string& line) {
 
 }  // namespace
 
+std::string sceneNameOf(std::string scene) {
+  while (scene.size() > 1 && scene.back() == '/') scene.pop_back();
+  const std::size_t slash = scene.find_last_of('/');
+  return slash == std::string::npos ? scene : scene.substr(slash + 1);
+}
+
 PngMeta provenanceOf(const TraceJob& job, const RecordContext& record, const CameraFlags* camera) {
   PngMeta meta;
   meta.aspectX = meta.aspectY = 1;  // every system's pixels are shown square
@@ -304,10 +298,7 @@ PngMeta provenanceOf(const TraceJob& job, const RecordContext& record, const Cam
   for (const System& s : systems())
     if (record.system == s.name) title = s.title;
   add("System", title);
-  std::string scene = job.scene();
-  while (scene.size() > 1 && scene.back() == '/') scene.pop_back();
-  add("Scene",
-      scene.substr(scene.find_last_of('/') == std::string::npos ? 0 : scene.find_last_of('/') + 1));
+  add("Scene", sceneNameOf(job.scene()));
   std::vector<std::string> notScene = record.notInputs;
   if (camera != nullptr && !camera->file.empty()) notScene.push_back(camera->file);
   add("Scene digest",

@@ -108,20 +108,19 @@ void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, 
                 "Close the window when the render is done instead of waiting for Esc");
 }
 
-namespace {
-
-// m:ss, or h:mm:ss.
-std::string clockText(double seconds) {
-  const long s = std::lround(std::max(seconds, 0.0));
+std::string durationText(double s) {
   char buf[32];
-  if (s >= 3600)
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  s = std::max(s, 0.0);
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
+                  static_cast<int>(s) % 60);
   else
-    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+    std::snprintf(buf, sizeof buf, "%d h %02d min", static_cast<int>(s) / 3600,
+                  static_cast<int>(s) / 60 % 60);
   return buf;
 }
-
-}  // namespace
 
 int interruptingSignal() {
   return gSignal;
@@ -145,16 +144,11 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
   if (window_)
     window_->setInputHandler([this](const display::module::Event& e) {
       if (inspector_ && inspector_->handle(e)) return true;
-      using display::module::Key;
-      if (e.type == display::module::Event::Type::Key && paced() &&
-          (e.key == Key::Pause || e.key == Key::Faster || e.key == Key::Slower)) {
-        // The pace's keys: Space pauses and resumes, ] and [ double and halve it.
-        if (e.key == Key::Pause) paused_ = !paused_;
-        if (e.key == Key::Faster) speed_ = std::min(speed_ * 2.0, 4096.0);
-        if (e.key == Key::Slower) speed_ = std::max(speed_ / 2.0, 1.0 / 64.0);
+      if (e.type == display::module::Event::Type::Key && paced() && paceClock_.onKey(e.key)) {
         if (!options_.quiet)
-          std::cerr << (paused_ ? "\nprime: paused (Space resumes)\n"
-                                : "\nprime: pace x" + numberText(speed_) + "\n");
+          std::cerr << (paceClock_.paused()
+                            ? "\nprime: paused (Space resumes)\n"
+                            : "\nprime: pace x" + numberText(paceClock_.speed()) + "\n");
         return true;
       }
       if (e.type != display::module::Event::Type::Key) return false;
@@ -214,15 +208,14 @@ void LiveRender::run(const std::function<void()>& render) {
     // --pace (G24): the finished rows reach the display no faster than the
     // pace; after the render the display catches up at it (Esc stops that).
     display::RowPacer pacer;
-    // The pace's own clock: it stops while paused and runs speed_ times as
-    // fast as the wall's.
+    // The pace's own clock (PaceClock: Space, ] and [).
     auto last = std::chrono::steady_clock::now();
     double clock = 0.0, lastLine = -1.0;
     int shown = 0;
     const auto pace = [&] {
       if (!paced()) return;
       const auto now = std::chrono::steady_clock::now();
-      if (!paused_) clock += std::chrono::duration<double>(now - last).count() * speed_;
+      clock = paceClock_.advance(std::chrono::duration<double>(now - last).count());
       last = now;
       shown = pacer.advance(rowsDone_, clock, rowsPerSecond());
       window_->setRowLimit(options_.firstRow + shown);
@@ -236,11 +229,12 @@ void LiveRender::run(const std::function<void()>& render) {
       if (paced() && n > 0) {
         // The replay's time and what is left of it at this speed.
         const double total = n / std::max(rowsPerSecond(), 1e-9);
-        status += ", " + std::string(options_.pace1991 ? "1991 time " : "") + clockText(clock) +
-                  " of " + clockText(total) + ", " + clockText((total - clock) / speed_) + " left" +
-                  (speed_ != 1.0 ? " at x" + numberText(speed_) : "") +
-                  (paused_ ? " (paused)" : "");
-        if (tty_ && clock - lastLine >= 0.5 * speed_) {
+        status += ", " + std::string(options_.pace1991 ? "1991 time " : "") + durationText(clock) +
+                  " of " + durationText(total) + ", " +
+                  durationText((total - clock) / paceClock_.speed()) + " left" +
+                  (paceClock_.speed() != 1.0 ? " at x" + numberText(paceClock_.speed()) : "") +
+                  (paceClock_.paused() ? " (paused)" : "");
+        if (tty_ && clock - lastLine >= 0.5 * paceClock_.speed()) {
           std::fprintf(stderr, "\r%s   ", status.c_str());
           lastLine = clock;
         }
@@ -251,8 +245,8 @@ void LiveRender::run(const std::function<void()>& render) {
     if (paced()) window_->setRowLimit(INT_MAX);  // an abort shows what was drawn
     if (tty_) std::fprintf(stderr, "\n");
     if (paced() && !abort_ && !options_.quiet)
-      std::cerr << "prime: the replay is done: " << rows_.load() << " rows in " << clockText(clock)
-                << (options_.pace1991 ? " of 1991 time" : "") << "\n";
+      std::cerr << "prime: the replay is done: " << rows_.load() << " rows in "
+                << durationText(clock) << (options_.pace1991 ? " of 1991 time" : "") << "\n";
     if (error) std::rethrow_exception(error);
   } else {
     SignalsAbort signals(abort_);

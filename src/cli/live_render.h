@@ -67,6 +67,9 @@ void addLiveWindowOptions(CLI::App* cmd, const std::shared_ptr<LiveOptions>& o, 
 // The value of --pace: a number of rows a second (> 0), or "1991" (G24).
 // Sets o.pace or o.pace1991; a CLI::ValidationError for anything else.
 void parsePace(const std::string& text, LiveOptions& o);
+// A duration for people: "4.2 s", "12 min 03 s", "1 h 30 min".
+std::string durationText(double seconds);
+
 // The 1991 estimate of rays a second (G24).
 inline constexpr double kRaysPerSecond1991 = 300.0;
 
@@ -116,10 +119,8 @@ class LiveRender {
   std::atomic<bool> abort_{false};
   std::atomic<int> rowsDone_{0}, rows_{0};
   std::atomic<std::uint64_t> rays_{0};
-  // The pace's keys (the window's thread only): Space, ] and [.
-  bool paused_ = false;
-  double speed_ = 1.0;
-  int width_ = 0;  // the frame's
+  display::PaceClock paceClock_;  // the window's thread only: Space, ] and [
+  int width_ = 0;                 // the frame's
   bool tty_ = false;
 };
 

@@ -250,6 +250,9 @@ struct RecordContext {
 // every file it read, the job's own lines (describe()), every setting that
 // changes pixels, and a film frame's camera; square pixels (pHYs 1:1). One
 // line each, no time: the same render gives the same bytes.
+// A scene's name as a picture gives it: its last path component ("plate2"
+// for "scenes/prime/plate2/"), the same on every machine.
+std::string sceneNameOf(std::string scene);
 // `camera`: the system's camera flags (TraceFlags::camera), or null.
 PngMeta provenanceOf(const TraceJob& job, const RecordContext& record,
                      const CameraFlags* camera = nullptr);

@@ -22,9 +22,7 @@ void write8514Png(const std::string& path, const RgbImage& picture, PngMeta meta
   meta.text.push_back({"Palette",
                        "listing (the IBM 8514/A DAC, 6 bits a channel), through "
                        "PRIME's ColorNum (IBM8514HI)"});
-  meta.text.push_back({"DAC to 8 bits",
-                       "round: v8 = (v6 * 255 + 31) / 63, the nearest 8-bit "
-                       "level to v6 / 63; v6 = (v8 * 63 + 127) / 255"});
+  meta.text.push_back({"DAC to 8 bits", std::string(dacTo8Rule(kDefaultDacTo8))});
   writeIndexedPng(path, img, meta);
 }
 

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -143,7 +142,7 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
   display::ScreenWindow window(
       frame, {job.name, flags.live.zoom, ".", flags.live.fullscreen, flags.live.scale, false,
               PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION},
-                       {"Scene", std::filesystem::path(job.name).filename().string()}},
+                       {"Scene", sceneNameOf(job.name)}},
                       1,
                       1}});
   std::fprintf(

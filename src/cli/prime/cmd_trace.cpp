@@ -307,16 +307,8 @@ class PrimeTrace : public TraceJob {
         std::cerr << "prime: R records the drawing once the render is done\n";
         return;
       }
-      try {
-        RecordFlags r = *record_;
-        r.file = freeRecordingName();
-        recordGraphDrawing(r, result_.graph, at_, camera_->screenWidth(), camera_->screenHeight(),
-                           present(palette_.dac, dacOf(*display_)), rowTimes(), rowTimesSource(),
-                           false);
-        std::fflush(stdout);
-      } catch (const std::exception& e) {
-        std::cerr << "prime: recording failed: " << e.what() << "\n";
-      }
+      recordOnKey(*record_, result_.graph, at_, camera_->screenWidth(), camera_->screenHeight(),
+                  present(palette_.dac, dacOf(*display_)), rowTimes(), rowTimesSource());
     };
     const auto& s = options_->settings;
     options.cameraKey = [free = s.camera.free, dir = *dir_,
@@ -427,8 +419,8 @@ class PrimeTrace : public TraceJob {
       std::printf(
           "1991 estimate: %s on a 20 MHz 386 + 387 (docs/prime/pace-1991.md); the flat "
           "%.0f rays a second would say %s\n",
-          minutesText(era).c_str(), kFlatRaysPerSecond1991,
-          minutesText(static_cast<double>(result_.stats.rays()) / kFlatRaysPerSecond1991).c_str());
+          durationText(era).c_str(), kRaysPerSecond1991,
+          durationText(static_cast<double>(result_.stats.rays()) / kRaysPerSecond1991).c_str());
     }
     if (const std::string ids = fixIds(options_->settings.trace.fixes); !ids.empty())
       std::printf("1991 profile with listing quirks corrected: --fix %s (prime errata)\n",
@@ -455,15 +447,6 @@ class PrimeTrace : public TraceJob {
     return listingCounts_ ? "the 1991 estimate"
                           : "the 1991 estimate of the port's counts, which skip work the listing "
                             "did: --pace 1991 counts the listing's";
-  }
-  static std::string minutesText(double s) {
-    char buf[48];
-    if (s < 60)
-      std::snprintf(buf, sizeof buf, "%.1f s", s);
-    else
-      std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
-                    static_cast<int>(s) % 60);
-    return buf;
   }
   std::vector<PngText> describe() const override {
     const std::string fixes = fixIds(options_->settings.trace.fixes);

@@ -94,34 +94,18 @@ void addViewOptions(CLI::App* cmd, Action& action) {
         return 0;
       }
       // The pace's keys: Space pauses, ] and [ double and halve it.
-      bool paused = false;
-      double speed = 1.0;
+      display::PaceClock paceClock;
       window->setInputHandler([&](const display::module::Event& e) {
-        using display::module::Key;
         if (e.type == display::module::Event::Type::Key && e.letter == 'r') {
           // R: the drawing kept, timed as --record would time it.
-          try {
-            RecordFlags r = *record;
-            r.file = freeRecordingName();
-            recordGraphDrawing(r, shownGraph, g.at, g.width, g.height,
-                               present(palette.dac, dacOf(*o)), recordTimes, timeSource, false);
-            std::fflush(stdout);
-          } catch (const std::exception& ex) {
-            std::cerr << "prime: recording failed: " << ex.what() << "\n";
-          }
+          recordOnKey(*record, shownGraph, g.at, g.width, g.height, present(palette.dac, dacOf(*o)),
+                      recordTimes, timeSource);
           return true;
         }
-        if (!paced || e.type != display::module::Event::Type::Key) return false;
-        if (e.key == Key::Pause)
-          paused = !paused;
-        else if (e.key == Key::Faster)
-          speed = std::min(speed * 2.0, 4096.0);
-        else if (e.key == Key::Slower)
-          speed = std::max(speed / 2.0, 1.0 / 64.0);
-        else
+        if (!paced || e.type != display::module::Event::Type::Key || !paceClock.onKey(e.key))
           return false;
-        std::cerr << (paused ? "prime: paused (Space resumes)\n"
-                             : "prime: pace x" + numberText(speed) + "\n");
+        std::cerr << (paceClock.paused() ? "prime: paused (Space resumes)\n"
+                                         : "prime: pace x" + numberText(paceClock.speed()) + "\n");
         return true;
       });
       const int rowsPresent =
@@ -137,7 +121,7 @@ void addViewOptions(CLI::App* cmd, Action& action) {
       bool announced = false;
       for (;;) {
         const auto now = std::chrono::steady_clock::now();
-        if (!paused) clock += std::chrono::duration<double>(now - last).count() * speed;
+        clock = paceClock.advance(std::chrono::duration<double>(now - last).count());
         last = now;
         // A row shows once the pace's clock has reached its start (the first at once).
         for (; drawn < rowsPresent && (!paced || rowEnds <= clock); ++drawn) {

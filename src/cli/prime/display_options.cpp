@@ -84,22 +84,8 @@ void addUpscaleOptions(CLI::App* cmd, DisplayOptions& o) {
 }
 
 std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how) {
-  std::string rule;
-  switch (how) {
-    case DacTo8::Round:
-      rule =
-          "round: v8 = (v6 * 255 + 31) / 63, the nearest 8-bit level to v6 / 63; "
-          "v6 = (v8 * 63 + 127) / 255";
-      break;
-    case DacTo8::Replicate:
-      rule = "replicate: v8 = v6 * 4 + v6 / 16 (bit replication); v6 = v8 / 4";
-      break;
-    case DacTo8::Truncate:
-      rule = "truncate: v8 = v6 * 255 / 63; v6 = (v8 * 63 + 254) / 255";
-      break;
-  }
   return {{"Palette", paletteName + " (the IBM 8514/A DAC, 6 bits a channel)"},
-          {"DAC to 8 bits", rule}};
+          {"DAC to 8 bits", std::string(dacTo8Rule(how))}};
 }
 
 std::string paletteLabel(const Palette& palette) {
@@ -171,11 +157,20 @@ void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placem
   std::fputs(line, stdout);
 }
 
-std::string freeRecordingName() {
+void recordOnKey(const RecordFlags& r, const io::GraphFile& graph, Placement at, int screenW,
+                 int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
+                 const std::string& timeSource) {
+  RecordFlags key = r;
   for (int n = 1;; ++n) {
-    const std::string name = "prime-recording-" + std::to_string(n) + ".gif";
+    key.file = "prime-recording-" + std::to_string(n) + ".gif";
     std::error_code ec;
-    if (!std::filesystem::exists(name, ec)) return name;
+    if (!std::filesystem::exists(key.file, ec)) break;
+  }
+  try {
+    recordGraphDrawing(key, graph, at, screenW, screenH, colours, rowSeconds, timeSource, false);
+    std::fflush(stdout);
+  } catch (const std::exception& e) {
+    std::cerr << "prime: recording failed: " << e.what() << "\n";
   }
 }
 

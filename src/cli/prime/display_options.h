@@ -77,9 +77,12 @@ void recordGraphDrawing(const RecordFlags& r, const io::GraphFile& graph, Placem
                         int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
                         const std::string& timeSource, bool quiet);
 
-// The first prime-recording-N.gif (N = 1, 2, ...) not taken in the current
-// directory: the R key's file.
-std::string freeRecordingName();
+// The window's R key: the same recording into the first
+// prime-recording-N.gif (N = 1, 2, ...) not taken in the current directory;
+// a failure is said on stderr (the window stays).
+void recordOnKey(const RecordFlags& r, const io::GraphFile& graph, Placement at, int screenW,
+                 int screenH, const Rgb8Table& colours, std::span<const double> rowSeconds,
+                 const std::string& timeSource);
 
 DacTo8 dacOf(const DisplayOptions& o);
 ImageArea areaOf(const DisplayOptions& o);

@@ -60,7 +60,4 @@ EventOps1991 listingOps1991();
 double seconds1991(const TraceStats& stats, std::uint64_t pixels, int lights,
                    const OpCosts1991& costs = {}, const EventOps1991& ops = listingOps1991());
 
-// The flat estimate it replaces: 300 rays a second.
-inline constexpr double kFlatRaysPerSecond1991 = 300.0;
-
 }  // namespace prime
