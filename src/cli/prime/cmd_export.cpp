@@ -36,12 +36,7 @@ void addExportOptions(CLI::App* cmd, Action& action) {
                                               present(palette.dac, dacOf(*o)), areaOf(*o));
       // What made the picture, as its companion says (the render's
       // provenance), then the palette's lines.
-      PngMeta meta;
-      meta.aspectX = meta.aspectY = 1;
-      if (info)
-        for (const auto& [key, value] : info->text)
-          if (key != "Palette" && key != "DAC to 8 bits") meta.text.push_back({key, value});
-      write8514Pngs(*out, img, meta, *o, paletteLabel(palette));
+      write8514Pngs(*out, img, companionMeta(info), *o, paletteLabel(palette));
       if (!*quiet)
         std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
                   << " area; the file's " << f.graph.width() << " x " << f.graph.height()

@@ -55,16 +55,15 @@ void addViewOptions(CLI::App* cmd, Action& action) {
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, false);
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       const int columns = f.graph.width();
-      // Each row's time: --pace N, or 1991's flat rate of one ray a pixel.
+      // Each row's time: --pace N, or 1991's flat rate of one ray a pixel;
+      // the rows a .partial lacks are not drawn: no time, and they leave the
+      // screen as cleared.
       const bool paced = *rate > 0 || *pace1991;
       std::vector<double> rowSeconds(static_cast<std::size_t>(f.graph.height()),
                                      *rate > 0 ? 1.0 / *rate : columns / kRaysPerSecond1991);
-      // What a recording draws: the rows present (a .partial's missing rows
-      // take no time and leave the screen as cleared).
-      std::vector<double> recordTimes = rowSeconds;
       if (!f.complete())
-        for (std::size_t r = (f.pixelsPresent + columns - 1) / columns; r < recordTimes.size(); ++r)
-          recordTimes[r] = 0.0;
+        for (std::size_t r = (f.pixelsPresent + columns - 1) / columns; r < rowSeconds.size(); ++r)
+          rowSeconds[r] = 0.0;
       io::GraphFile shownGraph = f.graph;
       for (std::size_t i = f.pixelsPresent; i < shownGraph.pixels.size(); ++i)
         shownGraph.pixels[i] = 0;
@@ -72,16 +71,15 @@ void addViewOptions(CLI::App* cmd, Action& action) {
           *rate > 0 ? "--pace rows a second" : "one ray a pixel at 300 a second";
       if (!record->file.empty())
         recordGraphDrawing(*record, shownGraph, g.at, g.width, g.height,
-                           present(palette.dac, dacOf(*o)), recordTimes, timeSource, false);
+                           present(palette.dac, dacOf(*o)), rowSeconds, timeSource, false);
       auto headless = display::headlessReason(o->noWindow);
       display::LiveScreen live(g.width, g.height, windowPalettes(palette, *o), dacOf(*o));
       std::unique_ptr<display::ScreenWindow> window;
       if (!headless) {
         try {
           window = std::make_unique<display::ScreenWindow>(
-              live, display::WindowConfig{
-                        *file, o->zoom, ".", o->fullscreen, scaleOf(*o), false,
-                        PngMeta{{{"Software", std::string("prime ") + PRIME_VERSION}}, 1, 1}});
+              live, display::WindowConfig{*file, o->zoom, ".", o->fullscreen, scaleOf(*o), false,
+                                          companionMeta(info)});
         } catch (const display::WindowError& e) {
           headless = e.what();
         }
@@ -99,7 +97,7 @@ void addViewOptions(CLI::App* cmd, Action& action) {
         if (e.type == display::module::Event::Type::Key && e.letter == 'r') {
           // R: the drawing kept, timed as --record would time it.
           recordOnKey(*record, shownGraph, g.at, g.width, g.height, present(palette.dac, dacOf(*o)),
-                      recordTimes, timeSource);
+                      rowSeconds, timeSource);
           return true;
         }
         if (!paced || e.type != display::module::Event::Type::Key || !paceClock.onKey(e.key))

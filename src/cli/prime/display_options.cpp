@@ -88,6 +88,18 @@ std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how) {
           {"DAC to 8 bits", std::string(dacTo8Rule(how))}};
 }
 
+PngMeta companionMeta(const std::optional<GraphInfo>& info) {
+  PngMeta meta;
+  meta.aspectX = meta.aspectY = 1;
+  if (!info) {
+    meta.text.push_back({"Software", std::string("prime ") + PRIME_VERSION});
+    return meta;
+  }
+  for (const auto& [key, value] : info->text)
+    if (key != "Palette" && key != "DAC to 8 bits") meta.text.push_back({key, value});
+  return meta;
+}
+
 std::string paletteLabel(const Palette& palette) {
   if (findBuiltinPalette(palette.name) || palette.description.empty()) return palette.name;
   return palette.description;

@@ -57,6 +57,11 @@ std::vector<std::string> write8514Pngs(const std::string& path, const IndexedIma
 // What an indexed PNG's palette is: "Palette" (its name) and "DAC to 8 bits"
 // (the rule that made 8-bit PLTE entries of the DAC's 6-bit values).
 std::vector<PngText> paletteText(const std::string& paletteName, DacTo8 how);
+// What made a graph file's picture, as its companion says (the render's
+// provenance; without one, the program only), for the PNGs export and the
+// view window's S key write; square pixels. The palette's lines are left
+// to write8514Pngs.
+PngMeta companionMeta(const std::optional<GraphInfo>& info);
 // The palette as a PNG names it: a built-in's name, else its description (a
 // quantized palette: the same from trace and from export of its companion).
 std::string paletteLabel(const Palette& palette);
