@@ -4,6 +4,9 @@
 #   ./prime.sh test    install what is missing, build, run every test (plain and ASan+UBSan),
 #                      then fuzz every reader for a bounded time (clang + libFuzzer, tests/fuzz)
 #   ./prime.sh build   install what is missing and build the release preset only
+#   ./prime.sh web [--build-only]
+#                      install what is missing, build the page into build/web/ (prime compiled
+#                      to WebAssembly, docs/web.md) and serve it on localhost
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -21,12 +24,18 @@ PACKAGES=(cmake ninja-build g++ binutils pkg-config libcli11-dev libgtest-dev li
           munge slurmctld slurmd slurm-client   # a single-host Slurm for docs/cluster.md's job
                                         # arrays (check_slurm; Debian's slurm-wlm is these three)
           help2man groff-base)          # the man page (generated from the CLI) and its check
+# What the web build and its tests add (./prime.sh web, ./prime.sh test; docs/web.md).
+WEB_PACKAGES=(emscripten dpkg-dev   # emscripten compiles prime and Debian's sources of the
+                                    # libraries it links (unpacked by dpkg-source)
+              nodejs                # runs emscripten, and prime.js in the node tests
+              chromium)             # the page's test in a real browser (tests/web)
 # tests/install/check_test_programs.py fails when a program the tests run is
 # not provided by a package above.
 
-setup() {
-  local missing=()
-  for p in "${PACKAGES[@]}"; do
+setup() {  # setup [PACKAGE...]: those (default: PACKAGES) that are missing
+  local missing=() wanted=("$@")
+  [ ${#wanted[@]} -eq 0 ] && wanted=("${PACKAGES[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   if [ ${#missing[@]} -gt 0 ]; then
@@ -79,14 +88,25 @@ case "${1:-}" in
     stage "test asan" ctest --preset asan -j "$(nproc)"
     stage "build fuzz" build fuzz   # only the fuzz targets; each fuzz.<name> test fuzzes for 20 s
     stage "test fuzz" ctest --preset fuzz -j "$(nproc)"
+    stage "setup web" setup "${WEB_PACKAGES[@]}"
+    stage "build web" tools/web/build.sh
+    stage "test web" python3 tests/web/run_web_tests.py
     echo "prime.sh: test took $((SECONDS - total)) s in all"
     ;;
   build)
     setup
     build release
     ;;
+  web)
+    setup
+    setup "${WEB_PACKAGES[@]}"
+    tools/web/build.sh
+    if [ "${2:-}" != "--build-only" ]; then
+      exec python3 tools/web/serve.py build/web "${PRIME_WEB_PORT:-8000}"
+    fi
+    ;;
   *)
-    echo "usage: $0 demo|test|build" >&2
+    echo "usage: $0 demo|test|build|web [--build-only]" >&2
     exit 2
     ;;
 esac

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "legacy_io/cgl/scene_reader.h"
+#include "legacy_io/common/charconv.h"
 
 namespace prime::cgl::detail {
 
@@ -75,7 +76,7 @@ NumberStatus parseReal(std::string_view w, double& out) {
   if (i != w.size()) return NumberStatus::NotNumber;
   const std::string_view body = plus ? w.substr(1) : w;
   double v = 0.0;
-  const auto r = std::from_chars(body.data(), body.data() + body.size(), v);
+  const auto r = io::fromChars(body.data(), body.data() + body.size(), v);
   if (r.ec == std::errc::result_out_of_range) {
     // An underflow is a zero for every field of the format; an overflow is refused.
     bool nonzero = false;

@@ -30,7 +30,11 @@ void ByteWriter::putInt16s(std::span<const std::int16_t> values) {
 }
 
 void ByteWriter::putDouble(double v) {
+#if defined(__cpp_lib_bit_cast)
   const auto u = std::bit_cast<std::uint64_t>(v);
+#else  // the web build's libc++ (docs/web.md): the builtin std::bit_cast is
+  const auto u = __builtin_bit_cast(std::uint64_t, v);
+#endif
   for (int i = 0; i < 8; ++i) bytes_.push_back(static_cast<std::uint8_t>(u >> (8 * i)));
 }
 
@@ -57,7 +61,11 @@ double ByteReader::getDouble(const std::string& field) {
   std::uint64_t u = 0;
   for (int i = 0; i < 8; ++i) u |= static_cast<std::uint64_t>(bytes_[pos_ + i]) << (8 * i);
   pos_ += 8;
+#if defined(__cpp_lib_bit_cast)
   return std::bit_cast<double>(u);
+#else
+  return __builtin_bit_cast(double, u);
+#endif
 }
 
 void ByteReader::skip(std::size_t n, const std::string& field) {

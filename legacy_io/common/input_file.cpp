@@ -89,7 +89,7 @@ Buffer readWhole(const std::string& path, const InputFileOptions& o) {
     got += static_cast<std::size_t>(n);
   }
   out.resize(got);
-  noteInputContent(st.st_dev, st.st_ino, shown, out.data(), out.size());
+  if (o.sceneContent) noteInputContent(st.st_dev, st.st_ino, shown, out.data(), out.size());
   return out;
 }
 

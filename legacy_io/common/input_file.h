@@ -25,6 +25,11 @@ struct InputFileOptions {
   std::uint64_t maxBytes = kDefaultInputCap;
   std::string what = "an input file";  // for messages: "a CGL scene file", "a PRIME graph file"
   std::string display;                 // the name in messages ("" = the path)
+  // Whether the bytes are the scene's, for inputsDigest (run_inputs.h): false
+  // for a program's own bookkeeping beside a scene (prime model's journal
+  // and stamp, which name temporaries by process id), so that the digest of
+  // a render is the same on every machine that built the same databases.
+  bool sceneContent = true;
 };
 
 std::vector<std::uint8_t> readInputFile(const std::string& path,

@@ -1,4 +1,5 @@
 #include "legacy_io/common/pov_text.h"
+#include "legacy_io/common/charconv.h"
 
 #include <charconv>
 #include <cmath>
@@ -9,7 +10,7 @@ std::string povNumber(double v) {
   if (!std::isfinite(v)) return "0";  // POV-Ray has no Inf/NaN literal
   if (v == 0.0) return "0";           // also turns -0 into 0
   char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = io::toChars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 

@@ -9,6 +9,7 @@
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
+#include "legacy_io/common/charconv.h"
 
 namespace prime::io {
 
@@ -94,7 +95,7 @@ double TextReader::number(const std::string& field) {
   const bool plus = *begin == '+';
   if (plus) ++begin;  // from_chars does not take a leading '+', fscanf does
   double value = 0;
-  auto [ptr, ec] = std::from_chars(begin, end, value);
+  auto [ptr, ec] = fromChars(begin, end, value);
   const bool endsCleanly = ptr == end || std::isspace(static_cast<unsigned char>(*ptr));
   // "+-5": one sign only (from_chars would read the '-' after the skipped '+').
   // M35: 1e309 and 1e-400 are numbers, out of double's range.

@@ -98,6 +98,7 @@ std::vector<Entry> readEntries(const SceneDir& scene, const fs::path& file) {
   InputFileOptions o;
   o.what = "a prime model journal or stamp";
   o.display = scene.display(file);
+  o.sceneContent = false;  // names temporaries by process id: not in the scene's digest
   o.maxBytes = kMaxDatabase;
   std::istringstream in(readInputText(file.string(), o));
   std::string line;

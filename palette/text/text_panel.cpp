@@ -1,6 +1,8 @@
 #include "palette/text/text_panel.h"
 
+#ifndef PRIME_FONT_FILE
 #include <fontconfig/fontconfig.h>
+#endif
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -107,6 +109,9 @@ class Font {
   Font() {
     std::string file;
     int index = 0;
+#ifdef PRIME_FONT_FILE
+    file = PRIME_FONT_FILE;  // the web build: no fontconfig; the font is among its files
+#else
     if (FcConfig* config = FcInitLoadConfigAndFonts()) {
       FcPattern* pattern = FcNameParse(reinterpret_cast<const FcChar8*>("monospace"));
       FcConfigSubstitute(config, pattern, FcMatchPattern);
@@ -122,6 +127,7 @@ class Font {
       FcPatternDestroy(pattern);
       FcConfigDestroy(config);
     }
+#endif
     const std::string hint = " (Debian: apt install fonts-dejavu-core)";
     if (file.empty()) {
       error_ = "no monospace font: fontconfig found none" + hint;

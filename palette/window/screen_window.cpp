@@ -5,7 +5,9 @@
 // libraries.
 #include "palette/window/screen_window.h"
 
+#ifndef __EMSCRIPTEN__
 #include <dlfcn.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -31,6 +33,11 @@ namespace prime::display {
 
 std::optional<std::string> headlessReason(bool noWindowFlag) {
   if (noWindowFlag) return "--no-window";
+#ifdef __EMSCRIPTEN__
+  // The web build: the page's canvas is the display (web_window_module.cpp).
+  if (!prime_window_web_available()) return "no canvas (the page gives one; node does not)";
+  return std::nullopt;
+#endif
   auto set = [](const char* name) {
     const char* v = std::getenv(name);
     return v != nullptr && *v != '\0';
@@ -52,6 +59,11 @@ int clampZoom(int zoom, int w, int h) {
   return clampZoomToDisplay(zoom, {w, h}, {kMaxWindowSide, kMaxWindowSide});
 }
 
+#ifdef __EMSCRIPTEN__
+OpenWindow loadModule() {
+  return &prime_window_sdl_open;
+}  // linked in: the page's canvas
+#else
 std::string dlerrorText() {
   const char* e = dlerror();
   return e != nullptr ? e : "unknown error";
@@ -113,6 +125,7 @@ OpenWindow loadModule() {
   factory = reinterpret_cast<OpenWindow>(symbol);
   return factory;
 }
+#endif
 
 }  // namespace
 

@@ -114,3 +114,9 @@ class WindowBackend {
 extern "C" __attribute__((visibility("default"))) prime::display::module::WindowBackend*
 prime_window_sdl_open(int interfaceVersion, int width, int height, char* error,
                       std::size_t errorSize);
+
+#ifdef __EMSCRIPTEN__
+// The web build links its window in (web_window_module.cpp): whether the page
+// gave the program a canvas (node gives none, and runs headless).
+extern "C" bool prime_window_web_available();
+#endif

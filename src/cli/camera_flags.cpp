@@ -13,6 +13,7 @@
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/common/text_reader.h"
+#include "legacy_io/common/charconv.h"
 
 namespace prime::cli {
 
@@ -90,7 +91,7 @@ Vec3 vec(const std::vector<double>& v) {
 std::optional<double> exactNumber(std::string_view text) {
   if (!text.empty() && text[0] == '+') text.remove_prefix(1);
   double v = 0.0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  const auto r = io::fromChars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v))
     return std::nullopt;
   return v;
@@ -106,7 +107,7 @@ std::optional<int> exactInt(std::string_view text) {
 
 std::string numberText(double v) {
   char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = io::toChars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 

@@ -35,6 +35,7 @@
 #include "palette/quantize/quantize.h"
 #include "src/cli/commands.h"
 #include "src/cli/option_values.h"
+#include "legacy_io/common/charconv.h"
 
 extern char** environ;
 
@@ -84,7 +85,7 @@ std::string kindList() {
 // The shortest text that reads back as `v` (29.97, 12.5, 30).
 std::string shortest(double v) {
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = io::toChars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 

@@ -2,6 +2,8 @@
 // data, missing files) is reported on stderr as "prime: <file:line: ...>" with
 // exit status 1; usage errors exit 2; a render that Ctrl-C (SIGINT) or SIGTERM
 // aborted exits 128 + the signal (130, 143), as a shell reports it.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -301,6 +303,12 @@ int primeMain(int argc, char** argv, bool parseOnly) {
 
 #ifndef PRIME_NO_MAIN
 int main(int argc, char** argv) {
+#ifdef __EMSCRIPTEN__
+  // Emscripten 3.1.6 starts a program with the file mode mask 0777, so every
+  // file it made had no permissions at all; a process started from a shell
+  // has 022 (docs/web.md).
+  ::umask(022);
+#endif
   return primeMain(argc, argv, false);
 }
 #endif

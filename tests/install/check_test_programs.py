@@ -2,7 +2,7 @@
 """Every external program the tests run must come from a package prime.sh installs.
 
 A fresh Debian machine has only what `./prime.sh test` installs (its PACKAGES
-array). This test finds the programs the tests and the scripts they call
+and WEB_PACKAGES arrays). This test finds the programs the tests and the scripts they call
 invoke, by the ways this repository starts them:
 
   C++ tests     ChildProcess({"PROG", ...}), run({"PROG", ...}), onPath("PROG"),
@@ -44,6 +44,11 @@ PROGRAMS = {
     "scontrol": (["slurm-client"], "the single-host Slurm's job states (slurm_host.py)"),
     "squeue": (["slurm-client"], "the single-host Slurm's queue, emptied at its teardown"),
     "scancel": (["slurm-client"], "the single-host Slurm's teardown: no job outlives it"),
+    # The web build and its tests (prime.sh's WEB_PACKAGES; docs/web.md).
+    "em++": (["emscripten"], "the web build: prime compiled to WebAssembly (tools/web/build.sh)"),
+    "dpkg-source": (["dpkg-dev"], "the web build: Debian's sources of prime's libraries"),
+    "node": (["nodejs"], "the web build's node tests: prime.js under node (tests/web)"),
+    "chromium": (["chromium"], "the page's test in a real browser (tests/web)"),
 }
 # In every Debian root (Essential: yes) or brought by the clone itself.
 BASE = {
@@ -70,10 +75,11 @@ def packages_of_prime_sh(root):
     text = open(os.path.join(root, "prime.sh"), encoding="utf-8").read()
     # The array's words, comments stripped line by line, to its closing ')'.
     code = "\n".join(line.split("#", 1)[0] for line in text.splitlines())
-    m = re.search(r"PACKAGES=\(([^)]*)\)", code)
-    if not m:
+    # PACKAGES and WEB_PACKAGES (the web build's, which ./prime.sh test installs too).
+    arrays = re.findall(r"\b(?:WEB_)?PACKAGES=\(([^)]*)\)", code)
+    if not arrays:
         sys.exit("prime.sh has no PACKAGES=( ... ) array")
-    return set(m.group(1).split())
+    return set(" ".join(arrays).split())
 
 
 def invoked(root):
