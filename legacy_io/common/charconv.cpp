@@ -1,6 +1,5 @@
 #include "legacy_io/common/charconv.h"
 
-#if !defined(__cpp_lib_to_chars)
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -26,7 +25,7 @@ bool digit(char c) {
 
 }  // namespace
 
-std::from_chars_result fromChars(const char* first, const char* last, double& value) {
+std::from_chars_result portableFromChars(const char* first, const char* last, double& value) {
   const char* p = first;
   const bool minus = p < last && *p == '-';
   if (minus) ++p;
@@ -72,7 +71,7 @@ std::from_chars_result fromChars(const char* first, const char* last, double& va
   return {p, std::errc()};
 }
 
-std::to_chars_result toChars(char* first, char* last, double value) {
+std::to_chars_result portableToChars(char* first, char* last, double value) {
   std::string out;
   if (std::signbit(value)) out += '-';
   if (std::isnan(value)) {
@@ -101,7 +100,11 @@ std::to_chars_result toChars(char* first, char* last, double value) {
     scientific += exp;
     std::string fixed;
     if (exponent >= n - 1) {
-      fixed = digits + std::string(static_cast<std::size_t>(exponent - (n - 1)), '0');
+      // A whole number: its exact digits, as to_chars writes them (not the
+      // shortest digits padded with zeros).
+      char whole[400];
+      std::snprintf(whole, sizeof whole, "%.0f", std::fabs(value));
+      fixed = whole;
     } else if (exponent < 0) {
       fixed = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
     } else {
@@ -117,4 +120,3 @@ std::to_chars_result toChars(char* first, char* last, double value) {
 }
 
 }  // namespace prime::io
-#endif

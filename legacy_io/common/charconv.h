@@ -12,6 +12,12 @@
 
 namespace prime::io {
 
+// The same contracts by strtod and snprintf: what fromChars and toChars are
+// where the C++ library has no floating-point charconv. Built everywhere, so
+// that the native tests hold them to std::from_chars and std::to_chars.
+std::from_chars_result portableFromChars(const char* first, const char* last, double& value);
+std::to_chars_result portableToChars(char* first, char* last, double value);
+
 #if defined(__cpp_lib_to_chars)
 inline std::from_chars_result fromChars(const char* first, const char* last, double& value) {
   return std::from_chars(first, last, value);
@@ -20,8 +26,12 @@ inline std::to_chars_result toChars(char* first, char* last, double value) {
   return std::to_chars(first, last, value);
 }
 #else
-std::from_chars_result fromChars(const char* first, const char* last, double& value);
-std::to_chars_result toChars(char* first, char* last, double value);
+inline std::from_chars_result fromChars(const char* first, const char* last, double& value) {
+  return portableFromChars(first, last, value);
+}
+inline std::to_chars_result toChars(char* first, char* last, double value) {
+  return portableToChars(first, last, value);
+}
 #endif
 
 }  // namespace prime::io

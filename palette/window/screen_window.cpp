@@ -35,7 +35,7 @@ std::optional<std::string> headlessReason(bool noWindowFlag) {
   if (noWindowFlag) return "--no-window";
 #ifdef __EMSCRIPTEN__
   // The web build: the page's canvas is the display (web_window_module.cpp).
-  if (!prime_window_web_available()) return "no canvas (the page gives one; node does not)";
+  if (!prime_window_web_available()) return "no canvas: under node there is no page to draw in";
   return std::nullopt;
 #endif
   auto set = [](const char* name) {
