@@ -172,6 +172,36 @@ def browser_tests(work, screenshots):
                   + (f", at {at[0]}, {at[1]} on the screen" if at else ""))
             if screenshots:
                 browser.screenshot(str(Path(screenshots) / f"web-{scene.stem}.png"))
+        # The walk: a drag orbits the camera (the picture changes), Esc ends it.
+        browser.evaluate("(document.getElementById('scene').value = 'prime/plate3',"
+                         " window.walkDone = window.primePage.walk().then(() => window.primeLast.done), 1)")
+        first = None
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline:
+            time.sleep(0.5)
+            if "frame" in browser.evaluate("document.getElementById('status').textContent"):
+                first = canvas_rgb(browser)[2]
+                break
+        check(first is not None, "browser: the walk draws frames of plate 3")
+        box = browser.evaluate("(() => { const r = canvas.getBoundingClientRect();"
+                               " return [r.left + r.width / 2, r.top + r.height / 2]; })()")
+        browser.call("Input.dispatchMouseEvent", type="mousePressed", x=box[0], y=box[1],
+                     button="left", buttons=1, clickCount=1)
+        for i in range(1, 11):
+            browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=box[0] + 15 * i, y=box[1],
+                         button="left", buttons=1)
+            time.sleep(0.05)
+        browser.call("Input.dispatchMouseEvent", type="mouseReleased", x=box[0] + 150, y=box[1],
+                     button="left", buttons=0, clickCount=1)
+        time.sleep(4)
+        check(first is not None and canvas_rgb(browser)[2] != first,
+              "browser: dragging in the walk's canvas orbits the camera (the picture changes)")
+        if screenshots:
+            browser.screenshot(str(Path(screenshots) / "web-walk.png"))
+        browser.evaluate("canvas.focus(), 1")
+        browser.call("Input.dispatchKeyEvent", type="keyDown", key="Escape", code="Escape",
+                     windowsVirtualKeyCode=27)
+        check(browser.evaluate("window.walkDone", timeout=60) == 0, "browser: Esc ends the walk (status 0)")
         # A dropped scene with a mistake: the page shows what the command line says.
         # (Malone's document sphere with a word where a number must be, line 5.)
         lines = (ROOT / "scenes" / "malone" / "doc-sphere.mal").read_text().splitlines(True)
