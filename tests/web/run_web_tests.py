@@ -170,6 +170,25 @@ def browser_tests(work, screenshots):
             check(at is not None, f"browser: {value}: the canvas ({width} x {height}, zoom {zoom}) "
                   f"shows the native PNG's {len(picture[0]) // 3} x {len(picture)} pixels exactly"
                   + (f", at {at[0]}, {at[1]} on the screen" if at else ""))
+            if scene.is_dir():
+                # The downloads: the graph file is the native one's bytes, the indexed PNG
+                # the native --png's (libpng's own code, so the same bytes too).
+                downloads = browser.evaluate(
+                    "(() => { const b64 = (u) => { let s = ''; for (let i = 0; i < u.length;"
+                    " i += 0x8000) s += String.fromCharCode.apply(null, u.subarray(i, i + 0x8000));"
+                    " return btoa(s); }; const f = window.primeLast.files;"
+                    " return [b64(f['/out/picture']), b64(f['/out/picture-8514.png'])]; })()")
+                graph = base64.b64decode(downloads[0])
+                check(graph == (here / "graph_scr").read_bytes(),
+                      f"browser: {value}: the page's graph file download is the native graph file")
+                page_png = here / "page.png"
+                page_png.write_bytes(base64.b64decode(downloads[1]))
+                check(page_png.read_bytes() == png.read_bytes(),
+                      f"browser: {value}: the page's indexed PNG download is the native --png, byte for byte"
+                      + ("" if page_png.read_bytes() == png.read_bytes() else
+                         f" (same pixels: {prime_checks.same_pixels(str(page_png), str(png))}; "
+                         f"text page {prime_checks.png_text(str(page_png))} native "
+                         f"{prime_checks.png_text(str(png))})"))
             if screenshots:
                 browser.screenshot(str(Path(screenshots) / f"web-{scene.stem}.png"))
         # The walk: a drag orbits the camera (the picture changes), Esc ends it.
