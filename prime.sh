@@ -2,7 +2,8 @@
 # prime.sh: set up a fresh Debian machine, build, and run PRIME.
 #   ./prime.sh demo    install what is missing, build prime, model + trace Colour Plate 2
 #   ./prime.sh test    install what is missing, build, run every test (plain and ASan+UBSan),
-#                      then fuzz every reader for a bounded time (clang + libFuzzer, tests/fuzz)
+#                      then fuzz every reader for a bounded time (clang + libFuzzer, tests/fuzz),
+#                      then build the web page and test it under node and Chromium (tests/web)
 #   ./prime.sh build   install what is missing and build the release preset only
 #   ./prime.sh web [--build-only]
 #                      install what is missing, build the page into build/web/ (prime compiled
