@@ -60,9 +60,10 @@ int clampZoom(int zoom, int w, int h) {
 }
 
 #ifdef __EMSCRIPTEN__
+// The web build links its module in: the page's canvas (web_window_module.cpp).
 OpenWindow loadModule() {
   return &prime_window_sdl_open;
-}  // linked in: the page's canvas
+}
 #else
 std::string dlerrorText() {
   const char* e = dlerror();

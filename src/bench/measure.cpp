@@ -62,7 +62,16 @@ MachineFacts machineFacts() {
   return m;
 }
 
-#ifndef __EMSCRIPTEN__
+#ifdef __EMSCRIPTEN__
+// The web build has no processes to fork (docs/web.md): the work runs here,
+// and the peak memory is the WebAssembly memory's size.
+ChildRun runInChild(const std::function<std::vector<double>()>& work) {
+  ChildRun run;
+  run.values = work();
+  run.maxRssKb = static_cast<long>(__builtin_wasm_memory_size(0) * 64);
+  return run;
+}
+#else
 namespace {
 bool writeAll(int fd, const void* data, std::size_t n) {
   const char* p = static_cast<const char*>(data);
@@ -77,18 +86,6 @@ bool writeAll(int fd, const void* data, std::size_t n) {
 }
 }  // namespace
 
-#endif
-
-#ifdef __EMSCRIPTEN__
-// The web build has no processes to fork (docs/web.md): the work runs here,
-// and the peak memory is the WebAssembly memory's size.
-ChildRun runInChild(const std::function<std::vector<double>()>& work) {
-  ChildRun run;
-  run.values = work();
-  run.maxRssKb = static_cast<long>(__builtin_wasm_memory_size(0) * 64);
-  return run;
-}
-#else
 ChildRun runInChild(const std::function<std::vector<double>()>& work) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
