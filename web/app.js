@@ -175,7 +175,7 @@ function settingsArgs(system) {
     if ($("profile").value) args.push("--profile", $("profile").value);
     if ($("palette").value) args.push("--palette", $("palette").value);
     if ($("size").value) args.push("--size", ...$("size").value.split(" "));
-    if ($("samples").value) args.push("--samples", $("samples").value);
+    if ($("sampler").value) args.push(...$("sampler").value.split(" "));
   }
   if ($("pace").checked) args.push("--pace", "1991");
   if (!$("keep").checked) args.push("--no-wait");
@@ -351,7 +351,7 @@ async function onPick(input) {
 function sceneChanged() {
   const v = $("scene").value;
   const system = v === "dropped" ? dropped.system : v.split("/")[0];
-  for (const id of ["profile", "palette", "size", "samples"]) $(id).disabled = system !== "prime";
+  for (const id of ["profile", "palette", "size", "sampler"]) $(id).disabled = system !== "prime";
 }
 
 // --- the canvas's keys and mouse, to the program --------------------------
@@ -440,6 +440,12 @@ async function main() {
     drop.classList.add("over");
   });
   drop.addEventListener("dragleave", () => drop.classList.remove("over"));
+  drop.addEventListener("keydown", (e) => {  // the box from the keyboard: choose files
+    if (e.key === "Enter" || e.key === " ") {
+      e.preventDefault();
+      $("pick").click();
+    }
+  });
   drop.addEventListener("drop", (e) => onDrop(e).catch((x) => showError([String(x)])));
   $("pick").addEventListener("change", (e) => onPick(e.target).catch((x) => showError([String(x)])));
   $("pickdir").addEventListener("change",
