@@ -1,8 +1,9 @@
 #include "legacy_io/common/pov_text.h"
-#include "legacy_io/common/charconv.h"
 
 #include <charconv>
 #include <cmath>
+
+#include "legacy_io/common/charconv.h"
 
 namespace prime {
 

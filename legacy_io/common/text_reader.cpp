@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string_view>
 
+#include "legacy_io/common/charconv.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
-#include "legacy_io/common/charconv.h"
 
 namespace prime::io {
 

@@ -9,11 +9,11 @@
 #include <string_view>
 #include <system_error>
 
+#include "legacy_io/common/charconv.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/input_file.h"
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/common/text_reader.h"
-#include "legacy_io/common/charconv.h"
 
 namespace prime::cli {
 

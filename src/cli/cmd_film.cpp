@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "legacy_io/common/charconv.h"
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/common/run_inputs.h"
@@ -35,7 +36,6 @@
 #include "palette/quantize/quantize.h"
 #include "src/cli/commands.h"
 #include "src/cli/option_values.h"
-#include "legacy_io/common/charconv.h"
 
 extern char** environ;
 
