@@ -16,6 +16,7 @@
 
 namespace {
 
+using prime::display::module::copyError;
 using prime::display::module::Event;
 using prime::display::module::Key;
 using prime::display::module::WindowBackend;
@@ -305,31 +306,24 @@ class SdlWindow final : public WindowBackend {
   std::string error_;
 };
 
-void copyOut(const std::string& text, char* out, std::size_t size) {
-  if (out == nullptr || size == 0) return;
-  const std::size_t n = std::min(text.size(), size - 1);
-  text.copy(out, n);
-  out[n] = '\0';
-}
-
 }  // namespace
 
 extern "C" WindowBackend* prime_window_sdl_open(int interfaceVersion, int width, int height,
                                                 char* error, std::size_t errorSize) {
   try {
     if (interfaceVersion != prime::display::module::kInterfaceVersion) {
-      copyOut("the window module was built for interface version " +
-                  std::to_string(prime::display::module::kInterfaceVersion) + ", prime uses " +
-                  std::to_string(interfaceVersion) + " (a module from another build?)",
-              error, errorSize);
+      copyError("the window module was built for interface version " +
+                    std::to_string(prime::display::module::kInterfaceVersion) + ", prime uses " +
+                    std::to_string(interfaceVersion) + " (a module from another build?)",
+                error, errorSize);
       return nullptr;
     }
     std::string why;
     SdlWindow* window = SdlWindow::open(width, height, why);
-    if (window == nullptr) copyOut(why, error, errorSize);
+    if (window == nullptr) copyError(why, error, errorSize);
     return window;
   } catch (const std::exception& e) {
-    copyOut(std::string("the window module failed: ") + e.what(), error, errorSize);
+    copyError(std::string("the window module failed: ") + e.what(), error, errorSize);
     return nullptr;
   }
 }

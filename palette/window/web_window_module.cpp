@@ -238,10 +238,7 @@ extern "C" bool prime_window_web_available() {
 extern "C" WindowBackend* prime_window_sdl_open(int interfaceVersion, int width, int height,
                                                 char* error, std::size_t errorSize) {
   auto say = [&](const std::string& text) {
-    if (error == nullptr || errorSize == 0) return;
-    const std::size_t n = std::min(text.size(), errorSize - 1);
-    text.copy(error, n);
-    error[n] = '\0';
+    prime::display::module::copyError(text, error, errorSize);
   };
   if (interfaceVersion != prime::display::module::kInterfaceVersion) {
     say("the page's window is interface " +

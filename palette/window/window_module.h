@@ -8,8 +8,10 @@
 // No SDL types here, and nothing crosses the boundary but plain values, C
 // strings and the executable's own pixel buffer; nothing throws across it.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 namespace prime::display::module {
 
@@ -104,6 +106,15 @@ class WindowBackend {
   // Why the last call that could fail did.
   virtual const char* error() const = 0;
 };
+
+// A factory's reason for failing, into out[0 .. size), cut to fit and
+// NUL-terminated (every module's prime_window_sdl_open says it this way).
+inline void copyError(std::string_view text, char* out, std::size_t size) {
+  if (out == nullptr || size == 0) return;
+  const std::size_t n = std::min(text.size(), size - 1);
+  text.copy(out, n);
+  out[n] = '\0';
+}
 
 }  // namespace prime::display::module
 
