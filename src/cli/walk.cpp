@@ -27,32 +27,58 @@ double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+// Each thread's share of the full-resolution passes, per frame.
+void printThreadReport(const ThreadReport& report, int frames) {
+  for (std::size_t k = 0; k < report.loads.size(); ++k) {
+    const ThreadLoad& l = report.loads[k];
+    std::string cpu =
+        l.cpuFirst < 0 ? std::string("CPU not known") : "CPU " + std::to_string(l.cpuFirst);
+    if (l.cpuLast >= 0 && l.cpuLast != l.cpuFirst) cpu += " .. " + std::to_string(l.cpuLast);
+    if (l.migrated) cpu += ", moved between CPUs";
+    std::printf("  thread %zu: %.1f rows, %.1f ms CPU per frame, %s\n", k,
+                static_cast<double>(l.rows) / frames, 1000.0 * l.cpuSeconds / frames, cpu.c_str());
+  }
+}
+
 int runBench(const WalkJob& job, const OrbitView& start, const WalkFlags& flags) {
   const WalkScene& scene = *job.scene;
   const FreeCamera first(start.camera());
   RgbImage image;
   image.assign(first.columns(), first.rows());
-  std::vector<double> coarse, full, single, cpuFull, cpuSingle;
+  std::vector<double> coarse, full, single, cpuFull, cpuSingle, singleOne, cpuSingleOne;
   WalkView state{start, scene.lights(), scene.firstProfile(), false};
   const std::unique_ptr<WalkFrame> renderer = scene.frame(state);
   std::uint64_t rays = 0;
   const int frames = flags.bench;
+  // The speed-up from one thread to N: each frame's full-resolution pass
+  // again on one thread (pinned like thread 0 when --pin).
+  const int threads = threadCount(flags.threads, first.rows());
+  ThreadReport report, reportOne;
+  report.pin = reportOne.pin = flags.pin;
   for (int k = 0; k < frames; ++k) {
     state.view.orbit(360.0 / std::max(frames, 1) * 0.25, 0.0);  // a quarter turn over the run
     const FreeCamera camera(state.view.camera());
     const Clock::time_point t0 = Clock::now();
     const double c0 = bench::processCpuSeconds();
     for (const int block : kProgressiveBlocks) {
-      renderer->pass(camera, block, kProgressiveBlocks[0], image, flags.threads, nullptr, {}, rays);
+      renderer->pass(camera, block, kProgressiveBlocks[0], image, flags.threads, nullptr, {}, rays,
+                     nullptr);
       if (block == kProgressiveBlocks[0]) coarse.push_back(msSince(t0));
     }
     full.push_back(msSince(t0));
     cpuFull.push_back(1000.0 * (bench::processCpuSeconds() - c0));
     const Clock::time_point t1 = Clock::now();
     const double c1 = bench::processCpuSeconds();
-    renderer->pass(camera, 1, 1, image, flags.threads, nullptr, {}, rays);
+    renderer->pass(camera, 1, 1, image, flags.threads, nullptr, {}, rays, &report);
     single.push_back(msSince(t1));
     cpuSingle.push_back(1000.0 * (bench::processCpuSeconds() - c1));
+    if (threads > 1) {
+      const Clock::time_point t2 = Clock::now();
+      const double c2 = bench::processCpuSeconds();
+      renderer->pass(camera, 1, 1, image, 1, nullptr, {}, rays, &reportOne);
+      singleOne.push_back(msSince(t2));
+      cpuSingleOne.push_back(1000.0 * (bench::processCpuSeconds() - c2));
+    }
   }
   const double f = bench::median(full), s = bench::median(single);
   std::printf("walk bench: %s, %d x %d, profile %s, %d frames, %d thread(s) asked (0: all)\n",
@@ -64,6 +90,17 @@ int runBench(const WalkJob& job, const OrbitView& start, const WalkFlags& flags)
               bench::median(cpuFull), f > 0 ? 1000.0 / f : 0.0);
   std::printf("full-resolution pass alone:     median %.1f ms wall, %.1f ms CPU = %.2f fps\n", s,
               bench::median(cpuSingle), s > 0 ? 1000.0 / s : 0.0);
+  std::printf("threads of the full-resolution pass: %d%s\n", threads,
+              flags.pin ? ", pinned" : " (not pinned: --pin pins them)");
+  printThreadReport(report, frames);
+  if (threads > 1) {
+    const double one = bench::median(singleOne);
+    std::printf(
+        "the same pass on 1 thread:      median %.1f ms wall, %.1f ms CPU; speed-up 1 -> %d "
+        "threads %.2f\n",
+        one, bench::median(cpuSingleOne), threads, s > 0 ? one / s : 0.0);
+    printThreadReport(reportOne, frames);
+  }
   return 0;
 }
 
@@ -127,7 +164,7 @@ int runWindow(const WalkJob& job, const OrbitView& start, const WalkFlags& flags
                   frame.setRow(y, row);
                 }
               },
-              rays);
+              rays, nullptr);
           if (!done) return;
           passBlock = block;
         }
@@ -255,6 +292,9 @@ void addWalkVerb(CLI::App& app, Action& action, const System& system) {
   cmd->add_option("--bench", flags->bench,
                   "Headless: render N frames along an orbit and print latency and frame rates")
       ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--pin", flags->pin,
+                "With --bench: pin render thread k to the k-th CPU the process may use, and say "
+                "so");
   cmd->add_flag("--log-frames", flags->logFrames,
                 "Say on stderr when each frame is complete (tests)");
   cmd->add_option("--pivot", flags->pivot,

@@ -33,6 +33,7 @@
 #include "src/cli/live_render.h"
 #include "src/cli/overlay.h"
 #include "src/geom/orbit_view.h"
+#include "src/render/render_rows.h"
 #include "src/render/rgb_image.h"
 
 namespace prime::cli {
@@ -55,10 +56,11 @@ class WalkFrame {
   // camera's size; it keeps the earlier passes' colours). rowsDone(row0,
   // rows) on the calling thread; false when `abandon` stopped it. The last
   // pass gives the pixels `prime trace` gives with the same camera and one
-  // ray per pixel. Adds the rays cast to `rays`.
+  // ray per pixel. Adds the rays cast to `rays`, and each thread's rows and
+  // CPU time to `report` when it is given (`--bench`).
   virtual bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
                     const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
-                    std::uint64_t& rays) = 0;
+                    std::uint64_t& rays, ThreadReport* report) = 0;
 };
 
 // What a system gives `prime walk`.
@@ -89,6 +91,7 @@ class WalkScene {
 struct WalkFlags {
   int threads = 0;                              // --threads
   int bench = 0;                                // --bench N: N frames headless
+  bool pin = false;                             // --pin: the bench's threads pinned to CPUs
   bool logFrames = false;                       // --log-frames
   std::vector<double> pivot;                    // --pivot X Y Z
   std::string cameraFile = kDefaultCameraFile;  // --camera-file

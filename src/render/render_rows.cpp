@@ -11,7 +11,67 @@
 
 #include "src/render/progressive.h"
 
+#if defined(__linux__) && !defined(__EMSCRIPTEN__)
+#include <pthread.h>
+#include <sched.h>
+#define PRIME_THREAD_CPUS 1
+#endif
+#include <ctime>
+
 namespace prime {
+
+ThreadLoad& ThreadLoad::operator+=(const ThreadLoad& o) {
+  rows += o.rows;
+  cpuSeconds += o.cpuSeconds;
+  if (cpuFirst < 0) cpuFirst = o.cpuFirst;
+  migrated = migrated || o.migrated || (cpuLast >= 0 && o.cpuFirst >= 0 && o.cpuFirst != cpuLast);
+  if (o.cpuLast >= 0) cpuLast = o.cpuLast;
+  return *this;
+}
+
+namespace {
+
+double threadCpuSeconds() {
+  timespec ts{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return 0.0;
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+int currentCpu() {
+#ifdef PRIME_THREAD_CPUS
+  return sched_getcpu();
+#else
+  return -1;
+#endif
+}
+
+// The CPUs this process may run on, in order (empty: the system does not say).
+std::vector<int> allowedCpus() {
+  std::vector<int> cpus;
+#ifdef PRIME_THREAD_CPUS
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0)
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &set)) cpus.push_back(c);
+#endif
+  return cpus;
+}
+
+// Pins the calling thread to `cpu`; false when the system refuses.
+bool pinTo(int cpu) {
+#ifdef PRIME_THREAD_CPUS
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  return pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0;
+#else
+  (void)cpu;
+  return false;
+#endif
+}
+
+}  // namespace
 
 int startThreads(std::vector<std::thread>& pool, int count, const std::function<void(int)>& fn) {
   pool.reserve(pool.size() + static_cast<std::size_t>(std::max(0, count)));
@@ -51,7 +111,16 @@ RowsRun renderRows(int rows, int threads,
   std::vector<int> finished;
   std::exception_ptr error;
 
+  std::vector<ThreadLoad> loads(static_cast<std::size_t>(run.threads));
+  const std::vector<int> cpus =
+      callbacks.threads && callbacks.threads->pin ? allowedCpus() : std::vector<int>{};
+  const std::thread::id caller = std::this_thread::get_id();
   auto worker = [&](int thread) {
+    ThreadLoad* const load = callbacks.threads ? &loads[static_cast<std::size_t>(thread)] : nullptr;
+    if (!cpus.empty() && std::this_thread::get_id() != caller)  // never the caller's own thread
+      pinTo(cpus[static_cast<std::size_t>(thread) % cpus.size()]);
+    const double cpu0 = load ? threadCpuSeconds() : 0.0;
+    if (load) load->cpuFirst = load->cpuLast = currentCpu();
     for (;;) {
       if (callbacks.abort && callbacks.abort->load()) break;
       const int row = nextRow.fetch_add(1);
@@ -69,6 +138,12 @@ RowsRun renderRows(int rows, int threads,
         wake.notify_all();
         break;
       }
+      if (load) {
+        ++load->rows;
+        const int cpu = currentCpu();
+        load->migrated = load->migrated || cpu != load->cpuLast;
+        load->cpuLast = cpu;
+      }
       bool last = false;
       {
         std::lock_guard lock(mutex);
@@ -77,6 +152,7 @@ RowsRun renderRows(int rows, int threads,
       }
       if (last) wake.notify_all();
     }
+    if (load) load->cpuSeconds = threadCpuSeconds() - cpu0;
   };
 
   std::vector<std::thread> pool;
@@ -117,35 +193,25 @@ RowsRun renderRows(int rows, int threads,
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
   report(true);
+  if (callbacks.threads) {
+    std::vector<ThreadLoad>& sum = callbacks.threads->loads;
+    if (sum.size() < loads.size()) sum.resize(loads.size());
+    for (std::size_t k = 0; k < loads.size(); ++k) sum[k] += loads[k];
+  }
 
   run.aborted = rowsDone.load() < bandRows;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 
-bool progressivePass(int width, int height, int block, int firstBlock, int threads,
-                     const std::atomic<bool>* abandon,
-                     const std::function<void(int row0, int rows)>& rowsDone,
-                     const std::function<Rgb(int row, int column, int thread)>& sample,
-                     RgbImage& out) {
+bool runBlockRows(int height, int block, int threads, const std::atomic<bool>* abandon,
+                  const std::function<void(int row0, int rows)>& rowsDone,
+                  const std::function<std::uint64_t(int blockRow, int thread)>& renderRow,
+                  ThreadReport* report) {
   const int blockRows = (height + block - 1) / block;
-  auto renderRow = [&](int br, int thread) -> std::uint64_t {
-    std::uint64_t sampled = 0;
-    const int y0 = br * block, y1 = std::min(height, y0 + block);
-    for (int x0 = 0; x0 < width; x0 += block) {
-      if (!sampledInEarlierPass(y0, x0, block, firstBlock)) {
-        out.at(y0, x0) = sample(y0, x0, thread);
-        ++sampled;
-      }
-      const Rgb c = out.at(y0, x0);
-      const int x1 = std::min(width, x0 + block);
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) out.at(y, x) = c;
-    }
-    return sampled;
-  };
   RowCallbacks cb;
   cb.abort = abandon;
+  cb.threads = report;
   if (rowsDone)
     cb.rowDone = [&](int br) {
       const int y0 = br * block;

@@ -5,6 +5,7 @@
 // Each row is rendered by exactly one call and writes only its own pixels,
 // so the picture is the same bytes for any thread count.
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -13,9 +14,29 @@
 #include <thread>
 #include <vector>
 
+#include "src/render/progressive.h"
 #include "src/render/rgb_image.h"
 
 namespace prime {
+
+// What one thread of a run did: for the benchmark's thread report (`prime
+// walk --bench`), so that a slow thread, a thread that had no core of its
+// own or one the system moved between CPUs shows.
+struct ThreadLoad {
+  int rows = 0;           // rows (or rows of blocks) it rendered
+  double cpuSeconds = 0;  // its own CPU time (CLOCK_THREAD_CPUTIME_ID)
+  int cpuFirst = -1;      // the CPU it started on (-1: the system does not say)
+  int cpuLast = -1;       // the CPU it ended on
+  bool migrated = false;  // seen on another CPU between rows
+  ThreadLoad& operator+=(const ThreadLoad& o);
+};
+
+// Per-thread figures of one or more runs, and whether the threads are
+// pinned: thread k to the k-th CPU this process may use (modulo their count).
+struct ThreadReport {
+  bool pin = false;
+  std::vector<ThreadLoad> loads;  // index: the thread; summed over runs
+};
 
 struct RowCallbacks {
   // Called on the calling thread about five times a second and once at the end.
@@ -29,6 +50,9 @@ struct RowCallbacks {
   // picture rendered in pieces (`prime trace --rows`). The others are not
   // touched; progress counts the band's rows.
   int first = 0, last = -1;
+  // When set: each thread's rows, CPU time and CPUs are added to it (and
+  // the threads pinned when it says so).
+  ThreadReport* threads = nullptr;
 };
 
 // Thrown by checkAbort inside a row: renderRows abandons the row (it is not
@@ -96,6 +120,14 @@ RowsRun renderRows(int rows, int threads,
                    const std::function<std::uint64_t(int row, int thread)>& renderRow,
                    const RowCallbacks& callbacks = {});
 
+// The rows of blocks of one progressive pass (progressivePass below) on the
+// shared scheduler: renderRow(blockRow, thread) for each, rowsDone with the
+// picture rows a finished block row covers. False when `abandon` stopped it.
+bool runBlockRows(int height, int block, int threads, const std::atomic<bool>* abandon,
+                  const std::function<void(int row0, int rows)>& rowsDone,
+                  const std::function<std::uint64_t(int blockRow, int thread)>& renderRow,
+                  ThreadReport* report);
+
 // One pass of a walk's coarse-to-fine frame (src/render/progressive.h, T38)
 // over the shared scheduler: for every block x block block of the width x
 // height picture, sample(row, column, thread) gives the colour of its
@@ -103,11 +135,31 @@ RowsRun renderRows(int rows, int threads,
 // frame's coarsest) and the block takes it. rowsDone(row0, rows) runs on
 // the calling thread when picture rows row0 .. row0+rows-1 are final for this
 // pass. Returns false when `abandon` stopped it. The last pass (block 1)
-// samples each pixel once over the frame's passes.
+// samples each pixel once over the frame's passes. A template, so that a
+// system's sample is called directly, not through a function object per
+// pixel.
+template <class Sample>
 bool progressivePass(int width, int height, int block, int firstBlock, int threads,
                      const std::atomic<bool>* abandon,
-                     const std::function<void(int row0, int rows)>& rowsDone,
-                     const std::function<Rgb(int row, int column, int thread)>& sample,
-                     RgbImage& out);
+                     const std::function<void(int row0, int rows)>& rowsDone, Sample&& sample,
+                     RgbImage& out, ThreadReport* report = nullptr) {
+  auto renderRow = [&](int br, int thread) -> std::uint64_t {
+    std::uint64_t sampled = 0;
+    const int y0 = br * block, y1 = std::min(height, y0 + block);
+    for (int x0 = 0; x0 < width; x0 += block) {
+      if (!sampledInEarlierPass(y0, x0, block, firstBlock)) {
+        out.at(y0, x0) = sample(y0, x0, thread);
+        ++sampled;
+      }
+      if (block == 1) continue;
+      const Rgb c = out.at(y0, x0);
+      const int x1 = std::min(width, x0 + block);
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) out.at(y, x) = c;
+    }
+    return sampled;
+  };
+  return runBlockRows(height, block, threads, abandon, rowsDone, renderRow, report);
+}
 
 }  // namespace prime

@@ -24,7 +24,7 @@ class CglWalkFrame : public WalkFrame {
   CglWalkFrame(const Tracer& tracer, std::string path) : tracer_(tracer), path_(std::move(path)) {}
   bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
             const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
-            std::uint64_t& rays) override {
+            std::uint64_t& rays, ThreadReport* report) override {
     const prime::cgl::Camera cam =
         prime::cgl::cameraOf(prime::cgl::displayOf(camera.settings()), path_);
     // The window `--size W H` makes (src/cli/cgl/options.h): picture row r,
@@ -40,7 +40,7 @@ class CglWalkFrame : public WalkFrame {
               cam, xleft + column, yhigh - row, perThread[static_cast<std::size_t>(thread)]);
           return Rgb{c.r / 255.0, c.g / 255.0, c.b / 255.0};
         },
-        out);
+        out, report);
     for (const TraceStats& s : perThread) rays += s.rays.rays();
     return done;
   }

@@ -24,7 +24,7 @@ class MaloneWalkFrame : public WalkFrame {
   explicit MaloneWalkFrame(const Tracer& tracer) : tracer_(tracer) {}
   bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
             const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
-            std::uint64_t& rays) override {
+            std::uint64_t& rays, ThreadReport* report) override {
     const prime::malone::ViewerRays primary(prime::malone::viewerOf(camera.settings()));
     std::vector<TraceStats> perThread(
         static_cast<std::size_t>(threadCount(threads, (camera.rows() + block - 1) / block)));
@@ -33,7 +33,7 @@ class MaloneWalkFrame : public WalkFrame {
         [&](int row, int column, int thread) {
           return tracer_.pixel(primary(column, row), perThread[static_cast<std::size_t>(thread)]);
         },
-        out);
+        out, report);
     for (const TraceStats& s : perThread) rays += s.rays();
     return done;
   }

@@ -39,10 +39,10 @@ class PrimeWalkFrame : public WalkFrame {
       : scene_(std::move(scene)), renderer_(scene_, profile, settings.trace, settings.thesis) {}
   bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
             const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
-            std::uint64_t& rays) override {
+            std::uint64_t& rays, ThreadReport* report) override {
     TraceStats stats;
     const bool done =
-        renderer_.pass(camera, block, firstBlock, out, threads, abandon, rowsDone, stats);
+        renderer_.pass(camera, block, firstBlock, out, threads, abandon, rowsDone, stats, report);
     rays += stats.rays();
     return done;
   }

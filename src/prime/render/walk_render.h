@@ -13,6 +13,7 @@
 #include "src/prime/render/renderer.h"
 #include "src/prime/render/tracer_modern.h"
 #include "src/prime/render/tracer_thesis.h"
+#include "src/render/render_rows.h"
 
 namespace prime {
 
@@ -32,13 +33,15 @@ class WalkRenderer {
   // for this pass. Returns false when `abandon` stopped it.
   bool pass(const FreeCamera& camera, int block, int firstBlock, RgbImage& out, int threads,
             const std::atomic<bool>* abandon, const std::function<void(int, int)>& rowsDone,
-            TraceStats& stats) const;
+            TraceStats& stats, ThreadReport* report = nullptr) const;
 
  private:
   template <class Tracer>
   bool passWith(const Tracer& tracer, const FreeCamera& camera, int block, int firstBlock,
                 RgbImage& out, int threads, const std::atomic<bool>* abandon,
-                const std::function<void(int, int)>& rowsDone, TraceStats& stats) const;
+                const std::function<void(int, int)>& rowsDone, TraceStats& stats,
+                ThreadReport* report) const;
+  TraceOptions options_;
   std::optional<Tracer1991> t1991_;
   std::optional<TracerModern> modern_;
   std::optional<TracerThesis> thesis_;

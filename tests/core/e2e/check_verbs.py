@@ -39,7 +39,7 @@ SHARED = {
               "-q", "--no-window", "--zoom", "--fullscreen", "--scale", "--pace", "--no-wait"],
     "probe": ["--format", "--pixel", "--json"],
     "bench": ["--format"],
-    "walk": ["--format", "--threads", "--bench", "--pivot", "--camera-file", "--no-window",
+    "walk": ["--format", "--threads", "--bench", "--pin", "--pivot", "--camera-file", "--no-window",
              "--zoom", "--fullscreen", "--eye", "--look-at", "--up", "--fov", "--size", "--camera"],
     "export-pov": ["--format"],
 }

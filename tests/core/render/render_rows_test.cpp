@@ -41,6 +41,45 @@ TEST(RenderRows, EveryRowOnceAndTheSamePictureForAnyThreadCount) {
   EXPECT_EQ(one[96 * 7 + 6], 96006u);
 }
 
+// The benchmark's thread report: each thread's rows add up to the picture's,
+// each thread counts CPU time of its own, and the sums grow run by run.
+TEST(RenderRows, ThreadReportCountsEachThreadsRowsAndCpu) {
+  for (const bool pin : {false, true}) {
+    ThreadReport report;
+    report.pin = pin;
+    RowCallbacks cb;
+    cb.threads = &report;
+    std::atomic<int> work{0};
+    const RowsRun run = renderRows(
+        40, 3,
+        [&](int, int) -> std::uint64_t {
+          const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
+          while (std::chrono::steady_clock::now() < until) ++work;  // CPU, not sleep
+          return 1;
+        },
+        cb);
+    ASSERT_EQ(report.loads.size(), static_cast<std::size_t>(run.threads)) << pin;
+    int rows = 0;
+    double cpu = 0;
+    for (const ThreadLoad& l : report.loads) {
+      rows += l.rows;
+      cpu += l.cpuSeconds;
+      EXPECT_GE(l.cpuSeconds, 0.0);
+#ifdef __linux__
+      EXPECT_GE(l.cpuFirst, 0) << "sched_getcpu names the CPU on Linux";
+#endif
+    }
+    EXPECT_EQ(rows, 40) << pin;
+    EXPECT_GT(cpu, 0.040) << "40 rows of 2 ms of CPU each";
+    // A second run adds to the same report.
+    renderRows(
+        10, 3, [](int, int) -> std::uint64_t { return 1; }, cb);
+    rows = 0;
+    for (const ThreadLoad& l : report.loads) rows += l.rows;
+    EXPECT_EQ(rows, 50) << pin;
+  }
+}
+
 TEST(RenderRows, ThreadCountNeverExceedsTheRows) {
   EXPECT_EQ(threadCount(8, 3), 3);
   EXPECT_EQ(threadCount(2, 100), 2);

@@ -142,6 +142,14 @@ TEST(WalkBench, RunsHeadlessAndPrintsFrameRates) {
   EXPECT_THAT(r.output, HasSubstr("64 x 48, profile 1991, 2 frames"));
   EXPECT_THAT(r.output, HasSubstr("first coarse pass (8 x 8 blocks): median "));
   EXPECT_THAT(r.output, HasSubstr(" fps"));
+  EXPECT_THAT(r.output, HasSubstr("threads of the full-resolution pass: 1"));
+  EXPECT_THAT(r.output, HasSubstr("  thread 0: 48.0 rows"));
+  // Two threads: their rows, and the speed-up from one thread.
+  const auto t = runPrime("walk " + dir + " --bench 2 --size 64 48 --threads 2 --pin");
+  ASSERT_EQ(t.status, 0) << t.output;
+  EXPECT_THAT(t.output, HasSubstr("threads of the full-resolution pass: 2, pinned"));
+  EXPECT_THAT(t.output, HasSubstr("  thread 1: "));
+  EXPECT_THAT(t.output, HasSubstr("speed-up 1 -> 2 threads "));
   // Without a display and without --bench: a usage error saying why.
   const auto w = runPrime("walk " + dir);
   EXPECT_EQ(w.status, 2) << w.output;
