@@ -325,9 +325,10 @@ class Preprocessor {
     std::vector<Vec3> controls;
     controls.reserve(node.controls.size());
     for (const Vec3& c : node.controls) controls.push_back(pointMatrixMul(c, m));
-    SplineSurface s =
-        buildSpline(controls, node.nu, node.nv, node.uEnd, node.vEnd, node.divisions, node.overlap);
+    SplineSurface s = buildSpline(controls, node.nu, node.nv, node.uEnd, node.vEnd, node.divisions,
+                                  node.overlap, !options_.modernSplines);
     s.node = node.number;
+    if (options_.modernSplines) buildModernCells(s);
     // Newton's points lie on the surface, inside the control vertices' hull.
     o.box = s.hull;
     pad(o.box);
@@ -631,6 +632,7 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   Scene scene;
   scene.path = file.path;
   scene.camera = cameraOf(file.display, file.path);
+  scene.modernSplines = options.modernSplines;
 
   // Surfaces (section 9.4), with their textures (section 10).
   int lastTexture = -1;

@@ -99,6 +99,7 @@ struct Scene {
   // Fractal surfaces (section 5): Object::fractal indexes this.
   std::vector<FractalSurface> fractals;
   std::vector<SplineSurface> splines;  // B-spline surfaces (Object::spline), section 6
+  bool modernSplines = false;          // BuildOptions::modernSplines (CGL-D180)
   Spectrum ambient{};                  // k_a pi I_a lambda (section 9.6: "one colour-vector")
   std::vector<std::string> warnings;   // ignored scale nodes (Appendix 1 section 9)
   int primitives = 0, boxes = 0;       // counts of object nodes by kind
@@ -125,6 +126,9 @@ struct BuildOptions {
   // divisions + 3 points a direction) and box trees would take more than this
   // in all, at kSplineBytesPerPoint: checked before each is made.
   std::uint64_t maxSplineBytes = std::uint64_t{2} << 30;
+  // `--profile modern`: spline surfaces are intersected by the modern
+  // intersector (CGL-D180, buildModernCells), not the document's walk.
+  bool modernSplines = false;
 };
 
 // What a refined spline point costs at the peak of building it, with its

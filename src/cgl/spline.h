@@ -18,6 +18,7 @@
 
 #include "legacy_io/cgl/scene_file.h"
 #include "src/geom/aabb.h"
+#include "src/geom/bvh.h"
 #include "src/geom/ray.h"
 #include "src/math/vec.h"
 #include "src/render/picture_buffer.h"
@@ -81,6 +82,17 @@ struct SplineLeaf {
   int node = 0;       // the leaf's index in `nodes` (the document's tie order)
 };
 
+// A knot cell of the modern intersector (CGL-D180, `--profile modern`): the
+// parameter rectangle [u0, u1] x [v0, v1] of one refined interval pair and
+// its Bezier points.
+struct SplineCell {
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  // The cell's piece of surface as a bicubic Bezier patch (it is one
+  // polynomial over a knot cell): it lies in the convex hull of these 16
+  // points, far tighter than the hull of the 16 refined B-spline vertices.
+  std::array<Vec3, 16> bezier{};
+};
+
 struct SplineSurface {
   int node = 0;  // the scene node
   int mu = 0;    // extended vertices in u: nu + 4 (indices -4 .. m)
@@ -106,6 +118,11 @@ struct SplineSurface {
   // node has one packet; leafData[k] is leaf k.
   LargeBuffer<SplinePacket> packets;
   LargeBuffer<SplineLeaf> leafData;
+  // The modern intersector's cells and a BVH over their boxes (each the box
+  // of the cell's 16 refined vertices, padded): built by buildModernCells,
+  // empty for the document's path.
+  std::vector<SplineCell> cells;
+  Bvh cellBvh;
   double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
   Aabb hull;             // the control vertices' box: contains every surface point
   double refineSeconds = 0, treeSeconds = 0;
@@ -136,8 +153,11 @@ double documentPacketCost(const SplineSurface& s);
 // Builds a surface from the transformed user control vertices (nv groups of
 // nu, controls[v * nu + u], as the reader stores them). Throws nothing: the
 // reader has checked the counts; divisions >= 1, nu, nv >= 1.
+// Without `documentTree` (the modern profile, CGL-D180) the box tree and its
+// packets are not built: the surface is then for buildModernCells only.
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
-                          EndCondition vEnd, int divisions, double overlap);
+                          EndCondition vEnd, int divisions, double overlap,
+                          bool documentTree = true);
 
 SplinePoint evaluate(const SplineSurface& s, double u, double v);
 // Long-double evaluation of Q, for the references.
@@ -248,6 +268,28 @@ inline bool occludesSpline(const SplineSurface& s, const BoxRay& boxRay, double 
   const double rootEntry = s.nodes[0].box.entry(boxRay);
   if (!(rootEntry < tMax)) return false;
   return occludesSplineBelowRoot(s, boxRay, rootEntry, tMin, tMax, counters);
+}
+
+// The modern intersector (CGL-D180, the profile `modern`; not the
+// document's): the surface's knot cells, each boxed by its piece of
+// surface's Bezier points (padded), in a BVH visited nearest box first; in
+// a cell, the patch seen along the ray (its points' distances from the
+// ray's two planes) is passed over when its hull cannot hold the ray, else
+// halved each way, and each quarter whose hull may hold the ray gives Newton
+// a start at its centre (then its corners, when that run does not
+// converge); the walk ends at the first box entered beyond the nearest hit.
+// buildModernCells adds the cells to a built surface.
+void buildModernCells(SplineSurface& s);
+bool intersectSplineModern(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                           SplineHit& hit, SplineCounters& counters);
+bool occludesSplineModern(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
+                          SplineCounters& counters);
+// The intersector the surface was built for: the modern one when it has
+// cells, else the document's walk (for the hole counts of either profile).
+inline bool intersectSplineAsBuilt(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
+                                   SplineHit& hit, SplineCounters& counters) {
+  if (!s.cells.empty()) return intersectSplineModern(s, BoxRay(ray), tMin, tMax, hit, counters);
+  return intersectSpline(s, ray, tMin, tMax, hit, counters);
 }
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by

@@ -155,11 +155,11 @@ void SplineStudy::holes(int step) const {
       for (int x = p.xleft; x <= p.xright; x += step)
         countHoles(s, scene_.camera.primaryRay(x, y), settings_.epsilon, h);
     std::printf(
-        "holes (node %d, overlap %g): %llu rays, reference hits %llu, Newton path "
+        "holes (node %d, overlap %g): %llu rays, reference hits %llu, %s path "
         "hits %llu, holes %llu (%.2f%% of the reference's hits), path-only hits "
         "%llu, farther hits %llu\n",
         s.node, s.overlap, static_cast<unsigned long long>(h.rays),
-        static_cast<unsigned long long>(h.referenceHits),
+        static_cast<unsigned long long>(h.referenceHits), s.cells.empty() ? "Newton" : "modern",
         static_cast<unsigned long long>(h.pathHits), static_cast<unsigned long long>(h.holes),
         h.referenceHits
             ? 100.0 * static_cast<double>(h.holes) / static_cast<double>(h.referenceHits)
@@ -182,7 +182,7 @@ void SplineStudy::distances(const std::string& path) const {
         SplineHit h;
         SplineCounters c;
         if (intersectSplineReference(s, ray, settings_.epsilon, ref, h)) ref = h.t;
-        if (intersectSpline(s, ray, settings_.epsilon, along, h, c)) along = h.t;
+        if (intersectSplineAsBuilt(s, ray, settings_.epsilon, along, h, c)) along = h.t;
       }
       const double len = length(ray.d);
       char buf[96];

@@ -30,7 +30,6 @@ std::vector<int> spline_detail::knotsInRange(int m, int divisions, ParamRange ra
   return out;
 }
 
-
 namespace {
 
 class TreeBuilder {
@@ -391,7 +390,7 @@ void buildTraversal(SplineSurface& s, PacketLayout layout) {
 }
 
 SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, EndCondition uEnd,
-                          EndCondition vEnd, int divisions, double overlap) {
+                          EndCondition vEnd, int divisions, double overlap, bool documentTree) {
   SplineSurface s;
   s.mu = nu + 4;
   s.mv = nv + 4;
@@ -447,12 +446,14 @@ SplineSurface buildSpline(const std::vector<Vec3>& controls, int nu, int nv, End
     }
   s.refineSeconds = secondsSince(start);
 
-  const auto treeStart = std::chrono::steady_clock::now();
-  TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
-  tb.build();
-  s.hull.add(s.nodes[0].box);
-  buildTraversal(s);
-  s.treeSeconds = secondsSince(treeStart);
+  if (documentTree) {
+    const auto treeStart = std::chrono::steady_clock::now();
+    TreeBuilder tb(s, knotsInRange(s.m, s.divisions, ru), knotsInRange(s.n, s.divisions, rv));
+    tb.build();
+    s.hull.add(s.nodes[0].box);
+    buildTraversal(s);
+    s.treeSeconds = secondsSince(treeStart);
+  }
 
   // CGL-Q143: the tolerance, in scene units, relative to the surface's size.
   const Vec3 ext = s.hull.hi - s.hull.lo;

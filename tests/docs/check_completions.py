@@ -23,7 +23,7 @@ KNOWN = {"model", "trace", "probe", "dump", "view", "export", "diff", "check", "
 KNOWN_TRACE = {"--png", "--threads", "--model", "--profile", "--palette"}
 # Known sets by hand (the user guide): command, option, values.
 KNOWN_VALUES = {("trace", "--format"): {"prime", "malone", "cgl"},
-                ("trace", "--profile"): {"1991", "modern", "thesis"},
+                ("trace", "--profile"): {"1991", "modern", "thesis", "document"},  # CGL: document, modern
                 ("trace", "--png-area"): {"image", "screen", "file"},
                 ("trace", "--quantize"): {"popularity", "median-cut", "octree"},
                 ("quantize", "--method"): {"popularity", "median-cut", "octree", "listing",

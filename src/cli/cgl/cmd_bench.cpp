@@ -73,6 +73,10 @@ void addBenchOptions(CLI::App* cmd, Action& action) {
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--linear-search", base->linearSearch,
                 "Test the object list in order for every ray, as the package did (CGL-D43)");
+  cmd->add_option("--profile", base->profile,
+                  "document (default) or modern: spline surfaces by the modern intersector "
+                  "(CGL-D180)")
+      ->check(CLI::IsMember({"document", "modern"}));
   addBenchTable(cmd, action, "Waterloo CGL", "CGL scene-description files",
                 [base](const std::string& path) {
                   CglOptions o = *base;

@@ -53,8 +53,9 @@ class CglWalkFrame : public WalkFrame {
 class CglWalkScene : public WalkScene {
  public:
   CglWalkScene(prime::cgl::Scene scene, const prime::cgl::RenderSettings& settings,
-               std::string file)
-      : scene_(std::move(scene)),
+               std::string file, std::string profile)
+      : profile_(std::move(profile)),
+        scene_(std::move(scene)),
         tracer_(scene_, prime::cgl::traceSettings(settings)),
         settings_(settings),
         file_(std::move(file)) {}
@@ -73,7 +74,8 @@ class CglWalkScene : public WalkScene {
                       xleft + x, yhigh - y)
         .placedAt(-xleft, -(prime::cgl::Frame::kSize - 1 - yhigh));
   }
-  std::vector<std::string> profiles() const override { return {"document"}; }
+  // The one --profile chose (its scene is built for it: CGL-D180's cells or none).
+  std::vector<std::string> profiles() const override { return {profile_}; }
   std::unique_ptr<WalkFrame> frame(const WalkView&) const override {
     return std::make_unique<CglWalkFrame>(tracer_, scene_.path);
   }
@@ -91,6 +93,7 @@ class CglWalkScene : public WalkScene {
   }
 
  private:
+  std::string profile_;
   prime::cgl::Scene scene_;
   Tracer tracer_;  // over scene_: built once
   prime::cgl::RenderSettings settings_;
@@ -120,7 +123,7 @@ WalkFactory addWalkOptions(CLI::App* cmd, const std::shared_ptr<WalkFlags>&) {
     // over the whole screen.
     job.camera = o->applied ? *o->applied : prime::cgl::freeCamera(file.display);
     job.centre = box.empty() ? job.camera.lookAt : box.centre();
-    job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings, o->file);
+    job.scene = std::make_unique<CglWalkScene>(std::move(scene), settings, o->file, o->profile);
     return job;
   };
 }

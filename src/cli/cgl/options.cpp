@@ -26,6 +26,12 @@ void addCglOptions(CLI::App* cmd, CglOptions& o, bool withParameters) {
                 "pixels, slower; operation counts as the document's program made them)");
   addCameraFlags(cmd, o.camera, "the scene's display parameters, section 6");
   if (!withParameters) return;
+  cmd->add_option("--profile", o.profile,
+                  "document: the package as the document describes it (default); modern: the "
+                  "same, but spline surfaces by the modern intersector, tight knot-cell boxes "
+                  "nearest first (docs/cgl/splines.md, CGL-D180)")
+      ->check(CLI::IsMember({"document", "modern"}));
+
   const std::string g =
       "Program parameters (override the scene file; Appendix 2: -yh -yl -xl "
       "-xr -d -s -m -b -q -t -a)";
@@ -180,6 +186,7 @@ prime::cgl::Scene buildCgl(const CglOptions& o, const prime::cgl::SceneFile& fil
   prime::cgl::BuildOptions build;
   build.textureDirs = o.textureDirs;
   build.phosphors = phosphorsOf(o);
+  build.modernSplines = o.profile == "modern";
   return prime::cgl::buildScene(file, build);
 }
 

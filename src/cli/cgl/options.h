@@ -21,6 +21,7 @@ struct CglOptions {
   std::string phosphors = "electrohome";
   int threads = 0;            // trace's shared --threads
   bool linearSearch = false;  // the document's object list for every ray (CGL-D43)
+  std::string profile = "document";  // --profile: document, or modern splines (CGL-D180)
   // Overrides of the program parameters (unset: the file's, else the default).
   std::optional<int> yhigh, ylow, xleft, xright, depth, memory, aalevel;
   std::optional<double> brightness, aathreshold;

@@ -297,6 +297,19 @@ TEST(CglSplineIntersect, NoFalseHitInAMillionRandomRays) {
   EXPECT_GT(hits, 50000);  // 65,023 with this seed
 }
 
+// The control vertices of a vase of spline-vases.cgl (8 around, 6 up).
+std::vector<Vec3> vaseControls() {
+  std::vector<Vec3> c;
+  const double profile[6][2] = {{0, 0.16},    {0.12, 0.30}, {0.32, 0.34},
+                                {0.55, 0.16}, {0.72, 0.10}, {0.85, 0.17}};
+  for (const auto& ring : profile)
+    for (int i = 0; i < 8; ++i) {
+      const double a = 2 * M_PI * (i + 0.5) / 8;
+      c.push_back({ring[1] * std::cos(a), ring[0], ring[1] * std::sin(a)});
+    }
+  return c;
+}
+
 TEST(CglSplineHoles, GenerousOverlapHasNoneFigure55sHas) {
   // Primary-like rays over the bump from above: with overlap 1.0 the Newton
   // path finds every hit the reference finds; the vases' 0.2 misses some.
@@ -314,19 +327,100 @@ TEST(CglSplineHoles, GenerousOverlapHasNoneFigure55sHas) {
   EXPECT_EQ(generous.holes, 0u);
   EXPECT_EQ(generous.extra, 0u);
   // A vase of spline-vases.cgl at overlap 0.2.
-  std::vector<Vec3> c;
-  const double profile[6][2] = {{0, 0.16},    {0.12, 0.30}, {0.32, 0.34},
-                                {0.55, 0.16}, {0.72, 0.10}, {0.85, 0.17}};
-  for (const auto& ring : profile)
-    for (int i = 0; i < 8; ++i) {
-      const double a = 2 * M_PI * (i + 0.5) / 8;
-      c.push_back({ring[1] * std::cos(a), ring[0], ring[1] * std::sin(a)});
-    }
   const SplineSurface vase =
-      buildSpline(c, 8, 6, EndCondition::Closed, EndCondition::Double, 2, 0.2);
+      buildSpline(vaseControls(), 8, 6, EndCondition::Closed, EndCondition::Double, 2, 0.2);
   const HoleCount v = holes(vase, {0.0, 0.5, 3.2}, {0.0, 0.45, 0.0}, 0.8);
   EXPECT_GT(v.referenceHits, 1000u);
   EXPECT_GT(v.holes, v.referenceHits / 10);
+}
+
+// CGL-D180: the modern intersector (--profile modern) against the dense
+// reference and the document's walk, on a vase at Figure 55's overlap 0.2
+// (where the document's walk misses more than a tenth) and at 1.0: every
+// hit is a point of the surface, none lies beyond the reference's hit (to
+// Newton's tolerance: two runs may stop at two points of one piece of
+// surface within it), it has no more holes than the document's walk, and at
+// 0.2 under a twentieth of them; a shadow segment just past each hit is
+// blocked.
+TEST(CglSplineModern, FewerHolesThanTheDocumentsWalkAndEveryHitOnTheSurface) {
+  const std::vector<Vec3> c = vaseControls();
+  for (const double overlap : {0.2, 1.0}) {
+    SplineSurface vase =
+        buildSpline(c, 8, 6, EndCondition::Closed, EndCondition::Double, 2, overlap);
+    HoleCount document;
+    const Vec3 eye{0.0, 0.5, 3.2}, at{0.0, 0.45, 0.0};
+    std::vector<Ray> rays;
+    for (int y = 0; y < 60; ++y)
+      for (int x = 0; x < 60; ++x) {
+        const Vec3 target = at + Vec3{0.8 * (x / 59.0 - 0.5), 0.8 * (y / 59.0 - 0.5), 0.0};
+        rays.push_back({eye, normalized(target - eye)});
+        countHoles(vase, rays.back(), 1e-6, document);
+      }
+    buildModernCells(vase);
+    ASSERT_FALSE(vase.cells.empty());
+    HoleCount modern;
+    for (const Ray& ray : rays) {
+      countHoles(vase, ray, 1e-6, modern);  // the modern path now: the surface has cells
+      SplineHit ref, hit;
+      SplineCounters counters;
+      const bool r = intersectSplineReference(vase, ray, 1e-6, 1e100, ref);
+      const bool m = intersectSplineModern(vase, BoxRay(ray), 1e-6, 1e100, hit, counters);
+      if (!m) continue;
+      if (r) {
+        EXPECT_LE(hit.t, ref.t + 10 * vase.tolerance);
+      }
+      const SplinePoint p = evaluate(vase, hit.u, hit.v);
+      EXPECT_LT(length(p.q - (ray.o + ray.d * hit.t)), 1e-6);
+      SplineCounters sc;
+      EXPECT_TRUE(occludesSplineModern(vase, BoxRay(ray), 1e-6, hit.t * 1.001, sc));
+    }
+    EXPECT_EQ(modern.referenceHits, document.referenceHits);
+    EXPECT_GT(modern.referenceHits, 1000u);
+    EXPECT_EQ(modern.farther, 0u);
+    EXPECT_LE(modern.holes, document.holes) << overlap;
+    if (overlap == 0.2) {
+      EXPECT_GT(document.holes, document.referenceHits / 10);
+      EXPECT_LT(modern.holes * 20, document.holes) << modern.holes << " of " << document.holes;
+    }
+  }
+}
+
+// CGL-D180's cells: over each knot cell the surface is the bicubic Bezier
+// patch of the cell's 16 points (sampled and converted), at the ends of a
+// triple-ended bump (where the refined knots change spacing) and around a
+// closed vase alike: the patch and the surface agree at points between the
+// samples, and every surface point lies in the points' box.
+TEST(CglSplineModern, CellsAreTheSurfacesBezierPatches) {
+  auto bernstein = [](double t, int k) {
+    const double s = 1 - t;
+    const double b[4] = {s * s * s, 3 * t * s * s, 3 * t * t * s, t * t * t};
+    return b[k];
+  };
+  for (SplineSurface surface : {bump(0.5), buildSpline(vaseControls(), 8, 6, EndCondition::Closed,
+                                                       EndCondition::Double, 2, 0.5)}) {
+    buildModernCells(surface);
+    ASSERT_GT(surface.cells.size(), 10u);
+    double worst = 0;
+    for (const SplineCell& c : surface.cells) {
+      Aabb box;
+      for (const Vec3& p : c.bezier) box.add(p);
+      for (const double a : {0.1, 0.45, 0.8})
+        for (const double b : {0.05, 0.5, 0.95}) {
+          const Vec3 q = evaluate(surface, c.u0 + (c.u1 - c.u0) * a, c.v0 + (c.v1 - c.v0) * b).q;
+          Vec3 patch{0, 0, 0};
+          for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i)
+              patch = patch + c.bezier[static_cast<std::size_t>(j * 4 + i)] *
+                                  (bernstein(a, i) * bernstein(b, j));
+          worst = std::max(worst, length(patch - q));
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(q[k], box.lo[k] - 1e-12);
+            EXPECT_LE(q[k], box.hi[k] + 1e-12);
+          }
+        }
+    }
+    EXPECT_LT(worst, 1e-12);
+  }
 }
 
 TEST(CglSplineSurface, TextureIndicesFromTheParameters) {
