@@ -26,8 +26,8 @@ if ((RUNS < 5)); then
   exit 2
 fi
 OUT=${OUT:-$ROOT/out/pov-compare}
-DOC=$ROOT/docs/benchmarks-pov.md
-CSV=$ROOT/docs/benchmarks-pov.csv
+DOC=$ROOT/docs/prime/benchmarks-pov.md
+CSV=$ROOT/docs/prime/benchmarks-pov.csv
 
 NAME=pov_compare
 source "$ROOT/bench/pov_common.sh"
