@@ -9,8 +9,6 @@
 #include <thread>
 #include <vector>
 
-#include "src/render/progressive.h"
-
 #if defined(__linux__) && !defined(__EMSCRIPTEN__)
 #include <pthread.h>
 #include <sched.h>

@@ -25,6 +25,30 @@ int paletteIndex(const Rgb& color, const RenderSettings& settings, TraceStats& s
 }
 
 namespace {
+// Every leaf primitive's box within its object's box, and (for the modern
+// and thesis profiles) the points whose hull holds each primitive.
+template <class Tracer>
+std::optional<PrimaryRayMask> maskWithHulls(const Tracer& tracer, const PrimeCamera& camera) {
+  const Scene& scene = tracer.scene();
+  return PrimaryRayMask(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
+                        tracer.bvh().primitiveHullsOfObjects(scene));
+}
+}  // namespace
+
+std::optional<PrimaryRayMask> primaryMaskFor(const Tracer1991& tracer, const PrimeCamera& camera) {
+  if (!tracer.skipsUnneededWork()) return std::nullopt;
+  return PrimaryRayMask(camera, tracer.primaryMaskBoxes());
+}
+std::optional<PrimaryRayMask> primaryMaskFor(const TracerModern& tracer,
+                                             const PrimeCamera& camera) {
+  return maskWithHulls(tracer, camera);
+}
+std::optional<PrimaryRayMask> primaryMaskFor(const TracerThesis& tracer,
+                                             const PrimeCamera& camera) {
+  return maskWithHulls(tracer, camera);
+}
+
+namespace {
 
 // paletteIndex for a run of equal colours (the background, flat faces)
 // computed once: the same bits give the same index and the same counts.
@@ -83,12 +107,7 @@ struct PixelTracer {
   Rgb castPrimary(const PrimeCamera& camera, int i, int j, TraceStats& stats) const {
     return certainMiss ? background(stats) : trace(camera.primaryRay(i, j), 0, stats);
   }
-  Rgb background(TraceStats& stats) const {
-    ++stats.primaryRays;
-    ++stats.maskedPrimaryRays;
-    const auto& b = tracer.scene().background;
-    return {b[0], b[1], b[2]};
-  }
+  Rgb background(TraceStats& stats) const { return maskedPrimaryRay(tracer.scene(), stats); }
 };
 
 // One profile's render: each row's pixels through the sampler, traced by
@@ -235,21 +254,15 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   // Only the chosen profile's tracer is built. The 1991 profile tests boxes
   // only when it skips work (else it searches obj/List linearly, as the
   // listing did); the modern one always does.
-  std::optional<PrimaryRayMask> mask;
   if (settings.profile == Profile::Thesis) {
     const TracerThesis tracer(scene, settings.trace, settings.thesis);
-    mask.emplace(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
-                 tracer.bvh().primitiveHullsOfObjects(scene));
-    renderWith(tracer, camera, mask, settings, callbacks, result);
+    renderWith(tracer, camera, primaryMaskFor(tracer, camera), settings, callbacks, result);
   } else if (settings.profile == Profile::Modern) {
     const TracerModern tracer(scene, settings.trace);
-    mask.emplace(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
-                 tracer.bvh().primitiveHullsOfObjects(scene));
-    renderWith(tracer, camera, mask, settings, callbacks, result);
+    renderWith(tracer, camera, primaryMaskFor(tracer, camera), settings, callbacks, result);
   } else {
     const Tracer1991 tracer(scene, settings.trace);
-    if (settings.trace.skipUnneededWork) mask.emplace(camera, tracer.primaryMaskBoxes());
-    renderWith(tracer, camera, mask, settings, callbacks, result);
+    renderWith(tracer, camera, primaryMaskFor(tracer, camera), settings, callbacks, result);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

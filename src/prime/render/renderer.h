@@ -7,16 +7,34 @@
 #pragma once
 #include <atomic>
 #include <functional>
+#include <optional>
 
 #include "legacy_io/prime/graph_file.h"
 #include "src/prime/render/camera.h"
 #include "src/prime/render/pixel_sampling.h"
+#include "src/prime/render/primary_mask.h"
 #include "src/prime/render/tracer_1991.h"
+#include "src/prime/render/tracer_modern.h"
 #include "src/prime/render/tracer_thesis.h"
 #include "src/render/render_rows.h"
 #include "src/render/rgb_image.h"
 
 namespace prime {
+
+// The primary-ray mask (deviation W6) a render with `tracer` uses for
+// `camera`, as `prime trace` and `prime walk` use it: the leaf primitives'
+// boxes in the 1991 profile (none when it does not skip unneeded work), the
+// same boxes with the hulls about them in the modern and thesis profiles.
+std::optional<PrimaryRayMask> primaryMaskFor(const Tracer1991& tracer, const PrimeCamera& camera);
+std::optional<PrimaryRayMask> primaryMaskFor(const TracerModern& tracer, const PrimeCamera& camera);
+std::optional<PrimaryRayMask> primaryMaskFor(const TracerThesis& tracer, const PrimeCamera& camera);
+// What a tracer's castRay returns for a primary ray the mask rules out (the
+// background), counted as a primary ray the mask answered.
+inline Rgb maskedPrimaryRay(const Scene& scene, TraceStats& stats) {
+  ++stats.primaryRays;
+  ++stats.maskedPrimaryRays;
+  return {scene.background[0], scene.background[1], scene.background[2]};
+}
 
 enum class ColorMapping { Listing, Plate3 };  // ColorNum (K16) or the X1 16x16 red/green table
 

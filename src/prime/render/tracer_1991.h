@@ -33,6 +33,8 @@ class Tracer1991 {
               RayKind kind = RayKind::Primary, double weight = 1.0) const;
 
   const Scene& scene() const { return scene_; }
+  // TraceOptions::skipUnneededWork: the boxes, the mask and the skips are used.
+  bool skipsUnneededWork() const { return options_.skipUnneededWork; }
   // The object boxes every ray is tested against first (the BVH's).
   const ObjectBvh& bvh() const { return bvh_; }
   // Boxes a ray must meet to hit anything: the box of every primitive that

@@ -4,32 +4,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "src/prime/render/primary_mask.h"
 #include "src/render/render_rows.h"
 
 namespace prime {
 
-namespace {
-// The pixels whose primary ray can meet an object, as `prime trace` finds
-// them for the same tracer (renderer.cpp): the others are the background
-// without a ray, the colour the tracer would return.
-std::optional<PrimaryRayMask> maskFor(const Tracer1991& tracer, const PrimeCamera& camera,
-                                      const TraceOptions& options) {
-  if (!options.skipUnneededWork) return std::nullopt;
-  return PrimaryRayMask(camera, tracer.primaryMaskBoxes());
-}
-template <class Tracer>
-std::optional<PrimaryRayMask> maskFor(const Tracer& tracer, const PrimeCamera& camera,
-                                      const TraceOptions&) {
-  const Scene& scene = tracer.scene();
-  return PrimaryRayMask(camera, tracer.bvh().primitiveBoxesOfObjects(scene),
-                        tracer.bvh().primitiveHullsOfObjects(scene));
-}
-}  // namespace
-
 WalkRenderer::WalkRenderer(const Scene& scene, Profile profile, const TraceOptions& options,
-                           const ThesisOptions& thesis)
-    : options_(options) {
+                           const ThesisOptions& thesis) {
   if (profile == Profile::Thesis)
     thesis_.emplace(scene, options, thesis);
   else if (profile == Profile::Modern)
@@ -65,19 +45,15 @@ bool WalkRenderer::passWith(const Tracer& tracer, const FreeCamera& camera, int 
       static_cast<std::size_t>(threadCount(threads, (h + block - 1) / block)));
   CameraSettings settings;
   settings.free = camera.settings();
-  const std::optional<PrimaryRayMask> mask = maskFor(tracer, PrimeCamera(settings), options_);
-  const Vec3& bg = tracer.scene().background;
-  const Rgb background{bg[0], bg[1], bg[2]};
+  // The pixels whose primary ray cannot meet an object get the background
+  // without a ray, as in `prime trace` (deviation W6).
+  const std::optional<PrimaryRayMask> mask = primaryMaskFor(tracer, PrimeCamera(settings));
   const bool masks = mask && mask->masks();
   const bool done = progressivePass(
       w, h, block, firstBlock, threads, abandon, rowsDone,
       [&](int row, int column, int thread) {
         TraceStats& local = perThread[static_cast<std::size_t>(thread)];
-        if (masks && !mask->mayHit(row, column)) {
-          ++local.primaryRays;
-          ++local.maskedPrimaryRays;
-          return background;
-        }
+        if (masks && !mask->mayHit(row, column)) return maskedPrimaryRay(tracer.scene(), local);
         return tracer.castRay(camera.primaryRay(row, column), 0, local);
       },
       out, report);

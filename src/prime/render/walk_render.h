@@ -41,7 +41,6 @@ class WalkRenderer {
                 RgbImage& out, int threads, const std::atomic<bool>* abandon,
                 const std::function<void(int, int)>& rowsDone, TraceStats& stats,
                 ThreadReport* report) const;
-  TraceOptions options_;
   std::optional<Tracer1991> t1991_;
   std::optional<TracerModern> modern_;
   std::optional<TracerThesis> thesis_;
