@@ -632,7 +632,6 @@ Scene buildScene(const SceneFile& file, const BuildOptions& options) {
   Scene scene;
   scene.path = file.path;
   scene.camera = cameraOf(file.display, file.path);
-  scene.modernSplines = options.modernSplines;
 
   // Surfaces (section 9.4), with their textures (section 10).
   int lastTexture = -1;

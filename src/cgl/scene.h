@@ -99,7 +99,6 @@ struct Scene {
   // Fractal surfaces (section 5): Object::fractal indexes this.
   std::vector<FractalSurface> fractals;
   std::vector<SplineSurface> splines;  // B-spline surfaces (Object::spline), section 6
-  bool modernSplines = false;          // BuildOptions::modernSplines (CGL-D180)
   Spectrum ambient{};                  // k_a pi I_a lambda (section 9.6: "one colour-vector")
   std::vector<std::string> warnings;   // ignored scale nodes (Appendix 1 section 9)
   int primitives = 0, boxes = 0;       // counts of object nodes by kind

@@ -119,8 +119,8 @@ struct SplineSurface {
   LargeBuffer<SplinePacket> packets;
   LargeBuffer<SplineLeaf> leafData;
   // The modern intersector's cells and a BVH over their boxes (each the box
-  // of the cell's 16 refined vertices, padded): built by buildModernCells,
-  // empty for the document's path.
+  // of the cell's Bezier points, padded): built by buildModernCells, empty
+  // for the document's path.
   std::vector<SplineCell> cells;
   Bvh cellBvh;
   double tolerance = 0;  // |E_1| + |E_2| for success, scene units (CGL-Q143)
@@ -285,11 +285,17 @@ bool intersectSplineModern(const SplineSurface& s, const BoxRay& boxRay, double 
 bool occludesSplineModern(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
                           SplineCounters& counters);
 // The intersector the surface was built for: the modern one when it has
-// cells, else the document's walk (for the hole counts of either profile).
-inline bool intersectSplineAsBuilt(const SplineSurface& s, const Ray& ray, double tMin, double tMax,
-                                   SplineHit& hit, SplineCounters& counters) {
-  if (!s.cells.empty()) return intersectSplineModern(s, BoxRay(ray), tMin, tMax, hit, counters);
-  return intersectSpline(s, ray, tMin, tMax, hit, counters);
+// cells (BuildOptions::modernSplines), else the document's walk. The
+// renderer and the hole counts of either profile call these.
+inline bool intersectSplineAsBuilt(const SplineSurface& s, const BoxRay& boxRay, double tMin,
+                                   double tMax, SplineHit& hit, SplineCounters& counters) {
+  if (!s.cells.empty()) return intersectSplineModern(s, boxRay, tMin, tMax, hit, counters);
+  return intersectSpline(s, boxRay, tMin, tMax, hit, counters);
+}
+inline bool occludesSplineAsBuilt(const SplineSurface& s, const BoxRay& boxRay, double tMin,
+                                  double tMax, SplineCounters& counters) {
+  if (!s.cells.empty()) return occludesSplineModern(s, boxRay, tMin, tMax, counters);
+  return occludesSpline(s, boxRay, tMin, tMax, counters);
 }
 
 // The reference for holes: every knot cell (a refined interval pair) boxed by

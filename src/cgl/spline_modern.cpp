@@ -165,8 +165,6 @@ void newtonInCell(const SplineSurface& s, const SplineCell& c, const RayPlanes& 
   auto inCell = [&](const NewtonResult& r) {
     return r.hit && r.u >= c.u0 && r.u <= c.u1 && r.v >= c.v0 && r.v <= c.v1;
   };
-  // Newton from (u, v); a run that lands in the cell leaves its (u, v) in
-  // (foundU, foundV) and returns true.
   // A square holding a hit already found in this cell would find it again.
   double foundU[4], foundV[4];
   int founds = 0;
@@ -198,40 +196,50 @@ void newtonInCell(const SplineSurface& s, const SplineCell& c, const RayPlanes& 
   });
 }
 
+// The cells whose boxes the ray enters before limit(), nearest first (the
+// limit re-read after each: the nearest hit so far, or below every entry
+// once a shadow ray is blocked), each searched by newtonInCell. The ray's
+// planes are made at the first cell.
+template <class Limit, class Take>
+void walkCells(const SplineSurface& s, const BoxRay& boxRay, SplineCounters& counters,
+               Limit&& limit, Take&& take) {
+  RayPlanes planes;
+  bool havePlanes = false;
+  NewtonOptions options;
+  options.tolerance = s.tolerance;
+  s.cellBvh.traverse(
+      boxRay,
+      [&](int k, double entry) {
+        ++counters.boxes;
+        // A box entered at the limit or beyond holds nothing nearer (the
+        // traversal's limit is inclusive).
+        if (!(entry < limit())) return;
+        if (!havePlanes) {
+          planes = rayPlanes(boxRay.ray);
+          havePlanes = true;
+        }
+        if (!planes.ok) return;
+        newtonInCell(s, s.cells[static_cast<std::size_t>(k)], planes, boxRay.ray, options, counters,
+                     take);
+      },
+      limit);
+}
+
 }  // namespace
 
 bool intersectSplineModern(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
                            SplineHit& hit, SplineCounters& counters) {
   ++counters.calls;
-  if (s.cells.empty()) return false;
-  const Ray& ray = boxRay.ray;
-  RayPlanes planes;
-  bool havePlanes = false;  // computed at the first cell the ray's box enters
-  NewtonOptions options;
-  options.tolerance = s.tolerance;
   double best = tMax;
   bool found = false;
-  s.cellBvh.traverse(
-      boxRay,
-      [&](int k, double entry) {
-        ++counters.boxes;
-        // A box entered at the nearest hit or beyond holds nothing nearer
-        // (the traversal's limit is inclusive).
-        if (!(entry < best)) return;
-        if (!havePlanes) {
-          planes = rayPlanes(ray);
-          havePlanes = true;
-        }
-        if (!planes.ok) return;
-        newtonInCell(s, s.cells[static_cast<std::size_t>(k)], planes, ray, options, counters,
-                     [&](const NewtonResult& r, double u0, double v0) {
-                       if (!(r.t > tMin && r.t < best)) return;
-                       best = r.t;
-                       found = true;
-                       hit = {r.t, r.u, r.v, u0, v0, r.iterations, r.qu, r.qv};
-                     });
-      },
-      [&] { return best; });
+  walkCells(
+      s, boxRay, counters, [&] { return best; },
+      [&](const NewtonResult& r, double u0, double v0) {
+        if (!(r.t > tMin && r.t < best)) return;
+        best = r.t;
+        found = true;
+        hit = {r.t, r.u, r.v, u0, v0, r.iterations, r.qu, r.qv};
+      });
   if (found) ++counters.hits;
   return found;
 }
@@ -239,30 +247,13 @@ bool intersectSplineModern(const SplineSurface& s, const BoxRay& boxRay, double 
 bool occludesSplineModern(const SplineSurface& s, const BoxRay& boxRay, double tMin, double tMax,
                           SplineCounters& counters) {
   ++counters.calls;
-  if (s.cells.empty()) return false;
-  const Ray& ray = boxRay.ray;
-  RayPlanes planes;
-  bool havePlanes = false;
-  NewtonOptions options;
-  options.tolerance = s.tolerance;
   bool found = false;
   // Any hit in range will do: the limit drops below every entry once found.
-  s.cellBvh.traverse(
-      boxRay,
-      [&](int k, double) {
-        ++counters.boxes;
-        if (found) return;
-        if (!havePlanes) {
-          planes = rayPlanes(ray);
-          havePlanes = true;
-        }
-        if (!planes.ok) return;
-        newtonInCell(s, s.cells[static_cast<std::size_t>(k)], planes, ray, options, counters,
-                     [&](const NewtonResult& r, double, double) {
-                       if (r.t > tMin && r.t < tMax) found = true;
-                     });
-      },
-      [&] { return found ? -1.0 : tMax; });
+  walkCells(
+      s, boxRay, counters, [&] { return found ? -1.0 : tMax; },
+      [&](const NewtonResult& r, double, double) {
+        if (r.t > tMin && r.t < tMax) found = true;
+      });
   if (found) ++counters.hits;
   return found;
 }

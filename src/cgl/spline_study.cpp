@@ -182,7 +182,7 @@ void SplineStudy::distances(const std::string& path) const {
         SplineHit h;
         SplineCounters c;
         if (intersectSplineReference(s, ray, settings_.epsilon, ref, h)) ref = h.t;
-        if (intersectSplineAsBuilt(s, ray, settings_.epsilon, along, h, c)) along = h.t;
+        if (intersectSplineAsBuilt(s, BoxRay(ray), settings_.epsilon, along, h, c)) along = h.t;
       }
       const double len = length(ray.d);
       char buf[96];

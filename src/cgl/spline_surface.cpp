@@ -171,7 +171,7 @@ void countHoles(const SplineSurface& s, const Ray& ray, double tMin, HoleCount& 
   SplineHit ref, path;
   SplineCounters c;
   const bool r = intersectSplineReference(s, ray, tMin, kInf, ref);
-  const bool p = intersectSplineAsBuilt(s, ray, tMin, kInf, path, c);
+  const bool p = intersectSplineAsBuilt(s, BoxRay(ray), tMin, kInf, path, c);
   if (r) ++count.referenceHits;
   if (p) ++count.pathHits;
   if (r && !p) ++count.holes;

@@ -87,24 +87,17 @@ inline bool hitObject(const Scene& scene, const Object& o, const BoxRay& br, dou
     case ObjectKind::Fractal:
       return hitFractal(scene.fractals[static_cast<std::size_t>(o.fractal)], br, tMin, tMax, t,
                         facet, stats.fractal);
-    case ObjectKind::Spline:
-      if (scene.modernSplines) {  // --profile modern (CGL-D180)
-        const SplineSurface& s = scene.splines[static_cast<std::size_t>(o.spline)];
-        if (anyHit) return occludesSplineModern(s, br, tMin, tMax, stats.spline);
-        if (!intersectSplineModern(s, br, tMin, tMax, sh, stats.spline)) return false;
-        t = sh.t;
-        return true;
-      }
-      // A shadow ray needs only whether there is a hit (CGL-D170: the same
-      // answer as the nearest hit's search, found sooner).
-      if (anyHit)
-        return occludesSpline(scene.splines[static_cast<std::size_t>(o.spline)], br, tMin, tMax,
-                              stats.spline);
-      if (!intersectSpline(scene.splines[static_cast<std::size_t>(o.spline)], br, tMin, tMax, sh,
-                           stats.spline))
-        return false;
+    case ObjectKind::Spline: {
+      // The surface's own intersector: the document's walk, or the modern
+      // one (--profile modern, CGL-D180). A shadow ray needs only whether
+      // there is a hit (CGL-D170: the same answer as the nearest hit's
+      // search, found sooner).
+      const SplineSurface& s = scene.splines[static_cast<std::size_t>(o.spline)];
+      if (anyHit) return occludesSplineAsBuilt(s, br, tMin, tMax, stats.spline);
+      if (!intersectSplineAsBuilt(s, br, tMin, tMax, sh, stats.spline)) return false;
       t = sh.t;
       return true;
+    }
     case ObjectKind::Box:
       break;
   }
