@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -103,9 +104,16 @@ CameraPath::CameraPath(CameraPathSpec spec) : spec_(std::move(spec)) {
   const std::optional<double> lastFrame = spec_.keys.back().frame;
   if (spec_.frames)
     frames_ = *spec_.frames;
-  else if (!spec_.loop && lastFrame)
-    frames_ = static_cast<int>(std::floor(*lastFrame)) + 1;
-  else
+  else if (!spec_.loop && lastFrame) {
+    // The last key's frame, checked before it is made an int (the fuzzer's
+    // key at frame 1e79 was undefined behaviour here).
+    const double last = std::floor(*lastFrame) + 1;
+    if (!(last >= 1 && last <= std::numeric_limits<int>::max()))
+      throw std::invalid_argument(
+          "a camera path lasts 1 .. " + std::to_string(std::numeric_limits<int>::max()) +
+          " frames (its last key is at frame " + std::to_string(*lastFrame) + ")");
+    frames_ = static_cast<int>(last);
+  } else
     frames_ = segs == 0 ? 1 : segs * kFramesPerSegment + (spec_.loop ? 0 : 1);
   if (frames_ < 1)
     throw std::invalid_argument("a camera path lasts at least one frame (frames " +
