@@ -26,49 +26,9 @@ namespace {
 constexpr int U = 0;  // Define.h: #define U 0
 constexpr int V = 1;  // Define.h: #define V 1
 
-// One side face of the pyramid: its plane, its triangle in the (u, v) plane
-// obtained by dropping one coordinate, which coordinates become u and v, and
-// the (unnormalised, outward) normal handed to Swap.
-struct PyramidFace {
-  Plane4 plane;
-  std::array<UV, 4> poly;  // uVPoly[4][2]; only the first 3 are used
-  int uAxis;
-  int vAxis;
-  Vec3 normal;
-};
-
-// In the order the listing tests them: front, right, back, left
-// (IntersectPyramid 4932-5045, BoundPyramid 2864-2946).
-constexpr std::array<PyramidFace, 4> kPyramidFaces{{
-    // front (z = 0 side), drop Z
-    {{0.0, kPyramidPlaneA, -kPyramidPlaneB, 0.0},
-     {{{0.5, 1.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}}},
-     X,
-     Y,
-     {0.0, 0.5, -1.0}},
-    // right (x = 1 side), drop X
-    {{kPyramidPlaneB, kPyramidPlaneA, 0.0, -kPyramidPlaneB},
-     {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}},
-     Y,
-     Z,
-     {1.0, 0.5, 0.0}},
-    // back (z = 1 side), drop Z
-    {{0.0, kPyramidPlaneA, kPyramidPlaneB, -kPyramidPlaneB},
-     {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}},
-     X,
-     Y,
-     {0.0, 0.5, 1.0}},
-    // left (x = 0 side), drop X
-    {{kPyramidPlaneB, -kPyramidPlaneA, 0.0, 0.0},
-     {{{1.0, 0.5}, {0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0}}},
-     Y,
-     Z,
-     {-1.0, 0.5, 0.0}},
-}};
-
 // Does the ray meet this pyramid side face ahead? (`if(IntersectRayPlane(...))
 // { ...; if(IntersectPoly(3, uVPoint, uVPoly)) ... }`, E25: `&t`.)
-bool hitsPyramidFace(const Ray& ray, const PyramidFace& face, double& t) {
+bool hitsPyramidFace(const Ray& ray, const PyramidFace1991& face, double& t) {
   Vec3 pt{};
   if (!intersectRayPlane1991(ray, face.plane, pt, t)) return false;
   const UV uvPoint{pt[face.uAxis], pt[face.vAxis]};
@@ -309,7 +269,7 @@ bool intersectPyramid1991(const Ray& ray, PrimHit& hit) {
     if (hitsUnitSquare(ray, Y, false, t) && swap1991(t, {0.0, -1.0, 0.0}, hit)) return true;
   }
   // front, right, back, left (E10: the base's stray `}` does not end the function)
-  for (const PyramidFace& face : kPyramidFaces) {
+  for (const PyramidFace1991& face : kPyramidFaces1991) {
     if (hitsPyramidFace(ray, face, t) && swap1991(t, face.normal, hit)) return true;
   }
   return false;
@@ -383,7 +343,7 @@ bool boundPyramid1991(const Ray& ray) {
   }
   // E10: BoundPyramid's printed `}` after the base test (2856) is a page-break
   // artefact; the four side faces follow (E11: `double plane[4]`).
-  for (const PyramidFace& face : kPyramidFaces) {
+  for (const PyramidFace1991& face : kPyramidFaces1991) {
     if (hitsPyramidFace(ray, face, t)) return true;
   }
   return false;

@@ -81,6 +81,46 @@ bool intersectRayPlane1991(const Ray& ray, const Plane4& plane, Vec3& pt, double
 // A point of a 2-D (u, v) mapping, as the listing's `double[2]`.
 using UV = std::array<double, 2>;
 
+// One side face of the pyramid (used by the scalar and the packet tests): its plane, its triangle
+// in the (u, v) plane obtained by dropping one coordinate, which coordinates become u and v, and
+// the (unnormalised, outward) normal handed to Swap.
+struct PyramidFace1991 {
+  Plane4 plane;
+  std::array<UV, 4> poly;  // uVPoly[4][2]; only the first 3 are used
+  int uAxis;
+  int vAxis;
+  Vec3 normal;
+};
+
+// In the order the listing tests them: front, right, back, left
+// (IntersectPyramid 4932-5045, BoundPyramid 2864-2946).
+inline constexpr std::array<PyramidFace1991, 4> kPyramidFaces1991{{
+    // front (z = 0 side), drop Z
+    {{0.0, kPyramidPlaneA, -kPyramidPlaneB, 0.0},
+     {{{0.5, 1.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}}},
+     X,
+     Y,
+     {0.0, 0.5, -1.0}},
+    // right (x = 1 side), drop X
+    {{kPyramidPlaneB, kPyramidPlaneA, 0.0, -kPyramidPlaneB},
+     {{{1.0, 0.5}, {0.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}}},
+     Y,
+     Z,
+     {1.0, 0.5, 0.0}},
+    // back (z = 1 side), drop Z
+    {{0.0, kPyramidPlaneA, kPyramidPlaneB, -kPyramidPlaneB},
+     {{{0.5, 1.0}, {1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}},
+     X,
+     Y,
+     {0.0, 0.5, 1.0}},
+    // left (x = 0 side), drop X
+    {{kPyramidPlaneB, -kPyramidPlaneA, 0.0, 0.0},
+     {{{1.0, 0.5}, {0.0, 1.0}, {0.0, 0.0}, {0.0, 0.0}}},
+     Y,
+     Z,
+     {-1.0, 0.5, 0.0}},
+}};
+
 // IntersectPoly (5050-5114, E19): crossing-number test of `point` against the
 // first `numPoints` vertices of `poly` (points with v == 0 count as v >= 0).
 // `poly` is taken by value because the listing shifts it in place.
