@@ -4,8 +4,6 @@
 // the caller's limit, so a caller that keeps the nearest hit (and breaks ties
 // by its own order) gets exactly what a linear search over all boxes gives.
 #pragma once
-#include <array>
-#include <cstddef>
 #include <limits>
 #include <span>
 #include <vector>
@@ -25,17 +23,6 @@ class Bvh {
   // visit, so the caller can shrink it as hits are found.
   template <class Visit, class Limit>
   void traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const;
-
-  // The same for a packet of up to 32 coherent rays (rays[l] for the lanes
-  // set in `lanes`), the tree walked once for all of them: calls
-  // visit(index, mask) for every box some lane meets at entry <= limit(l),
-  // `mask` holding those lanes. Nearest first by the nearest lane's entry, so
-  // a lane may see its boxes in another order than traverse() would show
-  // them; what a caller that keeps each lane's nearest hit (ties broken by
-  // its own order) gets is the same.
-  template <class Visit, class Limit, std::size_t N>
-  void traversePacket(const std::array<BoxRay, N>& rays, unsigned lanes, Visit&& visit,
-                      Limit&& limit) const;
 
   const Aabb& box(int index) const { return boxes_[index]; }
   std::span<const Aabb> boxes() const { return boxes_; }
@@ -107,87 +94,6 @@ void Bvh::traverse(const BoxRay& ray, Visit&& visit, Limit&& limit) const {
       if (it.t <= limit()) {
         node = it.node;
         nodeT = it.t;
-        break;
-      }
-    }
-  }
-}
-
-template <class Visit, class Limit, std::size_t N>
-void Bvh::traversePacket(const std::array<BoxRay, N>& rays, unsigned lanes, Visit&& visit,
-                         Limit&& limit) const {
-  static_assert(N <= 32, "a lane mask is 32 bits");
-  if (nodes_.empty()) return;
-  constexpr double kMiss = std::numeric_limits<double>::infinity();
-  using Entries = std::array<double, N>;
-  struct Item {
-    int node;
-    unsigned mask;   // the lanes that met the node within their limits when it was pushed
-    double nearest;  // the smallest of their entries
-    Entries t;
-  };
-  // Each lane of `mask` that meets `box` (its entry into t), as a mask.
-  auto meet = [&](const Aabb& box, unsigned mask, Entries& t) {
-    unsigned met = 0;
-    for (std::size_t l = 0; l < N; ++l) {
-      if (!(mask >> l & 1u)) continue;
-      t[l] = box.entry(rays[l]);
-      if (t[l] != kMiss && t[l] <= limit(static_cast<int>(l))) met |= 1u << l;
-    }
-    return met;
-  };
-  // The lanes of `mask` whose entry `t` is still within their limit.
-  auto still = [&](const Entries& t, unsigned mask) {
-    unsigned met = 0;
-    for (std::size_t l = 0; l < N; ++l)
-      if ((mask >> l & 1u) && t[l] <= limit(static_cast<int>(l))) met |= 1u << l;
-    return met;
-  };
-  auto nearestOf = [&](const Entries& t, unsigned mask) {
-    double m = kMiss;
-    for (std::size_t l = 0; l < N; ++l)
-      if (mask >> l & 1u) m = std::min(m, t[l]);
-    return m;
-  };
-  Item stack[64];
-  int top = 0;
-  Item hand{0, 0, 0.0, {}};
-  hand.mask = meet(nodes_[0].box, lanes, hand.t);
-  if (!hand.mask) return;
-  for (;;) {
-    const Node& n = nodes_[hand.node];
-    bool descend = false;
-    if (n.oneBox) {
-      visit(order_[n.first], hand.mask);
-    } else if (n.left < 0) {
-      for (int k = n.first; k < n.first + n.count; ++k) {
-        const int index = order_[k];
-        Entries t{};
-        const unsigned met = meet(boxes_[index], hand.mask, t);
-        if (met) visit(index, met);
-      }
-    } else {
-      Item l{n.left, 0, 0.0, {}}, r{n.right, 0, 0.0, {}};
-      l.mask = meet(nodes_[n.left].box, hand.mask, l.t);
-      r.mask = meet(nodes_[n.right].box, hand.mask, r.t);
-      l.nearest = nearestOf(l.t, l.mask);
-      r.nearest = nearestOf(r.t, r.mask);
-      const bool leftFirst = l.nearest <= r.nearest;
-      const Item& nearItem = leftFirst ? l : r;
-      const Item& farItem = leftFirst ? r : l;
-      if (farItem.mask) stack[top++] = farItem;
-      if (nearItem.mask) {
-        hand = nearItem;
-        descend = true;
-      }
-    }
-    if (descend) continue;
-    for (;;) {  // the nearest waiting node that some lane can still use
-      if (top == 0) return;
-      Item it = stack[--top];
-      it.mask = still(it.t, it.mask);
-      if (it.mask) {
-        hand = it;
         break;
       }
     }

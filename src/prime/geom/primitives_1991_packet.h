@@ -12,6 +12,17 @@
 // The arithmetic is written with the compiler's vector extension (GCC and
 // Clang): SSE2 on x86-64, which every such machine has, so there is no CPU
 // dispatch and no second path to keep equal; WebAssembly gets scalar code.
+//
+// Not used by the renderers, because it measured slower: four rays through
+// this path cost more than four scalar calls for every class but the sphere
+// (prime_micro's intersect4 against intersect, docs/prime/benchmarks.md),
+// and wired into the 1991 profile's primary rays (one BVH walk per packet,
+// each leaf tested for the four lanes at once, the CSG walks and shading per
+// lane) it raised the walk's CPU per frame on plate 2 by 16 % (paired runs).
+// The scalar functions end a face search at the second face found and test
+// only what their branches reach; the packet computes every face for every
+// lane. It stays as the tested ground for a packet renderer: what a faster
+// one must equal, bit for bit.
 #pragma once
 #include <array>
 

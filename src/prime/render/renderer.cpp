@@ -1,7 +1,6 @@
 #include "src/prime/render/renderer.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -168,32 +167,15 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
         fillBackground(i, j, run.c0, local);
         // Single mode's samplePixel is castPrimary; called directly (one
         // pixel function shared with the loop below measured 2-4 % slower).
-        auto store = [&](int column, const Rgb& color) {
-          if (settings.keepColours) result.rgb.at(i, column) = color;
-          result.graph.pixels[static_cast<std::size_t>(i) * columns + column] =
+        for (j = run.c0; j <= run.c1; ++j) {
+          checkAbort(callbacks.abort);  // R9
+          const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),
+                             static_cast<std::uint32_t>(j)};
+          const PixelTracer<Tracer> pixel{tracer, false, key};
+          const Rgb color = pixel.castPrimary(camera, i, j, stats);
+          if (settings.keepColours) result.rgb.at(i, j) = color;
+          result.graph.pixels[static_cast<std::size_t>(i) * columns + j] =
               static_cast<std::int16_t>(local.indexOf.get(color, stats));
-        };
-        if constexpr (std::is_same_v<Tracer, Tracer1991>) {
-          // The 1991 profile traces the run's primary rays four at a time
-          // (castPrimaries: the same colours as castRay's).
-          for (j = run.c0; j <= run.c1;) {
-            checkAbort(callbacks.abort);  // R9
-            const int n = std::min(kPacketLanes, run.c1 + 1 - j);
-            std::array<Ray, kPacketLanes> rays;
-            std::array<Rgb, kPacketLanes> colors;
-            for (int l = 0; l < n; ++l) rays[l] = camera.primaryRay(i, j + l);
-            tracer.castPrimaries(rays.data(), n, stats, colors.data());
-            for (int l = 0; l < n; ++l) store(j + l, colors[l]);
-            j += n;
-          }
-        } else {
-          for (j = run.c0; j <= run.c1; ++j) {
-            checkAbort(callbacks.abort);  // R9
-            const PixelKey key{settings.sampling.seed, static_cast<std::uint32_t>(i),
-                               static_cast<std::uint32_t>(j)};
-            const PixelTracer<Tracer> pixel{tracer, false, key};
-            store(j, pixel.castPrimary(camera, i, j, stats));
-          }
         }
       }
       fillBackground(i, j, columns, local);

@@ -1,13 +1,11 @@
 #include "src/prime/render/tracer_1991.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "src/prime/geom/primitives_1991.h"
-#include "src/prime/geom/primitives_1991_packet.h"
 #include "src/prime/geom/uv_mapping_1991.h"
 #include "src/prime/math/listing_math.h"
 #include "src/prime/math/listing_vec.h"
@@ -59,6 +57,7 @@ bool Tracer1991::hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& s
 TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, TraceStats& stats,
                              Probe* probe, int depth) const {
   const Ray& ray = boxRay.ray;
+  ++stats.objectTests;
   const bool cull = options_.skipUnneededWork && !probe;
   auto leaf = [&](int primNum) -> std::optional<PrimHit> {
     // A ray that misses the primitive's (padded) box ahead cannot hit it.
@@ -73,14 +72,6 @@ TList Tracer1991::objectList(const SceneObject& obj, const BoxRay& boxRay, Trace
     if (probe) probe->primitive(depth, obj.number, primNum, p.type, in);
     return in;
   };
-  TList list = runObject(obj, ray, leaf, stats);
-  if (probe) probe->csgList(depth, obj.number, list);
-  return list;
-}
-
-TList Tracer1991::runObject(const SceneObject& obj, const Ray& ray, LeafFn leaf,
-                            TraceStats& stats) const {
-  ++stats.objectTests;
   TList list;
   const auto& program = programs_[static_cast<std::size_t>(&obj - scene_.objects.data())];
   if (program && program->isSingleLeaf()) {
@@ -99,6 +90,7 @@ TList Tracer1991::runObject(const SceneObject& obj, const Ray& ray, LeafFn leaf,
                                std::to_string(obj.number) + "), ray from " + fmt(ray.o) + " dir " +
                                fmt(ray.d) + ": " + e.what());
     }
+  if (probe) probe->csgList(depth, obj.number, list);
   return list;
 }
 
@@ -204,20 +196,6 @@ void Tracer1991::childWeights(const SceneObject& obj, const Vec3& n, const Vec3&
   wT *= std::abs(1.0 - obj.hue.kDT) * fT * std::abs(std::pow(obj.hue.tT, sT));
 }
 
-// The listing's `t != 0.0 && t < nearest`, ties going to the earlier
-// object (the BVH may show objects in another order than obj/List).
-void Tracer1991::keepNearer(int k, const TList& list, Nearest& best) {
-  if (list.empty()) return;
-  const double t = list.front().t;  // K30: the FIRST node, not the smallest
-  if (t != 0.0 && (t < best.t || (t == best.t && k < best.obj))) {
-    best.t = t;
-    best.obj = k;
-    best.prim = list.front().prim;
-    best.surfType = list.front().surfType;
-    unitVector(list.front().norm, best.norm);
-  }
-}
-
 Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, RayKind kind,
                         double weight) const {
   stats.countRay(kind);
@@ -225,120 +203,33 @@ Rgb Tracer1991::castRay(Ray ray, int depth, TraceStats& stats, Probe* probe, Ray
   if (probe) probe->ray(depth, kind, ray);
 
   const BoxRay boxRay(ray);  // prepared once for all the box tests
+  double nearest = kInfinity;
   Nearest best;
-  // One object of obj/List: its bound, then its CSG list.
+  // One object of obj/List: its bound, its CSG list, and the listing's
+  // `t != 0.0 && t < nearest` with ties going to the earlier object.
   auto consider = [&](int k) {
     const SceneObject& obj = scene_.objects[k];
     if (!hitsBound(obj, ray, stats, probe, depth)) return;
-    keepNearer(k, objectList(obj, boxRay, stats, probe, depth), best);
+    const TList list = objectList(obj, boxRay, stats, probe, depth);
+    if (list.empty()) return;
+    const double t = list.front().t;  // K30: the FIRST node, not the smallest
+    if (t != 0.0 && (t < nearest || (t == nearest && k < best.obj))) {
+      nearest = t;
+      best.t = t;
+      best.obj = k;
+      best.prim = list.front().prim;
+      best.surfType = list.front().surfType;
+      unitVector(list.front().norm, best.norm);
+    }
   };
   if (options_.skipUnneededWork && !probe) {
     // Nearest boxes first; an object whose box starts beyond the nearest hit
     // cannot win (its list's t values all lie in its box).
     bvh_.traverse(
-        boxRay, [&](int k, double) { consider(k); }, [&] { return best.t; });
+        boxRay, [&](int k, double) { consider(k); }, [&] { return nearest; });
   } else {
     for (int k = 0; k < static_cast<int>(scene_.objects.size()); ++k) consider(k);  // GetObj order
   }
-  return shade(ray, best, depth, stats, probe, weight);
-}
-
-void Tracer1991::castPrimaries(const Ray* rays, int count, TraceStats& stats, Rgb* out) const {
-  if (!options_.skipUnneededWork || count < 2) {
-    for (int l = 0; l < count; ++l) out[l] = castRay(rays[l], 0, stats);
-    return;
-  }
-  std::array<Ray, kPacketLanes> unit;
-  for (int l = 0; l < kPacketLanes; ++l) {
-    unit[l] = rays[l < count ? l : 0];  // spare lanes repeat the first ray, unused
-    unitVector(unit[l].d, unit[l].d);   // E41, as castRay
-  }
-  const std::array<BoxRay, kPacketLanes> boxRays{BoxRay(unit[0]), BoxRay(unit[1]), BoxRay(unit[2]),
-                                                 BoxRay(unit[3])};
-  RayPacket packet;
-  for (int l = 0; l < kPacketLanes; ++l) packet.set(l, unit[l]);
-  std::array<Nearest, kPacketLanes> best;
-  const unsigned lanes = (1u << count) - 1;
-  for (int l = 0; l < count; ++l) stats.countRay(RayKind::Primary);
-  bvh_.traversePacket(
-      boxRays, lanes,
-      [&](int k, unsigned mask) { considerPacket(k, mask, unit, boxRays, packet, best, stats); },
-      [&](int l) { return best[l].t; });
-  for (int l = 0; l < count; ++l) out[l] = shade(unit[l], best[l], 0, stats, nullptr, 1.0);
-}
-
-namespace {
-// What one leaf gave every lane of a packet, kept while the lanes' CSG walks
-// ask for it in turn. Not initialised: the tracer fills an entry before it
-// reads it.
-struct LeafLanes {
-  int prim;
-  unsigned tested;  // lanes whose primitive test was made (their ray meets its box)
-  unsigned hit;     // lanes whose test hit
-  union Hits {
-    Hits() {}
-    std::array<PrimHit, kPacketLanes> hit;
-  } hits;
-};
-constexpr int kLeafLanes = 16;  // leaves kept per object; more are tested lane by lane
-}  // namespace
-
-void Tracer1991::considerPacket(int k, unsigned mask, const std::array<Ray, kPacketLanes>& rays,
-                                const std::array<BoxRay, kPacketLanes>& boxRays,
-                                const RayPacket& packet, std::array<Nearest, kPacketLanes>& best,
-                                TraceStats& stats) const {
-  const SceneObject& obj = scene_.objects[k];
-  if (obj.boundPrim != -1) {  // hitsBound, four lanes at once
-    stats.boundTests += static_cast<std::uint64_t>(std::popcount(mask));
-    const ScenePrim& b = scene_.prims[obj.boundPrim];
-    mask &= boundHit1991x4(b.type, transformRayPacket(packet, b.inverse));
-    if (!mask) return;
-  }
-  LeafLanes cache[kLeafLanes];
-  int cached = 0;
-  constexpr double kMiss = std::numeric_limits<double>::infinity();
-  for (int l = 0; l < kPacketLanes; ++l) {
-    if (!(mask >> l & 1u)) continue;
-    // objectList's leaf for lane l: the packet's result, made when the first
-    // lane asks for the primitive.
-    auto leaf = [&](int primNum) -> std::optional<PrimHit> {
-      const Aabb& box = bvh_.primBox(primNum);
-      const ScenePrim& p = scene_.prims[primNum];
-      LeafLanes* entry = nullptr;
-      for (int c = 0; c < cached; ++c)
-        if (cache[c].prim == primNum) entry = &cache[c];
-      if (!entry && cached < kLeafLanes) {
-        entry = &cache[cached++];
-        entry->prim = primNum;
-        entry->tested = 0;
-        for (int m = 0; m < kPacketLanes; ++m)
-          if ((mask >> m & 1u) && box.entry(boxRays[m]) != kMiss) entry->tested |= 1u << m;
-        entry->hit = entry->tested
-                         ? intersectPrimitive1991x4(p.type, transformRayPacket(packet, p.inverse),
-                                                    entry->hits.hit) &
-                               entry->tested
-                         : 0;
-      }
-      if (entry) {
-        if (!(entry->tested >> l & 1u)) return std::nullopt;
-        ++stats.primitiveTests;
-        if (entry->hit >> l & 1u) return entry->hits.hit[l];
-        return std::nullopt;
-      }
-      // More leaves than the cache holds: objectList's leaf.
-      if (box.entry(boxRays[l]) == kMiss) return std::nullopt;
-      ++stats.primitiveTests;
-      PrimHit hit;
-      if (intersectPrimitive1991(p.type, transformRay(rays[l], p.inverse), hit)) return hit;
-      return std::nullopt;
-    };
-    keepNearer(k, runObject(obj, rays[l], leaf, stats), best[l]);
-  }
-}
-
-Rgb Tracer1991::shade(const Ray& ray, const Nearest& best, int depth, TraceStats& stats,
-                      Probe* probe, double weight) const {
-  const double nearest = best.t;
   if (nearest == kInfinity) {
     if (probe) probe->miss(depth, scene_.background);
     return scene_.background;

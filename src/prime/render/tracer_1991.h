@@ -11,12 +11,10 @@
 //     hung the original.
 // The tracer holds no mutable state: one instance serves all threads.
 #pragma once
-#include <array>
 #include <vector>
 
 #include "src/prime/geom/csg_1991.h"
 #include "src/prime/geom/csg_program_1991.h"
-#include "src/prime/geom/primitives_1991_packet.h"
 #include "src/prime/render/hall_1991.h"
 #include "src/prime/render/probe.h"
 #include "src/prime/render/trace_options.h"
@@ -33,15 +31,6 @@ class Tracer1991 {
   // CastRay(ray, depth, color). `ray.d` need not be unit (CastRay normalises it).
   Rgb castRay(Ray ray, int depth, TraceStats& stats, Probe* probe = nullptr,
               RayKind kind = RayKind::Primary, double weight = 1.0) const;
-  // castRay(rays[l], 0, stats) for up to kPacketLanes primary rays at once,
-  // into out[0 .. count-1]: the nearest-hit search runs as one packet (one
-  // walk of the object BVH, the bounds and the leaves tested four lanes at a
-  // time, src/prime/geom/primitives_1991_packet.h), then each lane's hit is
-  // shaded as castRay shades it. Each colour is castRay's, bit for bit; the
-  // counts can differ a little (a lane may test an object its own nearest-
-  // first walk would have pruned). Without skipsUnneededWork (the listing's
-  // linear search of obj/List) it is castRay ray by ray.
-  void castPrimaries(const Ray* rays, int count, TraceStats& stats, Rgb* out) const;
 
   const Scene& scene() const { return scene_; }
   // TraceOptions::skipUnneededWork: the boxes, the mask and the skips are used.
@@ -64,20 +53,10 @@ class Tracer1991 {
 
  private:
   struct Nearest {
-    double t = 1E100;  // the Rays module's Infinity: nothing hit yet
+    double t = 0;
     int obj = -1, prim = -1, surfType = 0;
     Vec3 norm{};
   };
-  static void keepNearer(int k, const TList& list, Nearest& best);
-  // The colour for the hit `best` (or the background) of `ray` (unit).
-  Rgb shade(const Ray& ray, const Nearest& best, int depth, TraceStats& stats, Probe* probe,
-            double weight) const;
-  // castPrimaries' consider: object k for the packet's lanes in `mask`.
-  void considerPacket(int k, unsigned mask, const std::array<Ray, kPacketLanes>& rays,
-                      const std::array<BoxRay, kPacketLanes>& boxRays, const RayPacket& packet,
-                      std::array<Nearest, kPacketLanes>& best, TraceStats& stats) const;
-  // The object's list from a leaf function: its program, or csg1991's walk.
-  TList runObject(const SceneObject& obj, const Ray& ray, LeafFn leaf, TraceStats& stats) const;
   bool hitsBound(const SceneObject& obj, const Ray& ray, TraceStats& stats, Probe* probe,
                  int depth) const;
   void childWeights(const SceneObject& obj, const Vec3& n, const Vec3& reflectedDir,

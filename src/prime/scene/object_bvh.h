@@ -35,13 +35,6 @@ class ObjectBvh {
     bvh_.traverse(ray, visit, limit);
   }
 
-  // Bvh::traversePacket: the objects for a packet of rays, visit(object, lanes).
-  template <class Visit, class Limit, std::size_t N>
-  void traversePacket(const std::array<BoxRay, N>& rays, unsigned lanes, Visit&& visit,
-                      Limit&& limit) const {
-    bvh_.traversePacket(rays, lanes, visit, limit);
-  }
-
   const Aabb& objectBox(int object) const { return bvh_.box(object); }
   std::span<const Aabb> objectBoxes() const { return bvh_.boxes(); }
   const Aabb& primBox(int prim) const { return primBoxes_[prim]; }
