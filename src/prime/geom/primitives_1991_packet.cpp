@@ -11,7 +11,10 @@
 
 // A 32-byte vector passed by value changes the ABI between -mavx and the
 // baseline; these helpers are internal, so GCC's note about it says nothing.
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__clang__)
+#pragma clang diagnostic ignored "-Wunknown-warning-option"
+#pragma clang diagnostic ignored "-Wpsabi"
+#elif defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
