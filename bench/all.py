@@ -22,6 +22,7 @@ Writes docs/benchmarks.md, docs/benchmarks.csv and docs/images/benchmarks.png (t
 Debian's python3-matplotlib, installed when missing). --out DIR writes them under DIR instead.
 """
 import argparse
+import importlib
 import csv
 import datetime
 import os
@@ -186,6 +187,7 @@ def plot(rows, png):
         subprocess.run(["apt-get", "install", "-y", "-qq", "python3-matplotlib"],
                        env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"),
                        stdout=subprocess.DEVNULL, check=False)
+        importlib.invalidate_caches()  # else the failed import above is remembered
         try:
             import matplotlib
         except ImportError:
