@@ -81,8 +81,9 @@ bool intersectRayPlane1991(const Ray& ray, const Plane4& plane, Vec3& pt, double
 // A point of a 2-D (u, v) mapping, as the listing's `double[2]`.
 using UV = std::array<double, 2>;
 
-// One side face of the pyramid (used by the scalar and the packet tests): its plane, its triangle
-// in the (u, v) plane obtained by dropping one coordinate, which coordinates become u and v, and
+// One side face of the pyramid, shared by the scalar functions and the packet
+// path (primitives_1991_packet.h): its plane, its triangle in the (u, v) plane
+// obtained by dropping one coordinate, which coordinates become u and v, and
 // the (unnormalised, outward) normal handed to Swap.
 struct PyramidFace1991 {
   Plane4 plane;

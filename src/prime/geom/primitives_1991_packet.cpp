@@ -10,7 +10,8 @@
 #include "src/prime/math/listing_math.h"
 
 // A 32-byte vector passed by value changes the ABI between -mavx and the
-// baseline; these helpers are internal, so GCC's note about it says nothing.
+// baseline; these helpers are internal, so the compilers' note about it
+// (GCC's and Clang's -Wpsabi) says nothing here.
 #if defined(__clang__)
 #pragma clang diagnostic ignored "-Wunknown-warning-option"
 #pragma clang diagnostic ignored "-Wpsabi"
@@ -132,6 +133,10 @@ Roots sphereRoots(const Packet& r) {
   const Lanes c = r.o[X] * r.o[X] + r.o[Y] * r.o[Y] + r.o[Z] * r.o[Z] - splat(1.0);
   return roots(a, b, c, (1u << kPacketLanes) - 1);  // the sphere divides unguarded
 }
+// The sphere's hit and its bound alike: both roots ahead (K7, K8).
+unsigned bothAhead(const Roots& q) {
+  return q.ok & bits(q.t1 > splat(0.0)) & bits(q.t2 > splat(0.0));
+}
 
 // A body root t > 0 whose z lies in [0, 1] (the cylinder's `z <= 1.0 &&
 // z >= -0.0`, the cone's inUnitRange: the same test).
@@ -210,17 +215,9 @@ struct Candidates {
   }
 };
 
-// A body root as a face, with the normal the scalar function hands to Swap.
-Face rootFace(const Lanes& t, unsigned ok) {
-  Face f;
-  f.t = t;
-  f.ok = ok;
-  return f;
-}
-
 unsigned sphere(const Packet& r, std::array<PrimHit, kPacketLanes>& hits) {
   const Roots q = sphereRoots(r);
-  const unsigned ok = q.ok & bits(q.t1 > splat(0.0)) & bits(q.t2 > splat(0.0));
+  const unsigned ok = bothAhead(q);
   for (int l = 0; l < kPacketLanes; ++l) {
     if (!(ok & (1u << l))) continue;
     PrimHit& hit = hits[l];
@@ -265,7 +262,7 @@ unsigned cylinder(const Packet& r, std::array<PrimHit, kPacketLanes>& hits) {
   Lanes n[3];
   for (const Lanes* t : {&q.t1, &q.t2}) {
     bodyNormal(r, *t, false, n);
-    c.add(rootFace(*t, rootInSlab(r, *t, q.ok)), n);
+    c.add(Face{*t, rootInSlab(r, *t, q.ok)}, n);
   }
   return c.sequence(hits);
 }
@@ -277,7 +274,7 @@ unsigned cone(const Packet& r, std::array<PrimHit, kPacketLanes>& hits) {
   Lanes n[3];
   for (const Lanes* t : {&q.t1, &q.t2}) {
     bodyNormal(r, *t, true, n);
-    c.add(rootFace(*t, rootInSlab(r, *t, q.ok)), n);
+    c.add(Face{*t, rootInSlab(r, *t, q.ok)}, n);
   }
   return c.sequence(hits);
 }
@@ -327,10 +324,8 @@ unsigned intersectPrimitive1991x4(PrimType type, const RayPacket& local,
 unsigned boundHit1991x4(PrimType type, const RayPacket& local) {
   const Packet r(local);
   switch (type) {
-    case PrimType::Sphere: {  // boundSphere1991: both roots ahead (K8)
-      const Roots q = sphereRoots(r);
-      return q.ok & bits(q.t1 > splat(0.0)) & bits(q.t2 > splat(0.0));
-    }
+    case PrimType::Sphere:  // boundSphere1991
+      return bothAhead(sphereRoots(r));
     case PrimType::Cube: {  // boundCube1991: any face ahead
       unsigned any = 0;
       for (int axis = X; axis <= Z; axis++)
