@@ -140,7 +140,7 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
       window_.reset();
     }
   }
-  if (!window_ && !options_.quiet) std::cerr << "prime: running headless (" << *headless << ")\n";
+  if (!window_ && !options_.quiet) std::cerr << "prime: running headless (" + *headless + ")\n";
   if (window_)
     window_->setInputHandler([this](const display::module::Event& e) {
       if (inspector_ && inspector_->handle(e)) return true;
@@ -245,8 +245,10 @@ void LiveRender::run(const std::function<void()>& render) {
     if (paced()) window_->setRowLimit(INT_MAX);  // an abort shows what was drawn
     if (tty_) std::fprintf(stderr, "\n");
     if (paced() && !abort_ && !options_.quiet)
-      std::cerr << "prime: the replay is done: " << rows_.load() << " rows in "
-                << durationText(clock) << (options_.pace1991 ? " of 1991 time" : "") << "\n";
+      // One write: std::cerr is unbuffered, and a reader of the pipe must
+      // never see half of this line.
+      std::cerr << "prime: the replay is done: " + std::to_string(rows_.load()) + " rows in " +
+                       durationText(clock) + (options_.pace1991 ? " of 1991 time" : "") + "\n";
     if (error) std::rethrow_exception(error);
   } else {
     SignalsAbort signals(abort_);
@@ -280,10 +282,12 @@ void LiveRender::waitForEsc(const std::string& status) {
   window_->setStatus(status);
   if (options_.probe) inspector_ = std::make_unique<PixelInspector>(*window_, options_.probe);
   if (!options_.quiet)
-    std::cerr << "prime: the window stays open until Esc or close (WaitForEsc); "
-                 "--no-wait or --no-window to skip this"
-              << (options_.probe ? "; click a pixel to draw its rays (right click: away)" : "")
-              << "\n";
+    std::cerr << std::string(
+                     "prime: the window stays open until Esc or close (WaitForEsc); "
+                     "--no-wait or --no-window to skip this") +
+                     (options_.probe ? "; click a pixel to draw its rays (right click: away)"
+                                     : "") +
+                     "\n";
   while (!window_->poll(100)) {
   }
 }
