@@ -88,6 +88,7 @@ struct SurfaceRecord {
   // reader) and textureLast is true.
   std::string texture;
   bool textureLast = false;
+  io::InputLocation textureWhere;  // where the pathname is written (for `last`: the earlier one)
   double umod = 1.0, vmod = 1.0;
   std::vector<Spectrum> fresnel;  // Cook: kFresnelAngles vectors, 0 degrees first
   io::InputLocation where;        // the header line

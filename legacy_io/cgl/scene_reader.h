@@ -273,6 +273,7 @@ class Reader {
   std::deque<std::size_t> orphans_;  // scene nodes: parameter lines printed before their header
   std::optional<std::size_t> sightTowardsLine_;
   std::string lastTexture_;
+  io::InputLocation lastTextureWhere_;
 };
 
 }  // namespace prime::cgl::detail

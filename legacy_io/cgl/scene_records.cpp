@@ -445,12 +445,15 @@ void Reader::surface(int n) {
                "'last'");
       s.texture = lastTexture_;
       s.textureLast = true;
+      s.textureWhere = lastTextureWhere_;
     } else {
       double v;
       if (parseReal(path.text, v) == NumberStatus::Ok)
         t.fail(path, "pathname|last", "a texture pathname or 'last'", shown(path.text));
+      s.textureWhere = t.at(path);
       s.texture = path.text;
       lastTexture_ = s.texture;
+      lastTextureWhere_ = t.at(path);
     }
     const double lo = std::numeric_limits<double>::min();
     s.umod = t.realIn("umod", lo, big, "a real number above 0.0 (the repeat count in u)");

@@ -6,6 +6,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <map>
+#include <mutex>
 
 #include "legacy_io/common/error.h"
 #include "legacy_io/common/run_inputs.h"
@@ -99,10 +101,45 @@ std::vector<std::uint8_t> readInputFile(const std::string& path, const InputFile
   return readWhole<std::vector<std::uint8_t>>(path, options);
 }
 
+namespace {
+
+// The texts of this process a ^Z ended before their last byte: where the ^Z
+// is and how many bytes follow it that are not ^Z padding (dosEofNote).
+struct CutText {
+  std::size_t at = 0, after = 0;
+};
+std::mutex cutMutex;
+std::map<std::string, CutText>& cutTexts() {
+  static std::map<std::string, CutText> texts;
+  return texts;
+}
+
+}  // namespace
+
 std::string readInputText(const std::string& path, const InputFileOptions& options) {
   std::string text = readWhole<std::string>(path, options);
-  endAtDosEof(text);
+  const std::size_t end = text.find(kDosEof);
+  if (end != std::string::npos) {
+    std::size_t after = 0;
+    for (std::size_t i = end + 1; i < text.size(); ++i) after += text[i] != kDosEof;
+    if (after > 0) {
+      const std::lock_guard<std::mutex> lock(cutMutex);
+      cutTexts()[options.display.empty() ? path : options.display] = {end, after};
+    }
+    text.resize(end);
+  }
   return text;
+}
+
+std::string dosEofNote(const InputError& e) {
+  if (e.found().find("end of file") == std::string::npos) return "";
+  const std::lock_guard<std::mutex> lock(cutMutex);
+  const auto it = cutTexts().find(e.where().file);
+  if (it == cutTexts().end()) return "";
+  const CutText& c = it->second;
+  return "the text ends at the ^Z (0x1A) at byte " + std::to_string(c.at) +
+         ", as DOS's text mode read it; " + std::to_string(c.after) + " byte" +
+         (c.after == 1 ? "" : "s") + " after it are not read (M41)";
 }
 
 void endAtDosEof(std::string& text) {

@@ -18,6 +18,8 @@
 
 namespace prime::io {
 
+class InputError;
+
 // The cap of readFileBytes and TextReader::open when a reader names none.
 inline constexpr std::uint64_t kDefaultInputCap = 256ull << 20;
 
@@ -40,6 +42,11 @@ std::vector<std::uint8_t> readInputFile(const std::string& path,
 // is read. (A leading UTF-8 byte order mark stays, for the reader to skip
 // with kUtf8Bom: byte offsets in messages count from the file's first byte.)
 std::string readInputText(const std::string& path, const InputFileOptions& options = {});
+
+// When `e` found the end of a text that a ^Z ended before bytes other than
+// ^Z padding (a binary COPY A+B put one in the middle): a sentence that
+// says so, for the message; else "".
+std::string dosEofNote(const InputError& e);
 
 // The same rule for text that did not come from a file (standard input, a
 // fuzzer): `text` cut at its first ^Z.

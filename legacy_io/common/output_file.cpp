@@ -181,6 +181,25 @@ void checkOutputPath(const std::string& path) {
   refuseIfInput(path);
 }
 
+void checkOutputs(const std::vector<NamedOutput>& outputs) {
+  std::vector<std::pair<const NamedOutput*, fs::path>> seen;
+  for (const NamedOutput& out : outputs) {
+    if (out.path.empty()) continue;
+    checkOutputPath(out.path);
+    std::error_code ec;
+    fs::path where = fs::weakly_canonical(out.path, ec);
+    if (ec) where = fs::absolute(out.path);
+    for (const auto& [other, at] : seen) {
+      std::error_code same;
+      if (at == where || fs::equivalent(other->path, out.path, same))
+        throw InputError(
+            {out.path, std::nullopt, std::nullopt},
+            other->flag + " and " + out.flag + " name the same file: each output needs its own");
+    }
+    seen.emplace_back(&out, where);
+  }
+}
+
 OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   checkOutputPath(path_);
   removeStaleTemporaries(path_);  // of an earlier run that was killed

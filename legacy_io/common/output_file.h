@@ -93,6 +93,17 @@ class OutputSet {
 // run; and its directory exists. For checks before a long render.
 void checkOutputPath(const std::string& path);
 
+// One output of a run: the flag that names it ("--png", or what the file is)
+// and its path.
+struct NamedOutput {
+  std::string flag;
+  std::string path;
+};
+// checkOutputPath for each non-empty path, and throws InputError when two
+// name one file (the same path, another spelling of it, a link to it): the
+// second would replace the first.
+void checkOutputs(const std::vector<NamedOutput>& outputs);
+
 // The infix of every temporary: TARGET + kTempInfix + "<pid>.XXXXXX".
 inline constexpr std::string_view kTempInfix = ".prime-tmp.";
 // Removes the temporaries TARGET.prime-tmp.<pid>.* of `target` whose process

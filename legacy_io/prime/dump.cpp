@@ -22,7 +22,8 @@ std::optional<DatabaseKind> kindFromFileName(const std::string& path) {
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (name == "primfile") return DatabaseKind::PrimFile;
   if (name == "list") return DatabaseKind::ObjList;
-  if (name == "graph_scr") return DatabaseKind::GraphFile;
+  // DOS keeps eight characters of a name without an extension: GRAPH_SC.
+  if (name == "graph_scr" || name == "graph_sc") return DatabaseKind::GraphFile;
   if (std::regex_match(name, std::regex("o[0-9]+"))) return DatabaseKind::ObjFile;
   if (std::regex_match(name, std::regex("map[0-9]+_[rgb]\\.map"))) return DatabaseKind::MapFile;
   return std::nullopt;

@@ -344,7 +344,7 @@ struct ScreenWindow::Impl {
         return;
       case Key::Screenshot:
         try {
-          std::cerr << "prime: screenshot " << saveScreenshot() << "\n";
+          std::cerr << "prime: screenshot " + saveScreenshot() + "\n";
         } catch (const std::exception& ex) {
           std::cerr << "prime: screenshot failed: " << ex.what() << "\n";
         }
@@ -429,9 +429,7 @@ struct ScreenWindow::Impl {
     return quit;
   }
 
-  // The S key: the frame at its own size (an 8514/A screen as its 256
-  // indices and palette, an indexed PNG; else its colours), not the window's
-  // scaled pixels; prime-screenshot-N.png, the first N not taken.
+  // A drawing shown over the picture, the picture's size, until cleared.
   void setOverlay(const Image8& drawing) {
     if (drawing.width != screen.width() || drawing.height != screen.height())
       throw WindowError("an overlay of " + std::to_string(drawing.width) + " x " +
@@ -444,6 +442,9 @@ struct ScreenWindow::Impl {
     unshown.mark({0, 0, screen.width(), screen.height()});
   }
 
+  // The S key: the frame at its own size (an 8514/A screen as its 256
+  // indices and palette, an indexed PNG; else its colours), not the window's
+  // scaled pixels; prime-screenshot-N.png, the first N not taken.
   std::string saveScreenshot() {
     fs::path path;
     for (int n = 1;; ++n) {
@@ -453,19 +454,22 @@ struct ScreenWindow::Impl {
     PngMeta meta = config.screenshot;
     meta.aspectX = meta.aspectY = 1;
     if (const std::string d = screen.describe(); !d.empty()) meta.text.push_back({"Display", d});
+    // A drawing over the picture (a pixel's rays, the palette chart) is
+    // saved as shown, in its colours; else the screen as its indices.
     IndexedImage8 indexed;
-    if (screen.indexed(indexed)) {
+    if (overlay.empty() && screen.indexed(indexed)) {
       writeIndexedPng(path.string(), indexed, meta);
       return path.string();
     }
+    const std::vector<std::uint32_t>& shown = overlay.empty() ? latest : overlay;
     Image8 img;
     img.width = screen.width();
     img.height = screen.height();
-    img.rgb.resize(latest.size() * 3);
-    for (std::size_t i = 0; i < latest.size(); ++i) {
-      img.rgb[3 * i] = static_cast<std::uint8_t>(latest[i] >> 16);
-      img.rgb[3 * i + 1] = static_cast<std::uint8_t>(latest[i] >> 8);
-      img.rgb[3 * i + 2] = static_cast<std::uint8_t>(latest[i]);
+    img.rgb.resize(shown.size() * 3);
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+      img.rgb[3 * i] = static_cast<std::uint8_t>(shown[i] >> 16);
+      img.rgb[3 * i + 1] = static_cast<std::uint8_t>(shown[i] >> 8);
+      img.rgb[3 * i + 2] = static_cast<std::uint8_t>(shown[i]);
     }
     writePng(path.string(), img, meta);
     return path.string();

@@ -1,6 +1,7 @@
 #include "src/cgl/scene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -523,6 +524,13 @@ void flatten(std::vector<Item>& items, std::vector<Object>& out) {
   }
 }
 
+bool sameIgnoringCase(const std::string& a, const std::string& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
 std::string baseName(const std::string& written) {
   return std::filesystem::path(written).filename().string();
 }
@@ -604,7 +612,7 @@ int loadTexture(const SurfaceRecord& rec, const std::string& scenePath, const Bu
     const fs::path root = fs::weakly_canonical(c.root.empty() ? fs::path(".") : c.root, ec);
     const fs::path rel = real.lexically_relative(root);
     if (ec || rel.empty() || *rel.begin() == "..")
-      throw io::InputError(rec.where, "texture",
+      throw io::InputError(rec.textureWhere.file.empty() ? rec.where : rec.textureWhere, "texture",
                            "a texture map inside the scene's directory or a --textures "
                            "directory (CGL-D62)",
                            "'" + rec.texture + "', which " + c.path.string() +
@@ -612,18 +620,49 @@ int loadTexture(const SurfaceRecord& rec, const std::string& scenePath, const Bu
     return once(real.string(),
                 [&] { return convert(readRleFile(c.path.string()), c.path.string()); });
   }
-  std::string looked;
-  for (const Candidate& c : candidates) looked += (looked.empty() ? "" : ", ") + c.path.string();
+  std::vector<std::string> looked;  // each place once, in the order tried
+  for (const Candidate& c : candidates)
+    if (std::find(looked.begin(), looked.end(), c.path.string()) == looked.end())
+      looked.push_back(c.path.string());
+  std::string places;
+  for (const std::string& p : looked) places += (places.empty() ? "" : ", ") + p;
+  // A copy whose names changed case (a DOS disk's TEXTURES/CHECKER.RLE):
+  // CGL's names are case-sensitive, as on the VAX; the message says so.
+  std::string otherCase;
+  for (const Candidate& c : candidates) {
+    if (!otherCase.empty()) break;
+    fs::path at = c.root.empty() ? fs::path(".") : c.root;
+    bool found = true;
+    const fs::path rel = c.root.empty() ? c.path : c.path.lexically_relative(c.root);
+    for (const fs::path& part : rel) {
+      std::error_code ec;
+      fs::path match;
+      for (fs::directory_iterator d(at, ec), stop; !ec && d != stop; d.increment(ec))
+        if (sameIgnoringCase(d->path().filename().string(), part.string())) match = d->path();
+      if (match.empty()) {
+        found = false;
+        break;
+      }
+      at = match;
+    }
+    if (found) otherCase = at.string();
+  }
   const bool outside = !(written.is_relative() && !written.empty() && *written.begin() != "..");
-  throw io::InputError(rec.where, "texture", "a run-length-encoded texture map",
-                       "'" + rec.texture + "' not found; " +
-                           (outside ? "the path as written leads outside the scene's directory "
-                                      "and is not opened (CGL-D62); "
-                                    : "") +
-                           "looked in: " + looked +
-                           (options.textureDirs.empty()
-                                ? " (prime's --textures DIR looks for the base name in DIR too)"
-                                : ""));
+  throw io::InputError(
+      rec.textureWhere.file.empty() ? rec.where : rec.textureWhere, "texture",
+      "a run-length-encoded texture map",
+      "no file for '" + rec.texture + "'" +
+          (outside ? " (the path as written leads outside the scene's directory "
+                     "and is not opened, CGL-D62)"
+                   : "") +
+          (places.empty() ? "" : "; looked in " + places) +
+          (otherCase.empty() ? ""
+                             : "; " + otherCase +
+                                   " differs only in case (CGL's names are case-sensitive: "
+                                   "rename it, or write the name as it is)") +
+          (options.textureDirs.empty()
+               ? " (prime's --textures DIR looks for the base name in DIR too)"
+               : ""));
 }
 
 }  // namespace

@@ -2,10 +2,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "legacy_io/common/digest.h"
+#include "legacy_io/common/error.h"
 #include "legacy_io/common/output_file.h"
 #include "legacy_io/common/run_inputs.h"
 #include "src/cli/camera_flags.h"
@@ -177,7 +179,7 @@ void addPathVerb(CLI::App& app, Action& action, const System& system) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--out", *out,
                   "The path file to write (default: DIR/camera.path, or SCENE.path beside a "
-                  "scene file)")
+                  "scene file, never replaced unless named here)")
       ->check(outputName());
   if (system.walk == nullptr) {
     cmd->callback([&action, title = std::string(system.title)] {
@@ -199,6 +201,14 @@ void addPathVerb(CLI::App& app, Action& action, const System& system) {
                               : job.centre;
       const std::string file = out->empty() ? defaultPathFile(job.name) : *out;
       io::checkOutputPath(file);
+      // The default file is where the walk's K key records keys by hand:
+      // replaced only when -o names it.
+      std::error_code ec;
+      if (out->empty() && std::filesystem::exists(file, ec))
+        throw io::InputError({file, std::nullopt, std::nullopt},
+                             "the scene's camera path exists (the walk's K key may have recorded "
+                             "keys there): -o " +
+                                 file + " replaces it, -o FILE writes another");
       const std::string text =
           orbitPathText(job.camera, centre, *frames, *turns,
                         "prime path " + job.name + " --orbit " + std::to_string(*frames));

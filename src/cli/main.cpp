@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "legacy_io/common/error.h"
+#include "legacy_io/common/input_file.h"
 #include "legacy_io/common/run_inputs.h"
 #include "src/cli/cgl/commands.h"
 #include "src/cli/commands.h"
@@ -82,6 +83,39 @@ std::string nearestCommand(const CLI::App& app, const std::string& word) {
   return best;
 }
 
+// The option of `app` nearest to `word` ("--profil"), if near enough.
+std::string nearestOption(const CLI::App& app, const std::string& word) {
+  const std::size_t dashes = word.find_first_not_of('-');
+  if (dashes == 0 || dashes == std::string::npos) return "";
+  const std::string bare = word.substr(dashes, word.find('=') - dashes);
+  std::string best;
+  std::size_t bestDistance = bare.size() <= 3 ? 2 : 3;
+  for (const CLI::Option* opt : app.get_options()) {
+    for (const std::string& name : opt->get_lnames()) {
+      const std::size_t d = distance(bare, name);
+      if (d < bestDistance) bestDistance = d, best = "--" + name;
+    }
+  }
+  return best;
+}
+
+// Arguments the command did not take, in the order given, as one sentence:
+// CLI11's own lists them last first ("modern --profil").
+std::string extrasMessage(const CLI::App& app) {
+  const CLI::App* sub = &app;
+  while (!sub->get_subcommands().empty()) sub = sub->get_subcommands().front();
+  const std::vector<std::string> extra = sub->remaining();
+  for (const std::string& w : extra)
+    if (w.size() > 1 && w[0] == '-' && !prime::cli::isNumber(w)) {
+      const std::string near = nearestOption(*sub, w);
+      return "unknown option '" + w + "'" + (near.empty() ? "" : " - did you mean '" + near + "'?");
+    }
+  std::string words;
+  for (const std::string& w : extra) words += (words.empty() ? "'" : " '") + w + "'";
+  return std::string(extra.size() == 1 ? "an argument" : "arguments") +
+         " the command does not take: " + words;
+}
+
 // Every command, in the order `prime --help` lists them, with the names each
 // registration adds. Building all of them (CLI11 objects for some 30
 // commands and their options) cost about 3 ms of CPU per run of `prime`
@@ -98,30 +132,18 @@ struct Command {
 const std::vector<Command>& commands() {
   namespace cli = prime::cli;
   static const std::vector<Command> kCommands = {
-      {{"model"}, cli::addModelCommand},
-      {{"dump"}, cli::addDumpCommand},
-      {{"trace"}, nullptr, cli::addTraceVerb},
-      {{"probe"}, nullptr, cli::addProbeVerb},
-      {{"view"}, nullptr, cli::addViewVerb},
-      {{"export"}, nullptr, cli::addExportVerb},
-      {{"diff"}, cli::addDiffCommand},
-      {{"palette"}, cli::addPaletteCommand},
-      {{"errata"}, cli::addErrataCommand},
-      {{"export-pov"}, nullptr, cli::addExportPovVerb},
-      {{"bench"}, nullptr, cli::addBenchVerb},
-      {{"plate1"}, cli::addPlate1Command},
-      {{"stress"}, cli::addStressCommand},
-      {{"quantize"}, cli::addQuantizeCommand},
-      {{"film"}, cli::addFilmCommand},
-      {{"check"}, cli::addCheckCommand},
-      {{"new"}, cli::addNewCommand},
-      {{"compare"}, cli::addCompareCommand},
-      {{"walk"}, nullptr, cli::addWalkVerb},
-      {{"path"}, nullptr, cli::addPathVerb},
-      {{"stitch"}, cli::addStitchCommand},
-      {{"cgl-splines"}, cli::cgl::addSplinesCommand},
-      {{"cook"}, cli::cgl::addCookCommand},
-      {{"tovector"}, cli::cgl::addTovectorCommand},
+      {{"model"}, cli::addModelCommand},       {{"dump"}, cli::addDumpCommand},
+      {{"trace"}, nullptr, cli::addTraceVerb}, {{"probe"}, nullptr, cli::addProbeVerb},
+      {{"view"}, nullptr, cli::addViewVerb},   {{"export"}, nullptr, cli::addExportVerb},
+      {{"diff"}, cli::addDiffCommand},         {{"palette"}, cli::addPaletteCommand},
+      {{"errata"}, cli::addErrataCommand},     {{"export-pov"}, nullptr, cli::addExportPovVerb},
+      {{"bench"}, nullptr, cli::addBenchVerb}, {{"plate1"}, cli::addPlate1Command},
+      {{"stress"}, cli::addStressCommand},     {{"quantize"}, cli::addQuantizeCommand},
+      {{"film"}, cli::addFilmCommand},         {{"check"}, cli::addCheckCommand},
+      {{"new"}, cli::addNewCommand},           {{"compare"}, cli::addCompareCommand},
+      {{"walk"}, nullptr, cli::addWalkVerb},   {{"path"}, nullptr, cli::addPathVerb},
+      {{"stitch"}, cli::addStitchCommand},     {{"cgl-splines"}, cli::cgl::addSplinesCommand},
+      {{"cook"}, cli::cgl::addCookCommand},    {{"tovector"}, cli::cgl::addTovectorCommand},
   };
   return kCommands;
 }
@@ -186,6 +208,23 @@ std::unique_ptr<CLI::App> makeApp(const Command* only, prime::cli::Action& actio
   return app;
 }
 }  // namespace
+
+// The help that lists the options of the command line `words`: a verb every
+// system shares lists those of the system its scene names, so the scene
+// goes in ("prime trace glass.cgl --help").
+static std::string helpCommand(const std::vector<std::string>& words) {
+  if (words.size() < 2 || words[1].empty() || words[1][0] == '-') return "prime --help";
+  bool shared = false;
+  for (const Command& c : commands())
+    shared = shared || (c.verb != nullptr &&
+                        std::find(c.names.begin(), c.names.end(), words[1]) != c.names.end());
+  std::string scene;
+  if (shared)
+    for (std::size_t i = 2; i < words.size() && scene.empty(); ++i)
+      if (!words[i].empty() && words[i][0] != '-' && std::filesystem::exists(words[i]))
+        scene = " " + words[i];
+  return "prime " + words[1] + scene + " --help";
+}
 
 // "while rendering FILE" (the step the failure ended), else "running `prime
 // trace FILE ...`": a message that names what was being done, and to which file.
@@ -261,8 +300,9 @@ int primeMain(int argc, char** argv, bool parseOnly) {
                 << " (prime --help lists the commands)\n";
       return 2;
     }
-    std::cerr << "prime: " << e.what() << " (prime " << (first.empty() ? "" : first + " ")
-              << "--help)\n";
+    const std::string what =
+        dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr ? extrasMessage(*made) : e.what();
+    std::cerr << "prime: " << what << " (" << helpCommand(words) << ")\n";
     return 2;
   } catch (const prime::io::InputError& e) {  // a check a command made while parsing
     std::cerr << "prime: " << e.what() << "\n";
@@ -272,9 +312,7 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     return 1;
   }
   if (const std::string bad = nonFiniteNumber(*made); !bad.empty()) {
-    const std::string first = argc > 1 ? argv[1] : "";
-    std::cerr << "prime: " << bad << " (prime " << (first.empty() ? "" : first + " ")
-              << "--help)\n";
+    std::cerr << "prime: " << bad << " (" << helpCommand(words) << ")\n";
     return 2;
   }
   if (parseOnly) return 0;
@@ -287,7 +325,8 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     const int sig = prime::cli::interruptingSignal();
     return status != 0 && sig != 0 ? 128 + sig : status;
   } catch (const prime::io::InputError& e) {
-    std::cerr << "prime: " << e.what() << "\n";
+    const std::string note = prime::io::dosEofNote(e);
+    std::cerr << "prime: " << e.what() << (note.empty() ? "" : " (" + note + ")") << "\n";
     return 1;
   } catch (const CLI::ParseError& e) {  // an option's value found wrong only in the action
     std::cerr << "prime: " << e.what() << "\n";

@@ -2,6 +2,7 @@
 #include "src/cli/option_values.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -108,9 +109,9 @@ CLI::Validator above(double least) {
   return numberFrom(least, true);
 }
 
-CLI::Validator sceneDirectory() {
+CLI::Validator sceneDirectory(const std::string& primeOnly) {
   return CLI::Validator(
-      [](std::string& path) -> std::string {
+      [primeOnly](std::string& path) -> std::string {
         namespace fs = std::filesystem;
         std::error_code ec;
         const fs::file_status st = fs::status(path, ec);
@@ -119,6 +120,16 @@ CLI::Validator sceneDirectory() {
           return "'" + path +
                  "' does not exist (a PRIME scene is a directory, a Malone or CGL "
                  "scene a file)";
+        std::string ext = fs::path(path).extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (ext == ".zip")
+          return "'" + path +
+                 "' is a zip: unzip it and give its scene directory (only the web page reads a "
+                 "zip)";
+        if (!primeOnly.empty())
+          return "'" + path + "' is a file, and prime " + primeOnly +
+                 " takes a PRIME scene directory: it is PRIME's command (Malone's and CGL's "
+                 "scenes are files; prime --help says which commands read them)";
         return "'" + path +
                "' is a file that no system reads as its scene: a PRIME scene is a directory, a "
                "Malone scene a file of numbers (Malone, section 1.10), a CGL scene a "

@@ -37,7 +37,8 @@ CLI::Validator atLeast(double least);
 CLI::Validator above(double least);
 // A PRIME scene directory, the default of the verbs every system shares: a
 // file no system reads gets a message that says so, not CLI11's "Directory
-// is actually a file".
-CLI::Validator sceneDirectory();
+// is actually a file". A command that is PRIME's only (`primeOnly`: its
+// name) says so of any file; a zip is told to be unzipped.
+CLI::Validator sceneDirectory(const std::string& primeOnly = "");
 
 }  // namespace prime::cli

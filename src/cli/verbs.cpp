@@ -128,23 +128,9 @@ namespace {
 // input of the run) and two outputs that name one file (the second replaced
 // the first): before the render, not after it.
 void checkOutputs(const TraceJob& job) {
-  namespace fs = std::filesystem;
-  std::vector<std::pair<TraceJob::Output, fs::path>> seen;
-  for (const TraceJob::Output& out : job.outputs()) {
-    if (out.path.empty()) continue;
-    io::checkOutputPath(out.path);
-    std::error_code ec;
-    fs::path where = fs::weakly_canonical(out.path, ec);
-    if (ec) where = fs::absolute(out.path);
-    for (const auto& [other, at] : seen) {
-      std::error_code same;
-      if (at == where || fs::equivalent(other.path, out.path, same))
-        throw io::InputError(
-            {out.path, std::nullopt, std::nullopt},
-            other.flag + " and " + out.flag + " name the same file: each output needs its own");
-    }
-    seen.emplace_back(out, where);
-  }
+  std::vector<io::NamedOutput> outputs;
+  for (const TraceJob::Output& out : job.outputs()) outputs.push_back({out.flag, out.path});
+  io::checkOutputs(outputs);
 }
 
 }  // namespace

@@ -197,7 +197,9 @@ RowsRun renderRows(int rows, int threads,
     for (std::size_t k = 0; k < loads.size(); ++k) sum[k] += loads[k];
   }
 
-  run.aborted = rowsDone.load() < bandRows;
+  run.rowsDone = rowsDone.load();
+  run.rows = bandRows;
+  run.aborted = run.rowsDone < bandRows;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -100,6 +100,8 @@ struct RowsRun {
   double seconds = 0;
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row
+  int rowsDone = 0;      // rows finished: all of the band's unless aborted
+  int rows = 0;          // rows in the band
 };
 
 // Starts up to `count` threads running fn(0), fn(1), ... into `pool` and

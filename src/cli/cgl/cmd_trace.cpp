@@ -69,9 +69,13 @@ std::string fractalSummary(const prime::cgl::TraceStats& s) {
 
 void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
   const auto& s = r.stats;
-  std::printf("%s 512 x 512 pixels in %.2f s with %d thread(s)%s\n",
-              r.run.aborted ? "ABORTED after" : "traced", r.run.seconds, r.run.threads,
-              what.c_str());
+  // An abort: the rows rendered, of how many.
+  const std::string rows = r.run.aborted ? std::to_string(r.run.rowsDone) + " of " +
+                                               std::to_string(r.run.rows) + " rows of "
+                                         : "";
+  std::printf("%s %s512 x 512 pixels in %.2f s with %d thread(s)%s\n",
+              r.run.aborted ? "ABORTED after" : "traced", rows.c_str(), r.run.seconds,
+              r.run.threads, what.c_str());
   std::printf(
       "rays: %llu (primary %llu, shadow %llu, reflected %llu, refracted %llu), %.0f rays/s; "
       "tests: sphere %llu, cylinder %llu, polygon %llu, super box %llu; shade calls: Lambert "

@@ -36,9 +36,13 @@ Image8 toImage8(const RgbImage& raster) {
 
 void printSummary(const prime::malone::RenderResult& r, const std::string& what) {
   const auto& s = r.stats;
-  std::printf("%s %d x %d pixels in %.2f s with %d thread(s)%s\n",
-              r.run.aborted ? "ABORTED after" : "traced", r.raster.width, r.raster.height,
-              r.run.seconds, r.run.threads, what.c_str());
+  // An abort: the rows rendered, of how many.
+  const std::string rows = r.run.aborted ? std::to_string(r.run.rowsDone) + " of " +
+                                               std::to_string(r.run.rows) + " rows of "
+                                         : "";
+  std::printf("%s %s%d x %d pixels in %.2f s with %d thread(s)%s\n",
+              r.run.aborted ? "ABORTED after" : "traced", rows.c_str(), r.raster.width,
+              r.raster.height, r.run.seconds, r.run.threads, what.c_str());
   std::printf(
       "rays: %llu (primary %llu, shadow %llu, reflected %llu, transmitted %llu), %.0f rays/s; "
       "primitive tests %llu, hits %llu, total internal reflections %llu; rays cut by depth %llu, "

@@ -1,6 +1,9 @@
 #include "src/cli/prime/camera_options.h"
 
 #include <stdexcept>
+#include <string>
+
+#include "src/cli/camera_flags.h"
 
 namespace prime::cli {
 
@@ -67,6 +70,13 @@ void applyCameraOptions(const CameraOptions& options, CameraSettings& c, int sid
     f.lookAt = flags.lookAt.empty() ? (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25
                                     : Vec3{flags.lookAt[0], flags.lookAt[1], flags.lookAt[2]};
     if (!flags.up.empty()) f.up = {flags.up[0], flags.up[1], flags.up[2]};
+    if (f.lookAt[0] == f.eye[0] && f.lookAt[1] == f.eye[1] && f.lookAt[2] == f.eye[2])
+      throw std::invalid_argument(
+          "the eye is the point it looks at, (" + numberText(f.eye[0]) + ", " +
+          numberText(f.eye[1]) + ", " + numberText(f.eye[2]) + ")" +
+          (flags.lookAt.empty() ? ", the listing window's centre (looked at without --look-at)"
+                                : "") +
+          ": give another --look-at or --eye");
     f.width = width;
     f.height = height;
     if (flags.fov > 0.0) {

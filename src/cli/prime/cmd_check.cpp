@@ -21,7 +21,7 @@ void addCheckCommand(CLI::App& app, Action& action) {
       "palette entries)");
   auto dir = std::make_shared<std::string>();
   auto quiet = std::make_shared<bool>(false);
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory("check"));
   cmd->add_flag("-q,--quiet", *quiet, "Print nothing when the scene is clean");
   cmd->callback([=, &action] {
     action = [=] {

@@ -276,7 +276,7 @@ void addCompareCommand(CLI::App& app, Action& action) {
   auto model = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
   auto only = std::make_shared<std::string>();
-  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory());
+  cmd->add_option("DIR", *dir, "Scene directory")->required()->check(sceneDirectory("compare"));
   cmd->add_option("--a", *a, "Settings of A, any of trace's render options (\"--profile 1991\")");
   cmd->add_option("--b", *b,
                   "Settings of B (\"--profile thesis\"; \"--profile modern\" in a build without "

@@ -2,6 +2,7 @@
 // emulated 8514/A screen, as a PNG.
 #include <iostream>
 
+#include "legacy_io/common/output_file.h"
 #include "src/cli/commands.h"
 #include "src/cli/option_values.h"
 #include "src/cli/prime/display_options.h"
@@ -29,6 +30,9 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       const std::optional<GraphInfo> info = graphInfoFor(*o, *file);
       const Geometry g = geometryOf(*o, info);
       const io::GraphFilePrefix f = readGraphForDisplay(*file, g, *quiet);
+      // After the read (the graph file is then an input of the run): no
+      // output is an input, and no two outputs are one file.
+      io::checkOutputs({{"OUT", *out}, {"--png-upscaled", o->pngUpscaled}});
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       Screen screen(g.width, g.height);
       drawGraph(screen, f.graph, g.at, f.pixelsPresent);
@@ -37,12 +41,16 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       // What made the picture, as its companion says (the render's
       // provenance), then the palette's lines.
       write8514Pngs(*out, img, companionMeta(info), *o, paletteLabel(palette));
-      if (!*quiet)
-        std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
-                  << " area; the file's " << f.graph.width() << " x " << f.graph.height()
-                  << " pixels at (" << g.at.left << ", " << g.at.top << ") on a " << g.width
-                  << " x " << g.height << " screen), palette " << palette.name << ", DAC " << o->dac
-                  << "\n";
+      if (*quiet) return 0;
+      std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
+                << " area; the file's " << f.graph.width() << " x " << f.graph.height()
+                << " pixels at (" << g.at.left << ", " << g.at.top << ") on a " << g.width << " x "
+                << g.height << " screen), palette " << palette.name << ", DAC " << o->dac << "\n";
+      if (!o->pngUpscaled.empty()) {
+        const int k = fitFactor(img.width, img.height, o->upscaleFit[0], o->upscaleFit[1]);
+        std::cout << "wrote " << o->pngUpscaled << ": " << img.width * k << " x " << img.height * k
+                  << " (" << *out << " upscaled " << k << " x " << k << ", nearest neighbour)\n";
+      }
       return 0;
     };
   });

@@ -25,7 +25,7 @@ void addModelCommand(CLI::App& app, Action& action) {
   cmd->add_option("DIR", *dir,
                   "Scene directory (holds Model.txt or a 1991 Model.c, prim/, obj/, map/ ...)")
       ->required()
-      ->check(sceneDirectory());
+      ->check(sceneDirectory("model"));
   cmd->add_flag("--copy-type-from-source", options->copyTypeFromSource,
                 "Give primitives copied by an O entry their source's type (not the listing: K33)");
   cmd->add_flag(

@@ -29,7 +29,7 @@ void addPlate1Command(CLI::App& app, Action& action) {
   auto o = std::make_shared<Options>();
   cmd->add_option("DIR", o->dir, "Scene directory holding knots.txt (scenes/prime/plate1)")
       ->required()
-      ->check(sceneDirectory());
+      ->check(sceneDirectory("plate1"));
   cmd->add_option("--knots", o->knots, "Knot file (default: DIR/knots.txt)");
   cmd->add_option("--out", o->out, "Graph file to write (default: DIR/graph_scr)")
       ->check(outputName());

@@ -40,9 +40,13 @@ namespace {
 
 void printSummary(const RenderResult& r, const std::string& out) {
   const auto& s = r.stats;
-  std::printf("%s %d x %d pixels (graph file header %d x %d) in %.2f s with %d thread(s): %s\n",
-              r.aborted ? "ABORTED after" : "traced", r.graph.width(), r.graph.height(),
-              r.graph.numPixAcross, r.graph.numPixDown, r.seconds, r.threads, out.c_str());
+  // An abort: the rows rendered, of how many.
+  const std::string rows =
+      r.aborted ? std::to_string(r.rowsDone) + " of " + std::to_string(r.rows) + " rows of " : "";
+  std::printf("%s %s%d x %d pixels (graph file header %d x %d) in %.2f s with %d thread(s): %s\n",
+              r.aborted ? "ABORTED after" : "traced", rows.c_str(), r.graph.width(),
+              r.graph.height(), r.graph.numPixAcross, r.graph.numPixDown, r.seconds, r.threads,
+              out.c_str());
   std::printf("rays: %llu (primary %llu, reflected %llu, transmitted %llu), %.0f rays/s\n",
               static_cast<unsigned long long>(s.rays()),
               static_cast<unsigned long long>(s.primaryRays),
@@ -50,12 +54,12 @@ void printSummary(const RenderResult& r, const std::string& out) {
               static_cast<unsigned long long>(s.transmittedRays),
               r.seconds > 0 ? s.rays() / r.seconds : 0.0);
   if (s.shadowRays > 0 || r.samples > 0)  // the thesis profile's shadow rays; pixel samples
-    std::printf("shadow rays: %llu; pixel samples: %llu (%.2f a pixel)\n",
-                static_cast<unsigned long long>(s.shadowRays),
-                static_cast<unsigned long long>(r.samples),
-                r.graph.pixels.empty()
-                    ? 0.0
-                    : static_cast<double>(r.samples) / static_cast<double>(r.graph.pixels.size()));
+    std::printf(
+        "shadow rays: %llu; pixel samples: %llu (%.2f a pixel)\n",
+        static_cast<unsigned long long>(s.shadowRays), static_cast<unsigned long long>(r.samples),
+        r.rowsDone == 0
+            ? 0.0
+            : static_cast<double>(r.samples) / (static_cast<double>(r.rowsDone) * r.graph.width()));
   std::printf(
       "tests: %llu bound, %llu object, %llu primitive; hits %llu; TIR %llu; primary rays that "
       "could meet no object box (background, not traced) %llu\n",

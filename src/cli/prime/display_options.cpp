@@ -115,12 +115,18 @@ std::vector<std::string> write8514Pngs(const std::string& path, const IndexedIma
     written.push_back(path);
   }
   if (!o.pngUpscaled.empty()) {
-    const int k = fitFactor(image.width, image.height, o.upscaleFit[0], o.upscaleFit[1]);
-    meta.text.push_back({"Upscaled", std::to_string(k) + " x " + std::to_string(k) +
-                                         ", nearest neighbour (the largest whole factor that "
-                                         "fits " +
-                                         std::to_string(o.upscaleFit[0]) + " x " +
-                                         std::to_string(o.upscaleFit[1]) + ")"});
+    const int fitW = o.upscaleFit[0], fitH = o.upscaleFit[1];
+    const int k = fitFactor(image.width, image.height, fitW, fitH);
+    const std::string box = std::to_string(fitW) + " x " + std::to_string(fitH);
+    const bool fits = image.width <= fitW && image.height <= fitH;
+    if (!fits)
+      std::cerr << "prime: --upscale-fit " + box + ": the picture (" + std::to_string(image.width) +
+                       " x " + std::to_string(image.height) + ") is larger even at 1 x 1; " +
+                       o.pngUpscaled + " is written at 1 x 1, the same pixels as the PNG\n";
+    meta.text.push_back(
+        {"Upscaled", std::to_string(k) + " x " + std::to_string(k) + ", nearest neighbour " +
+                         (fits ? "(the largest whole factor that fits " + box + ")"
+                               : "(1 x 1: the picture is larger than " + box + ")")});
     writeIndexedPng(o.pngUpscaled, upscale(image, k), meta);
     written.push_back(o.pngUpscaled);
   }

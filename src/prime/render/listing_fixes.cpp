@@ -13,7 +13,7 @@ constexpr const char* kModelled = "made when the scene is modelled: the database
 constexpr const char* kReading = "how the files are read: the scene would not load otherwise";
 constexpr const char* kNoPixels = "changes no pixel";
 constexpr const char* kTangled =
-    "tangled with others (K7, K8, K19): no correction of it alone renders";
+    "K6, K7, K8 and K19 are tangled: no correction of one alone renders";
 
 constexpr ListingQuirk kQuirks[] = {
     {"K1", "Transfrm.c: Scale", "only the diagonal is scaled: copied objects keep unscaled terms",
@@ -87,12 +87,13 @@ constexpr ListingQuirk kQuirks[] = {
      "the modern profile's set operations (--profile modern)", ""},
     {"K32", "Obj.c: AddObj", "\"NULL\" overruns opCode[4] by one byte", nullptr, kNoPixels, ""},
     {"K33", "Obj.c: AddObj; Prim.c: CopyPrim", "'O' entries copy no primitive type", nullptr,
-     kModelled, ""},
+     "made when the scene is modelled: prime model --copy-type-from-source corrects it", ""},
     {"K34", "Prim.c: AddPrim", "unused map slots are heap garbage in PrimFile", nullptr, kNoPixels,
      ""},
     {"K35", "Obj.c: AddObj", "a leaf is two tokens, B 1, not B1", nullptr, kReading, ""},
     {"K36", "Prim.c: AddPrim; Bound.c", "the type letter must be byte 0", nullptr, kReading, ""},
-    {"K37", "Prim.c: NewPrimNum", "16-bit primitive numbers: 112 per scene", nullptr, kReading, ""},
+    {"K37", "Prim.c: NewPrimNum", "16-bit primitive numbers: 113 per scene (0..112, M3)", nullptr,
+     "made when the scene is modelled: prime model --no-16bit-limit lifts it", ""},
     {"K38", "Memory.c: Malloc, Free", "500 live blocks at most", nullptr, kNoPixels, ""},
     {"K39", "User_IO.c: KBEEmpty", "tests PF, not ZF", nullptr, kNoPixels, ""},
     {"K40", "Lighting.c: InitLighting", "the light file is never closed; light[10] unchecked",
@@ -111,6 +112,13 @@ constexpr std::pair<const char*, bool ListingFixes::*> kSwitches[] = {{"K4", &Li
                                                                       {"K10", &ListingFixes::k10},
                                                                       {"K15", &ListingFixes::k15},
                                                                       {"K18", &ListingFixes::k18}};
+
+// The ids --fix takes, for its error messages.
+std::string switchesText() {
+  std::string s = "--fix takes ";
+  for (const auto& [name, flag] : kSwitches) s += std::string(name) + ", ";
+  return s + "or all (prime errata)";
+}
 
 std::string upper(std::string_view s) {
   std::string out;
@@ -140,9 +148,10 @@ ListingFixes parseListingFixes(std::string_view text) {
     for (const ListingQuirk& k : kQuirks)
       if (id == k.id) q = &k;
     if (q == nullptr)
-      throw std::invalid_argument("'" + id + "' is no listing quirk (K1 .. K44; prime errata)");
+      throw std::invalid_argument("'" + id + "' is no listing quirk (K1 .. K44); " +
+                                  switchesText());
     if (q->fix == nullptr)
-      throw std::invalid_argument(id + " has no switch: " + q->noSwitch + " (prime errata)");
+      throw std::invalid_argument(id + " has no switch: " + q->noSwitch + "; " + switchesText());
     for (const auto& [name, flag] : kSwitches)
       if (id == name) f.*flag = true;
   }

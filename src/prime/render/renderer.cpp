@@ -233,6 +233,8 @@ void renderWith(const Tracer& tracer, const PrimeCamera& camera,
   }
   result.threads = run.threads;
   result.aborted = run.aborted;
+  result.rowsDone = run.rowsDone;
+  result.rows = run.rows;
 }
 
 }  // namespace

@@ -67,6 +67,8 @@ struct RenderResult {
   double seconds = 0;
   int threads = 1;
   bool aborted = false;  // stopped by `abort` before the last row
+  int rowsDone = 0;      // rows rendered: all of the band's unless aborted
+  int rows = 0;          // rows in the band (the picture's, without --rows)
 };
 
 // The shared scheduler's callbacks, with each finished row's palette

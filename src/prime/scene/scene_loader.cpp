@@ -19,6 +19,14 @@ using io::InputError;
 
 namespace {
 
+// What a primitive number may be, with PrimFile's size: "a primitive number
+// 0..4 (PrimFile has 5)", or that an empty PrimFile has none.
+std::string primitiveNumbers(std::size_t count) {
+  if (count == 0) return "a primitive number (PrimFile has no primitives)";
+  return "a primitive number 0.." + std::to_string(count - 1) + " (PrimFile has " +
+         std::to_string(count) + ")";
+}
+
 // M33: the text parsers refuse NaN and infinities, so a binary database
 // holding one was not written by them: corrupt. A non-finite matrix element,
 // hue or texel is refused where it is read, naming the record, the field and
@@ -103,9 +111,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
       case 'P':
         if (e.l < 0 || e.l >= static_cast<int>(prims.size()))
           throw InputError({shown, std::nullopt, at}, field + " primitive",
-                           "a primitive number 0.." + std::to_string(prims.size() - 1) +
-                               " (PrimFile has " + std::to_string(prims.size()) + ")",
-                           std::to_string(e.l));
+                           primitiveNumbers(prims.size()), std::to_string(e.l));
         if (!io::primType(prims[e.l].type))
           throw InputError({shown, std::nullopt, at}, field + " primitive " + std::to_string(e.l),
                            "a primitive of type S, B, C, N or Y",
@@ -143,8 +149,7 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
   if (obj.boundPrim != -1) {
     if (obj.boundPrim < 0 || obj.boundPrim >= static_cast<int>(prims.size()))
       throw InputError({shown, std::nullopt, 2}, "ObjHeader.boundVol",
-                       "-1 or a primitive number 0.." + std::to_string(prims.size() - 1),
-                       std::to_string(obj.boundPrim));
+                       "-1 or " + primitiveNumbers(prims.size()), std::to_string(obj.boundPrim));
     if (!io::primType(prims[obj.boundPrim].type))
       throw InputError(
           {shown, std::nullopt, 2},

@@ -369,7 +369,7 @@ TEST(CglPreprocess, TexturesOutsideTheSceneAreNeverOpened) {
        std::vector<std::string>{(outside / "secret.rle").string(), "../outside/secret.rle",
                                 "textures/../../outside/secret.rle"}) {
     const std::string m = messageOf(path);
-    EXPECT_NE(m.find("not found"), std::string::npos) << path << ": " << m;
+    EXPECT_NE(m.find("no file for '" + path + "'"), std::string::npos) << path << ": " << m;
     EXPECT_NE(m.find("(built)"), 0u) << path << " was opened";
   }
   EXPECT_NE(messageOf("/etc/passwd").find("leads outside the scene's directory"),
@@ -381,6 +381,16 @@ TEST(CglPreprocess, TexturesOutsideTheSceneAreNeverOpened) {
   writeRleFile((scene / "textures" / "secret.rle").string(), test::checkerboardTexture());
   EXPECT_EQ(messageOf((outside / "secret.rle").string()), "(built)");
   EXPECT_EQ(messageOf("/u/majsweeney/textures/secret"), "(built)");
+  // A copy whose names changed case: each place looked in named once, and
+  // the file that differs only in case pointed out.
+  writeRleFile((scene / "textures" / "Checker.RLE").string(), test::checkerboardTexture());
+  const std::string m = messageOf("textures/checker.rle");
+  const std::string place = (scene / "textures" / "checker.rle").string();
+  EXPECT_NE(m.find(place), std::string::npos) << m;
+  EXPECT_EQ(m.find(place + ","), m.rfind(place + ",")) << "named twice: " << m;
+  EXPECT_NE(m.find((scene / "textures" / "Checker.RLE").string() + " differs only in case"),
+            std::string::npos)
+      << m;
 }
 
 // Found by the cgl_texture fuzzer: every textured surface loaded its map

@@ -136,6 +136,18 @@ with tempfile.TemporaryDirectory() as tmp:
              "--size", "64", "48", "--out", "F%04d.ppm"], d)
     check(r.returncode == 0 and "2 rendered, 0 done already" in r.out,
           "malone: other settings render the frames again", r)
+    # The default path file (where the walk's K records keys) is not replaced
+    # by another orbit unless -o names it.
+    own = os.path.join(d, "own.mal")
+    shutil.copyfile(mal, own)
+    default = os.path.join(d, "own.path")
+    ok(run(["path", own, "--orbit", "12"], d), "path --orbit writes the default file")
+    first = open(default).read()
+    r = run(["path", own, "--orbit", "24"], d)
+    check(r.returncode == 1 and f"-o {default} replaces it" in r.out and
+          open(default).read() == first, "an existing default path file is kept, and said so", r)
+    ok(run(["path", own, "--orbit", "24", "-o", default], d), "-o naming the default replaces it")
+    check(open(default).read() != first, "-o naming the default file replaced it")
     # A hand-written path, and its mistakes.
     with open(os.path.join(d, "hand.txt"), "w") as f:
         f.write("# by hand\nframes 10\nfps 5\nkey --eye 0 2 12 --look-at 0 0.5 0\n"

@@ -104,5 +104,26 @@ TEST(InputFile, TheDisplayNameIsUsedInMessages) {
   EXPECT_EQ(m.rfind("scene/obj/O1: no such file", 0), 0u) << m;
 }
 
+// A ^Z in the middle of a text (a binary COPY A+B): the text ends there, and
+// an error that found its end says where the ^Z is and what it left unread.
+// ^Z padding at the end (what the editors of the time wrote) says nothing.
+TEST(InputFile, AnEndOfFileAtAMidTextCtrlZSaysWhy) {
+  TempDir dir;
+  const std::string cut = (dir / "cut.txt").string(), padded = (dir / "padded.txt").string();
+  std::ofstream(cut, std::ios::binary) << "1 2\n\x1a"
+                                       << "3 4\n";
+  std::ofstream(padded, std::ios::binary) << "1 2\n\x1a\x1a\x1a";
+  EXPECT_EQ(readInputText(cut), "1 2\n");
+  EXPECT_EQ(readInputText(padded), "1 2\n");
+  const auto atEnd = [](const std::string& file) {
+    return InputError({file, 2, std::nullopt}, "z", "a number", "end of file");
+  };
+  EXPECT_EQ(dosEofNote(atEnd(cut)),
+            "the text ends at the ^Z (0x1A) at byte 4, as DOS's text mode read it; 4 bytes after "
+            "it are not read (M41)");
+  EXPECT_EQ(dosEofNote(atEnd(padded)), "");
+  EXPECT_EQ(dosEofNote(InputError({cut, 1, std::nullopt}, "x", "a number", "\"abc\"")), "");
+}
+
 }  // namespace
 }  // namespace prime::io

@@ -52,7 +52,14 @@ TEST(FreeCameraTrace, ListingDefaultIsUnchangedAndBadCamerasAreUsageErrors) {
   EXPECT_EQ(g.numPixDown, 768);
   auto r = runPrime("trace --no-window -q " + dir + " --look-at 500 500 -1500");  // at the eye
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_THAT(r.output, HasSubstr("look-at point must differ from the eye"));
+  EXPECT_THAT(r.output, HasSubstr("free camera: the eye is the point it looks at, (500, 500, "
+                                  "-1500): give another --look-at or --eye"));
+  // Without --look-at the camera looks at the listing window's centre: an
+  // eye put there is told so (not "give --fov", which cannot help).
+  r = runPrime("trace --no-window -q " + dir + " --eye 500 500 0 --size 64 64");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("(500, 500, 0), the listing window's centre (looked at without "
+                                  "--look-at): give another --look-at or --eye"));
   r = runPrime("trace --no-window -q " + dir + " --size 64 64 --up 0 0 1");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr("up vector"));

@@ -136,6 +136,12 @@ with tempfile.TemporaryDirectory() as tmp:
                           "DOS/MAP/MAP1_R.MAP"):
                 r = run(["dump", os.path.join(work, typed)])
                 check(r.returncode == 0 and r.stdout.strip(), f"dump {typed}: {r.stderr.strip()}")
+            # GRAPH_SC: graph_scr as DOS's eight characters keep it.
+            shutil.copyfile(os.path.join(work, "canon.graph"),
+                            os.path.join(work, "DOS", "GRAPH_SC"))
+            r = run(["dump", os.path.join(work, "DOS", "GRAPH_SC")])
+            check(r.returncode == 0 and "graph file, graphType" in r.stdout,
+                  f"dump GRAPH_SC: {r.stderr.strip()}")
             r = run(["dump", os.path.join(work, "DOS/OBJ/O99")])
             check(r.returncode == 2 and "does not exist" in r.stderr, f"dump O99: {r.stderr}")
         shutil.rmtree(work)

@@ -986,6 +986,14 @@ TEST_F(XvfbTest, ClickOnAPixelOfTraceDrawsItsRaysAsProbeOverlayDoes) {
       EXPECT_EQ(at(wx - 3, wy), (std::array<int, 3>{255, 0, 255}));
     }
     EXPECT_GT(differingPixels(before, shown), 1000u);
+    // S saves the window as shown: the drawing included.
+    EXPECT_EQ(run({"xdotool", "windowfocus", "--sync", id, "key", "s"}), 0);
+    ASSERT_TRUE(trace.waitForErr("prime-screenshot-1.png", 10000)) << trace.err();
+    for (int i = 0; i < 50 && !out.exists("prime-screenshot-1.png"); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(differingPixels(shown, prime::readPng(out.path("prime-screenshot-1.png").string())),
+              0u)
+        << "the screenshot is not the window as shown";
     EXPECT_EQ(run({"xdotool", "mousemove", "--window", id, "--sync", std::to_string(wx),
                    std::to_string(wy), "click", "3"}),
               0);

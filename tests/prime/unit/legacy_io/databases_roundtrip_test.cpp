@@ -2,6 +2,11 @@
 // reader recognises both Prim layouts and both graph-file pixel counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "legacy_io/common/error.h"
 #include "legacy_io/prime/graph_file.h"
 #include "legacy_io/prime/map_file.h"
 #include "legacy_io/prime/obj_file.h"
@@ -83,6 +88,51 @@ TEST(RoundTrip, ObjFile) {
   EXPECT_EQ(back.header, f.header);
   EXPECT_EQ(back.entries, f.entries);
   EXPECT_EQ(toBytes(back), bytes);
+}
+
+// A file whose size is not the one its header counts: cut short (a copy
+// that stopped) or with bytes after its records, each said as what it is,
+// at the byte where the two part.
+TEST(RoundTrip, AnObjFileOfTheWrongSizeSaysHowItDiffersFromItsHeader) {
+  ObjFile f;
+  f.header.numEntries = 5;
+  ObjRecord p;
+  p.opCode = {'P', 0, 0, 0};
+  f.entries.assign(5, p);
+  const auto bytes = toBytes(f);
+  ASSERT_EQ(bytes.size(), 116u);
+  const auto messageFor = [&](std::size_t size) -> std::string {
+    std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + std::min(size, bytes.size()));
+    cut.resize(size, 0);
+    try {
+      objFileFromBytes(cut, "O1");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(messageFor(113),
+            "O1 (byte 113): file size: expected 116 bytes (the 76-byte ObjHeader and the 5 "
+            "8-byte Obj records its numEntries counts), found 113 bytes (cut short by 3 bytes)");
+  EXPECT_EQ(messageFor(100),
+            "O1 (byte 100): file size: expected 116 bytes (the 76-byte ObjHeader and the 5 "
+            "8-byte Obj records its numEntries counts), found 100 bytes (cut short by 16 bytes)");
+  EXPECT_EQ(messageFor(117),
+            "O1 (byte 116): file size: expected 116 bytes (the 76-byte ObjHeader and the 5 "
+            "8-byte Obj records its numEntries counts), found 117 bytes (1 byte after the last "
+            "record)");
+  EXPECT_EQ(messageFor(116), "no error");
+  std::vector<std::uint8_t> negative = bytes;
+  negative[0] = 0xff;
+  negative[1] = 0xff;
+  try {
+    objFileFromBytes(negative, "O1");
+    ADD_FAILURE() << "numEntries -1 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "O1 (byte 0): ObjHeader.numEntries: expected the number of Obj records, 0 or more, "
+              "found -1");
+  }
 }
 
 TEST(RoundTrip, ObjListMapAndGraph) {
