@@ -158,7 +158,7 @@ int stitch(const std::string& out, const std::vector<std::string>& paths) {
                                  ", which is outside every band: not pieces of one render");
   }
   kind->write(out, whole, pieces.front().path);
-  std::printf("stitched %zu pieces of %s (%d rows)\nwrote %s\n", pieces.size(),
+  std::printf("stitched %zu pieces of %s (%d rows of the render)\nwrote %s\n", pieces.size(),
               first.output.c_str(), first.rows, out.c_str());
   return 0;
 }

@@ -53,13 +53,17 @@ void addCookCommand(CLI::App& app, Action& action) {
       ->required()
       ->expected(1, 33);
   cmd->add_option("--count", d->count, "The surface's number in its scene file")->check(above(0));
-  cmd->add_option("--diffuse", d->diffuse, "k_d (0.0-1.0)")->check(CLI::Range(0.0, 1.0e6));
-  cmd->add_option("--specular", d->specular, "k_s (0.0-1.0)")->check(CLI::Range(0.0, 1.0e6));
-  cmd->add_option("--m", d->m, "The rms facet slope m (0.1-1.0)")->check(CLI::Range(1.0e-6, 1.0e6));
+  cmd->add_option("--diffuse", d->diffuse, "k_d (usually 0.0-1.0)")->check(CLI::Range(0.0, 1.0e6));
+  cmd->add_option("--specular", d->specular, "k_s (usually 0.0-1.0)")
+      ->check(CLI::Range(0.0, 1.0e6));
+  cmd->add_option("--m", d->m, "The rms facet slope m (usually 0.1-1.0)")
+      ->check(CLI::Range(1.0e-6, 1.0e6));
   cmd->add_option("--reflect", d->reflect, "k_r (0.0-1.0)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--refract", d->refract, "k_t (0.0-1.0)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--index", d->index, "The refractive index")->check(CLI::Range(0.0, 1.0e6));
   cmd->add_option("--name", d->name, "The descriptor's comment: '* surface: NAME'");
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_flag("-q,--quiet", *quiet, "Print nothing on success");
   cmd->callback([=, &action] {
     action = [=] {
       prime::cgl::CookDescriptor desc = *d;
@@ -68,6 +72,12 @@ void addCookCommand(CLI::App& app, Action& action) {
       io::OutputFile f(*out);  // never over the reflectance file (an input), never half written
       f.write(text);
       f.commit();
+      if (!*quiet)
+        std::printf(
+            "wrote %s: surface %d, Cook-Torrance, m %g, k_d %g, k_s %g, with its %d "
+            "Fresnel colour-vectors\n",
+            out->c_str(), desc.count, desc.m, desc.diffuse, desc.specular,
+            prime::cgl::kFresnelAngles);
       return 0;
     };
   });

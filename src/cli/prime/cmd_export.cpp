@@ -1,5 +1,7 @@
 // prime export GRAPHFILE OUT.png: the picture a graph file makes on the
 // emulated 8514/A screen, as a PNG.
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/common/output_file.h"
@@ -33,6 +35,18 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       // After the read (the graph file is then an input of the run): no
       // output is an input, and no two outputs are one file.
       io::checkOutputs({{"OUT", *out}, {"--png-upscaled", o->pngUpscaled}});
+      // A PNG is all export writes: a name that says another format is
+      // refused, not given a PNG under it.
+      for (const std::string& name : {*out, o->pngUpscaled}) {
+        std::string ext = std::filesystem::path(name).extension().string();
+        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        for (const char* other :
+             {".bmp", ".pcx", ".gif", ".jpg", ".jpeg", ".tif", ".tiff", ".ppm", ".tga", ".webp"})
+          if (ext == other)
+            throw io::InputError(
+                {name, std::nullopt, std::nullopt},
+                "export writes PNG only, and this name says " + ext.substr(1) + ": name it .png");
+      }
       const Palette palette = paletteOf(*o, info, paletteNameForGraphType(f.graph.graphType));
       Screen screen(g.width, g.height);
       drawGraph(screen, f.graph, g.at, f.pixelsPresent);

@@ -38,7 +38,7 @@ namespace prime::cli {
 
 namespace {
 
-void printSummary(const RenderResult& r, const std::string& out) {
+void printSummary(const RenderResult& r, const std::string& out, const std::string& profile) {
   const auto& s = r.stats;
   // An abort: the rows rendered, of how many.
   const std::string rows =
@@ -67,15 +67,22 @@ void printSummary(const RenderResult& r, const std::string& out) {
       static_cast<unsigned long long>(s.primitiveTests), static_cast<unsigned long long>(s.hits),
       static_cast<unsigned long long>(s.totalInternalReflections),
       static_cast<unsigned long long>(s.maskedPrimaryRays));
-  std::printf(
-      "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 failed "
-      "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",
-      static_cast<unsigned long long>(s.emptyTransmitLists),
-      static_cast<unsigned long long>(s.cappedTirLoops),
-      static_cast<unsigned long long>(s.failedTexelReads),
-      static_cast<unsigned long long>(s.noFaceMatched),
-      static_cast<unsigned long long>(s.nanColours),
-      static_cast<unsigned long long>(s.indicesOutOfRange));
+  // The listing's failures, counted: said for the 1991 profile, and for
+  // another only when one happened.
+  const bool any = s.emptyTransmitLists + s.cappedTirLoops + s.failedTexelReads + s.noFaceMatched +
+                       s.nanColours + s.indicesOutOfRange >
+                   0;
+  if (profile == "1991" || any)
+    std::printf(
+        "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 "
+        "failed "
+        "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",
+        static_cast<unsigned long long>(s.emptyTransmitLists),
+        static_cast<unsigned long long>(s.cappedTirLoops),
+        static_cast<unsigned long long>(s.failedTexelReads),
+        static_cast<unsigned long long>(s.noFaceMatched),
+        static_cast<unsigned long long>(s.nanColours),
+        static_cast<unsigned long long>(s.indicesOutOfRange));
 }
 
 // A picture whose every pixel is one palette index although rays met objects:
@@ -368,7 +375,7 @@ class PrimeTrace : public TraceJob {
     writeAborted(result_, finished_, target_, partial_, [&](const io::GraphFile& head) {
       writeCompanion(partial_, head, companion(*findBuiltinPalette(mappingPalette_), false));
     });
-    if (!flags_->quiet) printSummary(result_, partial_);
+    if (!flags_->quiet) printSummary(result_, partial_, options_->profile);
   }
   // What the companion says besides the graph file's size and hash (G7).
   GraphInfo companion(const Palette& palette, bool inlinePalette) const {
@@ -416,7 +423,7 @@ class PrimeTrace : public TraceJob {
     return written;
   }
   void summary(const std::vector<std::string>&) const override {
-    printSummary(result_, target_);
+    printSummary(result_, target_, options_->profile);
     if (listingCounts_) {  // --pace 1991, --record: the era model beside the flat rate
       double era = 0.0;
       for (int r = 0; r < camera_->rows(); ++r) era += rowSeconds1991(r);
