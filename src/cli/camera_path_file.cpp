@@ -131,6 +131,7 @@ CameraPathFile readCameraPath(const std::string& path) {
       previous = k;
       previous.frame.reset();
       keys.push_back(p);
+      out.keyLines.push_back(lineNo);
     } else {
       throw io::InputError(where(0), "directive",
                            "one of frames, fps, loop, size, key, or a key's --eye ...",
@@ -151,6 +152,14 @@ CameraPathFile readCameraPath(const std::string& path) {
 CameraPath cameraPathOf(const CameraPathFile& file) {
   try {
     return CameraPath(file.spec);
+  } catch (const CameraKeyError& e) {
+    // A loop's closing point is its first key again.
+    const std::size_t k = static_cast<std::size_t>(e.key) < file.keyLines.size()
+                              ? static_cast<std::size_t>(e.key)
+                              : 0;
+    io::InputLocation at{file.name};
+    if (k < file.keyLines.size()) at.line = file.keyLines[k];
+    throw io::InputError(at, e.what());
   } catch (const std::invalid_argument& e) {
     throw io::InputError(io::InputLocation{file.name}, e.what());
   }

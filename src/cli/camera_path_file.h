@@ -20,6 +20,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "src/geom/camera_path.h"
 
@@ -30,6 +31,7 @@ struct CameraPathFile {
   CameraPathSpec spec;
   double fps = 30.0;
   std::optional<std::array<int, 2>> size;  // `size W H`, else the keys' --size
+  std::vector<int> keyLines;               // the line each key is written on
 };
 
 // Throws io::InputError naming the file, line, column and word.

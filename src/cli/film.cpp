@@ -42,7 +42,9 @@ std::string pixelSettings(const CLI::App* cmd) {
   for (const CLI::Option* o : cmd->get_options()) {
     if (o->count() == 0 || pixelFree(o)) continue;
     text += o->get_name();
-    for (const std::string& r : o->results()) text += " " + r;
+    // A flag as it is given (--frame-listing-window), an option with its values.
+    if (o->get_type_size() != 0)
+      for (const std::string& r : o->results()) text += " " + r;
     text += "\n";
   }
   return text;

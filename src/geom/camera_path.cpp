@@ -131,7 +131,7 @@ CameraPath::CameraPath(CameraPathSpec spec) : spec_(std::move(spec)) {
     if (!given[static_cast<std::size_t>(i)]) continue;
     const double f = *given[static_cast<std::size_t>(i)];
     if (f < 0 || f > end)
-      throw std::invalid_argument("key " + std::to_string(i + 1) + " is at frame " + number(f) +
+      throw CameraKeyError(i, "key " + std::to_string(i + 1) + " is at frame " + number(f) +
                                   ", outside the path's frames 0 .. " + number(end));
   }
   keyFrames_.assign(static_cast<std::size_t>(points), 0.0);
@@ -141,7 +141,7 @@ CameraPath::CameraPath(CameraPathSpec spec) : spec_(std::move(spec)) {
     const double fa = *given[static_cast<std::size_t>(anchor)],
                  fb = *given[static_cast<std::size_t>(i)];
     if (!(fb > fa))
-      throw std::invalid_argument("key " + std::to_string(i + 1) + " is at frame " + number(fb) +
+      throw CameraKeyError(i, "key " + std::to_string(i + 1) + " is at frame " + number(fb) +
                                   ", not after key " + std::to_string(anchor + 1) + "'s frame " +
                                   number(fa) + ": key frames must increase");
     const double la = table_[static_cast<std::size_t>(anchor) * kSamples],

@@ -16,6 +16,8 @@
 // nothing that depends on the machine, the thread or an earlier frame.
 #pragma once
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "src/geom/free_camera.h"
@@ -36,10 +38,18 @@ struct CameraPathSpec {
   bool loop = false;  // the path closes: after the last key comes the first again
 };
 
+// A fault of one key (its frame): which key, from 0, for a reader that
+// knows where the key is written.
+struct CameraKeyError : std::invalid_argument {
+  CameraKeyError(int k, const std::string& what) : std::invalid_argument(what), key(k) {}
+  int key;
+};
+
 class CameraPath {
  public:
-  // Throws std::invalid_argument saying what is wrong (no key; key frames
-  // that do not increase; a key frame past the path's end; fewer than 1 frame).
+  // Throws std::invalid_argument saying what is wrong (no key; fewer than 1
+  // frame), CameraKeyError for a key's frame that does not increase or is past
+  // the path's end.
   explicit CameraPath(CameraPathSpec spec);
 
   int frames() const { return frames_; }

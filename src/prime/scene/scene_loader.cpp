@@ -82,10 +82,9 @@ std::string primLabel(int n, const ScenePrim& p) {
 // Reads obj/O<n> and checks its CSG tree against the primitive table: every
 // primitive it uses must have a type byte that names a type (io::primType).
 SceneObject loadObject(const io::SceneDir& dir, int number,
-                       const std::vector<io::PrimRecord>& prims) {
-  const fs::path path = dir.existingInput(
-      "obj", "O" + std::to_string(number),
-      dir.display(dir.root() / "obj" / "List") + " (object " + std::to_string(number) + ")");
+                       const std::vector<io::PrimRecord>& prims, const std::string& listShown) {
+  const fs::path path = dir.existingInput("obj", "O" + std::to_string(number),
+                                          listShown + " (object " + std::to_string(number) + ")");
   const std::string shown = dir.display(path);
   const io::ObjFile f = io::objFileFromBytes(io::readFileBytes(path.string()), shown);
   SceneObject obj;
@@ -163,7 +162,10 @@ SceneObject loadObject(const io::SceneDir& dir, int number,
 SceneTexture loadMap(const io::SceneDir& dir, int number) {
   SceneTexture m;
   for (int c = 0; c < 3; ++c) {
-    const fs::path path = dir.existingInput("map", io::mapFileName(number, c), "prime trace");
+    const fs::path path =
+        dir.existingInput("map", io::mapFileName(number, c),
+                          "map " + std::to_string(number) + ", whose _R file " +
+                              dir.display(dir.find("map", io::mapFileName(number, 0))) + " exists");
     const io::MapFile f = io::mapFileFromBytes(io::readFileBytes(path.string()), dir.display(path));
     if (c > 0 && (f.header.uScale != m.uScale || f.header.vScale != m.vScale))
       throw InputError({dir.display(path), std::nullopt, 0}, "MapHeader",
@@ -210,7 +212,8 @@ Scene loadScene(const io::SceneDir& dir) {
   const fs::path listPath = dir.existingInput("obj", "List", "prime trace");
   const io::ObjList list =
       io::objListFromBytes(io::readFileBytes(listPath.string()), dir.display(listPath));
-  for (int number : list.objects) scene.objects.push_back(loadObject(dir, number, primFile.prims));
+  for (int number : list.objects)
+    scene.objects.push_back(loadObject(dir, number, primFile.prims, dir.display(listPath)));
   std::set<int> used;  // every primitive an object traces (leaf or bound)
   for (const auto& obj : scene.objects) {
     if (obj.boundPrim >= 0) used.insert(obj.boundPrim);

@@ -156,7 +156,7 @@ with tempfile.TemporaryDirectory() as tmp:
              "--png", "h%02d.png"], d)
     check(r.returncode == 0 and len([f for f in os.listdir(d) if re.match(r"h\d\d\.png$", f)]) == 10,
           "a hand-written path of 10 frames (a key at 1 s = frame 5)", r)
-    bad = [("frames 10\nkey --eye 0 2 12\nkey 7 --eye 1 2 12\nkey 3 --eye 2 2 12\n", "key frames must increase"),
+    bad = [("frames 10\nkey --eye 0 2 12\nkey 7 --eye 1 2 12\nkey 3 --eye 2 2 12\n", ":4: key 3 is at frame 3, not after key 2's frame 7: key frames must increase"),
            ("key --eye 0 2 12\nzoom 3\n", ":2:1 (token 1): directive"),
            ("key --eye 0 2 12 --fov 200\n", ":1:18 (token 6): --fov"),
            ("# nothing\n", "at least one key"),
