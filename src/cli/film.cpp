@@ -79,6 +79,7 @@ int runFilm(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& make,
   for (bool* b : flags.firstFrameOnly) onceOriginal.push_back(*b);
   const LiveOptions live = flags.live;
   flags.live.noWindow = true;  // a film renders headless: no window a frame
+  if (!live.noWindow) flags.live.headlessBecause = "--camera-path: a film renders headless";
   flags.live.noWait = true;
   if (cam.size.empty() && file.size) cam.size = {(*file.size)[0], (*file.size)[1]};
   auto restore = [&] {
@@ -180,7 +181,8 @@ void addPathVerb(CLI::App& app, Action& action, const System& system) {
       ->expected(3)
       ->allow_extra_args(false);
   cmd->add_option("-o,--out", *out,
-                  "The path file to write (default: DIR/camera.path, or SCENE.path beside a "
+                  "The path file to write (default: DIR/camera.path, or beside a scene file its "
+                  "name with .path for its extension, "
                   "scene file, never replaced unless named here)")
       ->check(outputName());
   if (system.walk == nullptr) {
@@ -250,6 +252,7 @@ int runFilmOrTrace(const CLI::App* cmd, TraceFlags& flags, const TraceFactory& m
   if (flags.rows.empty()) return runTrace(*job, flags, &record);
   const LiveOptions live = flags.live;
   flags.live.noWindow = true;  // a piece renders headless
+  if (!live.noWindow) flags.live.headlessBecause = "--rows: a band renders headless";
   flags.live.noWait = true;
   const int rc = runTrace(*job, flags, &record);
   flags.live = live;

@@ -130,6 +130,8 @@ LiveRender::LiveRender(display::LiveFrame& frame, LiveOptions options)
     : options_(std::move(options)), tty_(isatty(STDERR_FILENO) && !options_.quiet) {
   width_ = frame.width();
   auto headless = display::headlessReason(options_.noWindow);
+  if (headless && options_.noWindow && !options_.headlessBecause.empty())
+    headless = options_.headlessBecause;
   if (!headless) {
     try {
       window_ = std::make_unique<display::ScreenWindow>(

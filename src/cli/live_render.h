@@ -26,8 +26,11 @@ namespace prime::cli {
 
 struct LiveOptions {
   bool noWindow = false;  // --no-window
-  bool quiet = false;     // no progress, no messages
-  bool noWait = false;    // close the window when the render is done
+  // Why noWindow is set when the user did not say --no-window ("--rows: a
+  // band renders headless"): the headless line says that, not the flag.
+  std::string headlessBecause;
+  bool quiet = false;   // no progress, no messages
+  bool noWait = false;  // close the window when the render is done
   int zoom = 1;
   std::string caption;      // the window title's first part: scene or file
   std::string commandName;  // for messages: "trace"

@@ -219,6 +219,11 @@ const System* findSystem(std::string_view name);
 // whose picture the file is.
 const System& systemFor(std::string_view verb, const std::vector<std::string>& args);
 
+// A trace summary's rows, before "W x H pixels": after an abort "R of N rows
+// of " (N: the rows asked for), for a band (--rows) "R of H rows (a band)
+// of ", for the whole picture nothing.
+std::string rowsRenderedText(bool aborted, int rowsDone, int rowsAsked, int pictureRows);
+
 // The verbs every system plugs into, as the command table registers them.
 void addTraceVerb(CLI::App& app, Action& action, const System& system);
 void addProbeVerb(CLI::App& app, Action& action, const System& system);

@@ -120,6 +120,13 @@ const System& systemFor(std::string_view verb, const std::vector<std::string>& a
   return all.front();
 }
 
+std::string rowsRenderedText(bool aborted, int rowsDone, int rowsAsked, int pictureRows) {
+  if (aborted) return std::to_string(rowsDone) + " of " + std::to_string(rowsAsked) + " rows of ";
+  if (rowsAsked != pictureRows)
+    return std::to_string(rowsDone) + " of " + std::to_string(pictureRows) + " rows (a band) of ";
+  return "";
+}
+
 // ---- trace -------------------------------------------------------------------
 
 namespace {
@@ -276,8 +283,8 @@ void addProbeVerb(CLI::App& app, Action& action, const System& system) {
 // ---- the verbs whose whole command is the system's ----------------------------
 
 namespace {
-void addWholeVerb(CLI::App& app, Action& action, const System& system, const std::string& verb,
-                  const std::string& what, void (*part)(CLI::App*, Action&)) {
+CLI::App* addWholeVerb(CLI::App& app, Action& action, const System& system, const std::string& verb,
+                       const std::string& what, void (*part)(CLI::App*, Action&)) {
   auto* cmd = addVerb(app, verb, what, system);
   // export and view take a picture, whose format (--format) is the system's
   // own option; elsewhere --format was read by systemFor() and is only checked.
@@ -290,17 +297,37 @@ void addWholeVerb(CLI::App& app, Action& action, const System& system, const std
         return 2;
       };
     });
-    return;
+    return cmd;
   }
   part(cmd, action);
+  return cmd;
 }
 }  // namespace
 
 void addBenchVerb(CLI::App& app, Action& action, const System& system) {
-  addWholeVerb(app, action, system, "bench",
-               "Time scenes: Malone and CGL scene files in one table; PRIME's run time against "
-               "error study",
-               system.bench);
+  CLI::App* cmd = addWholeVerb(app, action, system, "bench",
+                               "Time scenes: a system's scene files in one table (Malone's, or "
+                               "CGL's); PRIME's run time against error study",
+                               system.bench);
+  // One table is one system's: a scene file another system reads is said to
+  // be one, not misread as this system's.
+  cmd->parse_complete_callback([cmd, &system] {
+    std::error_code ec;
+    for (const CLI::Option* opt : cmd->get_options())
+      if (opt->get_positional())
+        for (const std::string& w : opt->results()) {
+          if (!std::filesystem::is_regular_file(w, ec)) continue;
+          const std::string head = fileHead(w);
+          if (system.recognises(w, true, head)) continue;
+          for (const System& other : systems())
+            if (&other != &system && other.recognises(w, true, head))
+              throw CLI::ValidationError(
+                  opt->get_name(), w + " is a scene of " + other.title +
+                                       ", and this bench times scenes of " + system.title +
+                                       ": one table is one system's (run prime bench once for "
+                                       "each)");
+        }
+  });
 }
 
 void addExportPovVerb(CLI::App& app, Action& action, const System& system) {

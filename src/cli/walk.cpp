@@ -305,7 +305,7 @@ void addWalkVerb(CLI::App& app, Action& action, const System& system) {
                   "Where the C key appends the camera (default: prime-cameras.txt here)");
   cmd->add_option("--path-file", flags->pathFile,
                   "The camera path the K key adds a key to (default: DIR/camera.path, or "
-                  "SCENE.path beside a scene file)");
+                  "beside a scene file its name with .path for its extension)");
   addLiveWindowOptions(cmd, std::shared_ptr<LiveOptions>(flags, &flags->live), false, false);
   if (system.walk == nullptr) {
     cmd->callback([&action, title = std::string(system.title)] {

@@ -70,9 +70,7 @@ std::string fractalSummary(const prime::cgl::TraceStats& s) {
 void printSummary(const prime::cgl::RenderResult& r, const std::string& what) {
   const auto& s = r.stats;
   // An abort: the rows rendered, of how many.
-  const std::string rows = r.run.aborted ? std::to_string(r.run.rowsDone) + " of " +
-                                               std::to_string(r.run.rows) + " rows of "
-                                         : "";
+  const std::string rows = rowsRenderedText(r.run.aborted, r.run.rowsDone, r.run.rows, r.run.rows);
   std::printf("%s %s512 x 512 pixels in %.2f s with %d thread(s)%s\n",
               r.run.aborted ? "ABORTED after" : "traced", rows.c_str(), r.run.seconds,
               r.run.threads, what.c_str());

@@ -36,10 +36,9 @@ Image8 toImage8(const RgbImage& raster) {
 
 void printSummary(const prime::malone::RenderResult& r, const std::string& what) {
   const auto& s = r.stats;
-  // An abort: the rows rendered, of how many.
-  const std::string rows = r.run.aborted ? std::to_string(r.run.rowsDone) + " of " +
-                                               std::to_string(r.run.rows) + " rows of "
-                                         : "";
+  // An abort or a band (--rows): the rows rendered, of how many.
+  const std::string rows =
+      rowsRenderedText(r.run.aborted, r.run.rowsDone, r.run.rows, r.raster.height);
   std::printf("%s %s%d x %d pixels in %.2f s with %d thread(s)%s\n",
               r.run.aborted ? "ABORTED after" : "traced", rows.c_str(), r.raster.width,
               r.raster.height, r.run.seconds, r.run.threads, what.c_str());

@@ -40,9 +40,8 @@ namespace {
 
 void printSummary(const RenderResult& r, const std::string& out, const std::string& profile) {
   const auto& s = r.stats;
-  // An abort: the rows rendered, of how many.
-  const std::string rows =
-      r.aborted ? std::to_string(r.rowsDone) + " of " + std::to_string(r.rows) + " rows of " : "";
+  // An abort or a band (--rows): the rows rendered, of how many.
+  const std::string rows = rowsRenderedText(r.aborted, r.rowsDone, r.rows, r.graph.height());
   std::printf("%s %s%d x %d pixels (graph file header %d x %d) in %.2f s with %d thread(s): %s\n",
               r.aborted ? "ABORTED after" : "traced", rows.c_str(), r.graph.width(),
               r.graph.height(), r.graph.numPixAcross, r.graph.numPixDown, r.seconds, r.threads,

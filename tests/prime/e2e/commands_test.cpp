@@ -35,6 +35,25 @@ TEST(PrimeCommand, TraceRefusesStaleDatabasesAndModelFixesIt) {
   EXPECT_TRUE(s.exists("graph_scr"));
 }
 
+// A band (--rows) says the rows it traced of how many, and why it ran
+// headless; one bench table is one system's, and a scene of another is said
+// to be one (it was misread as this system's).
+TEST(PrimeCommand, ABandSaysItsRowsAndABenchOneSystem) {
+  prime::test::TempScene s;
+  sphere(s);
+  CommandResult r = runPrime("trace --model " + s.path().string() + " --rows 0-40 --out " +
+                             s.path("band.gr").string() + " --threads 1");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("traced 41 of 769 rows (a band) of 350 x 769 pixels"));
+  EXPECT_THAT(r.output, HasSubstr("running headless (--rows: a band renders headless)"));
+  const std::string scenes = std::string(PRIME_SCENES) + "/..";
+  r = runPrime("bench " + scenes + "/cgl/ball.cgl " + scenes + "/malone/glass.mal --runs 1");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("/malone/glass.mal is a scene of Malone's ray tracer (1995), "
+                                  "and this bench times scenes of the Waterloo CGL package "
+                                  "(1985): one table is one system's"));
+}
+
 // M34: an object whose entries share subtrees (each of 20 unions takes the
 // next entry twice: 2^21 - 1 visits walked per reference) is warned about
 // when it is modelled, not only when it is traced; the model still succeeds.
