@@ -104,6 +104,36 @@ def roff(text):
     return "\n".join(lines)
 
 
+def help_roff(text, description):
+    """A command's CLI11 help as man-page markup: each option a tagged
+    paragraph (.TP), so that man wraps its description to the terminal's
+    width, instead of one preformatted block hundreds of columns wide. The
+    command's description (the help's first line, and again before each other
+    system's options) is left out: the subsection's heading says it."""
+    lines = [l for l in text.splitlines() if l.strip() != description.strip()]
+    out = []
+    i = 0
+    while i < len(lines):
+        line = lines[i].rstrip()
+        i += 1
+        if not line.strip():
+            continue
+        if re.match(r"^\S.*:$", line):  # Positionals:, Options:, Subcommands:
+            out += [".PP", "\\fB" + roff(line) + "\\fR"]
+            continue
+        m = re.match(r"^ {1,4}(\S.*?)(?: {2,}(\S.*))?$", line)
+        if m and (m.group(1).startswith("-") or m.group(2) is not None or
+                  (i < len(lines) and re.match(r"^ {10,}\S", lines[i]))):
+            desc = m.group(2) or ""
+            while i < len(lines) and re.match(r"^ {10,}\S", lines[i]):
+                desc += (" " if desc else "") + lines[i].strip()
+                i += 1
+            out += [".TP", "\\fB" + roff(m.group(1)) + "\\fR"] + ([roff(desc)] if desc else [])
+            continue
+        out += [".PP", roff(line.strip())]
+    return "\n".join(out)
+
+
 # The names completion is registered for: the installed command, and the
 # build tree's, as README.md and the docs call it (bash looks a path up as
 # written, and older versions do not fall back to its last component).
@@ -232,7 +262,7 @@ def main():
     with open(include, "w") as f:
         f.write("[COMMANDS]\nEach command's own help (also `prime help COMMAND`).\n")
         for c, d in cmds:
-            f.write(f'.SS "prime {c}"\n{roff(d)}\n.PP\n.nf\n{roff(helps[c])}\n.fi\n')
+            f.write(f'.SS "prime {c}"\n{roff(d)}\n{help_roff(helps[c], d)}\n')
         f.write("[FILES]\nThe window module libprime_window_sdl.so is loaded from beside the "
                 "executable, or from ../lib/prime/ relative to it (an installed prime).\n")
         f.write("[SEE ALSO]\nREADME.md and docs/ in the source tree: the user guide, the "

@@ -408,7 +408,17 @@ async function main() {
     $("render").disabled = $("walk").disabled = true;
     return;
   }
-  scenes = await (await fetch("scenes/scenes.json")).json();
+  // The scene list is part of a build (build/web/): served from the sources
+  // (web/) there is none, and the page says so instead of a JSON error.
+  const list = await fetch("scenes/scenes.json");
+  if (!list.ok || !(list.headers.get("Content-Type") || "").includes("json")) {
+    status("scenes/scenes.json was not found: serve the built page (build/web/, made by " +
+           "./prime.sh web --build-only) with python3 tools/web/serve.py build/web, not the " +
+           "sources in web/.");
+    $("render").disabled = $("walk").disabled = true;
+    return;
+  }
+  scenes = await list.json();
   const select = $("scene");
   const titles = {prime: "PRIME (1991)", malone: "Malone (1995)", cgl: "Waterloo CGL (1985)"};
   for (const system of ["prime", "malone", "cgl"]) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 #include "legacy_io/common/digest.h"
 #include "legacy_io/common/error.h"
@@ -68,6 +69,15 @@ std::string rowsText(int first, int last) {
 }
 
 int stitch(const std::string& out, const std::vector<std::string>& paths) {
+  // The same piece named twice (or by two names) is said to be, not taken
+  // for two bands that overlap.
+  for (std::size_t i = 0; i < paths.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      std::error_code ec;
+      if (paths[i] == paths[j] || std::filesystem::equivalent(paths[i], paths[j], ec))
+        throw io::InputError({paths[i], std::nullopt, std::nullopt},
+                             "is given twice (also as " + paths[j] + "): name each piece once");
+    }
   std::vector<Piece> pieces;
   for (const std::string& path : paths) {
     std::optional<RenderRecord> r = readRecord(path);

@@ -227,6 +227,7 @@ with tempfile.TemporaryDirectory() as tmp:
     for args, needle in [(["a.ppm"], "rows 30-69 of the 70 are in no piece"),
                          (["a.ppm", "c.ppm"], "both hold rows 25-29"),
                          (["a.ppm", "x.ppm"], "not a piece of the same render"),
+                         (["a.ppm", "b.ppm", "./b.ppm"], "is given twice (also as b.ppm)"),
                          (["a.ppm", os.path.join(ROOT, "scenes/malone/doc-scene.mal")], "no render record")]:
         r = run(["stitch", "s.ppm"] + args, d)
         check(r.returncode != 0 and needle in r.out and not os.path.exists(os.path.join(d, "s.ppm")),
