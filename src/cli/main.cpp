@@ -131,20 +131,35 @@ struct Command {
 
 const std::vector<Command>& commands() {
   namespace cli = prime::cli;
+  // One command a line, in `prime --help` order.
+  // clang-format off
   static const std::vector<Command> kCommands = {
-      {{"model"}, cli::addModelCommand},       {{"dump"}, cli::addDumpCommand},
-      {{"trace"}, nullptr, cli::addTraceVerb}, {{"probe"}, nullptr, cli::addProbeVerb},
-      {{"view"}, nullptr, cli::addViewVerb},   {{"export"}, nullptr, cli::addExportVerb},
-      {{"diff"}, cli::addDiffCommand},         {{"palette"}, cli::addPaletteCommand},
-      {{"errata"}, cli::addErrataCommand},     {{"export-pov"}, nullptr, cli::addExportPovVerb},
-      {{"bench"}, nullptr, cli::addBenchVerb}, {{"plate1"}, cli::addPlate1Command},
-      {{"stress"}, cli::addStressCommand},     {{"quantize"}, cli::addQuantizeCommand},
-      {{"film"}, cli::addFilmCommand},         {{"check"}, cli::addCheckCommand},
-      {{"new"}, cli::addNewCommand},           {{"compare"}, cli::addCompareCommand},
-      {{"walk"}, nullptr, cli::addWalkVerb},   {{"path"}, nullptr, cli::addPathVerb},
-      {{"stitch"}, cli::addStitchCommand},     {{"cgl-splines"}, cli::cgl::addSplinesCommand},
-      {{"cook"}, cli::cgl::addCookCommand},    {{"tovector"}, cli::cgl::addTovectorCommand},
+      {{"model"}, cli::addModelCommand},
+      {{"dump"}, cli::addDumpCommand},
+      {{"trace"}, nullptr, cli::addTraceVerb},
+      {{"probe"}, nullptr, cli::addProbeVerb},
+      {{"view"}, nullptr, cli::addViewVerb},
+      {{"export"}, nullptr, cli::addExportVerb},
+      {{"diff"}, cli::addDiffCommand},
+      {{"palette"}, cli::addPaletteCommand},
+      {{"errata"}, cli::addErrataCommand},
+      {{"export-pov"}, nullptr, cli::addExportPovVerb},
+      {{"bench"}, nullptr, cli::addBenchVerb},
+      {{"plate1"}, cli::addPlate1Command},
+      {{"stress"}, cli::addStressCommand},
+      {{"quantize"}, cli::addQuantizeCommand},
+      {{"film"}, cli::addFilmCommand},
+      {{"check"}, cli::addCheckCommand},
+      {{"new"}, cli::addNewCommand},
+      {{"compare"}, cli::addCompareCommand},
+      {{"walk"}, nullptr, cli::addWalkVerb},
+      {{"path"}, nullptr, cli::addPathVerb},
+      {{"stitch"}, cli::addStitchCommand},
+      {{"cgl-splines"}, cli::cgl::addSplinesCommand},
+      {{"cook"}, cli::cgl::addCookCommand},
+      {{"tovector"}, cli::cgl::addTovectorCommand},
   };
+  // clang-format on
   return kCommands;
 }
 

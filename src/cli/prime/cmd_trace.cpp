@@ -73,9 +73,9 @@ void printSummary(const RenderResult& r, const std::string& out, const std::stri
                    0;
   if (profile == "1991" || any)
     std::printf(
-        "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, E51 "
-        "failed "
-        "texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside 0..255 %llu\n",
+        "1991 diagnostics (X3): E46 empty transmit lists %llu, E59 capped TIR loops %llu, "
+        "E51 failed texel reads %llu, E44 no face %llu, NaN colours %llu, indices outside "
+        "0..255 %llu\n",
         static_cast<unsigned long long>(s.emptyTransmitLists),
         static_cast<unsigned long long>(s.cappedTirLoops),
         static_cast<unsigned long long>(s.failedTexelReads),
