@@ -182,8 +182,8 @@ void addPathVerb(CLI::App& app, Action& action, const System& system) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--out", *out,
                   "The path file to write (default: DIR/camera.path, or beside a scene file its "
-                  "name with .path for its extension, "
-                  "scene file, never replaced unless named here)")
+                  "name with .path for its extension; the default is never replaced unless "
+                  "named here)")
       ->check(outputName());
   if (system.walk == nullptr) {
     cmd->callback([&action, title = std::string(system.title)] {

@@ -117,7 +117,7 @@ constexpr std::pair<const char*, bool ListingFixes::*> kSwitches[] = {{"K4", &Li
 std::string switchesText() {
   std::string s = "--fix takes ";
   for (const auto& [name, flag] : kSwitches) s += std::string(name) + ", ";
-  return s + "or all (prime errata)";
+  return s + "or all; prime errata lists every quirk";
 }
 
 std::string upper(std::string_view s) {

@@ -30,7 +30,7 @@ TEST(ListingFixes, ParseNamesEverySwitchAndRefusesTheRest) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "K7 has no switch: K6, K7, K8 and K19 are tangled: no correction of one alone "
-              "renders; --fix takes K4, K5, K10, K15, K18, or all (prime errata)");
+              "renders; --fix takes K4, K5, K10, K15, K18, or all; prime errata lists every quirk");
   }
   const std::string noQuirk = "K" + std::to_string(99);  // (no id for the docs check)
   try {
@@ -39,8 +39,8 @@ TEST(ListingFixes, ParseNamesEverySwitchAndRefusesTheRest) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "'" + noQuirk +
-                  "' is no listing quirk (K1 .. K44); --fix takes K4, K5, K10, K15, K18, or all "
-                  "(prime errata)");
+                  "' is no listing quirk (K1 .. K44); --fix takes K4, K5, K10, K15, K18, or all; "
+                  "prime errata lists every quirk");
   }
   EXPECT_THROW(parseListingFixes("K" + std::to_string(45)),
                std::invalid_argument);  // past the last
