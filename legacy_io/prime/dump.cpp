@@ -24,6 +24,11 @@ std::optional<DatabaseKind> kindFromFileName(const std::string& path) {
   if (name == "list") return DatabaseKind::ObjList;
   // DOS keeps eight characters of a name without an extension: GRAPH_SC.
   if (name == "graph_scr" || name == "graph_sc") return DatabaseKind::GraphFile;
+  // The names the docs give graph files written with --out, and an aborted
+  // trace's .partial.
+  const std::string ext = std::filesystem::path(name).extension().string();
+  if (ext == ".scr" || ext == ".graph" || ext == ".gr" || ext == ".partial")
+    return DatabaseKind::GraphFile;
   if (std::regex_match(name, std::regex("o[0-9]+"))) return DatabaseKind::ObjFile;
   if (std::regex_match(name, std::regex("map[0-9]+_[rgb]\\.map"))) return DatabaseKind::MapFile;
   return std::nullopt;

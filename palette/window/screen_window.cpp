@@ -455,9 +455,12 @@ struct ScreenWindow::Impl {
     meta.aspectX = meta.aspectY = 1;
     if (const std::string d = screen.describe(); !d.empty()) meta.text.push_back({"Display", d});
     // A drawing over the picture (a pixel's rays, the palette chart) is
-    // saved as shown, in its colours; else the screen as its indices.
+    // saved as shown, in its colours, and so is a paced replay's screen (the
+    // rows not shown yet are the window's black); else the screen as its
+    // indices.
+    const int shownRows = std::clamp(rowLimit, 0, screen.height());
     IndexedImage8 indexed;
-    if (overlay.empty() && screen.indexed(indexed)) {
+    if (overlay.empty() && shownRows == screen.height() && screen.indexed(indexed)) {
       writeIndexedPng(path.string(), indexed, meta);
       return path.string();
     }
@@ -465,8 +468,9 @@ struct ScreenWindow::Impl {
     Image8 img;
     img.width = screen.width();
     img.height = screen.height();
-    img.rgb.resize(shown.size() * 3);
-    for (std::size_t i = 0; i < shown.size(); ++i) {
+    img.rgb.assign(shown.size() * 3, 0);
+    const std::size_t limit = static_cast<std::size_t>(shownRows) * screen.width();
+    for (std::size_t i = 0; i < std::min(shown.size(), limit); ++i) {
       img.rgb[3 * i] = static_cast<std::uint8_t>(shown[i] >> 16);
       img.rgb[3 * i + 1] = static_cast<std::uint8_t>(shown[i] >> 8);
       img.rgb[3 * i + 2] = static_cast<std::uint8_t>(shown[i]);

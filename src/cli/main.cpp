@@ -5,8 +5,11 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -335,6 +338,18 @@ int primeMain(int argc, char** argv, bool parseOnly) {
     // Every input the command reads is recorded: no output may replace one.
     const prime::io::RunInputs inputs;
     const int status = action ? action() : 0;
+    // What went to standard output reached it (a full disk, a closed pipe
+    // end: `prime palette listing > my.pal` must not say it succeeded).
+    std::cout.flush();
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout) {
+      // (The write that failed may have been long before: its errno is gone.)
+      std::cerr << "prime: cannot write standard output"
+                << (errno != 0 ? std::string(": ") + std::strerror(errno)
+                               : std::string(" (a full disk, or a closed pipe?)"))
+                << "; what it holds is not complete\n";
+      return status != 0 ? status : 1;
+    }
     // Ctrl-C (or SIGTERM) that aborted a render: 130 (143), as the shell
     // reports a process the signal ended, not the 1 of Esc (ExitOnEsc).
     const int sig = prime::cli::interruptingSignal();

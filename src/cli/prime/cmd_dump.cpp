@@ -35,7 +35,8 @@ void addDumpCommand(CLI::App& app, Action& action) {
       if (!kind) {
         std::cerr << "prime: " << *file
                   << ": cannot tell the kind of file from its name (PrimFile, List, O<n>, "
-                     "Map<n>_R.map, graph_scr); say it with --as prim|obj|list|map|graph\n";
+                     "Map<n>_R.map, graph_scr or a .scr, .graph, .gr, .partial graph file); say it "
+                     "with --as prim|obj|list|map|graph\n";
         return 1;
       }
       std::cout << io::dumpDatabase(*file, *kind, *rows);

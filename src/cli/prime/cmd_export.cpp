@@ -59,7 +59,8 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       std::cout << "wrote " << *out << ": " << img.width << " x " << img.height << " (" << o->area
                 << " area; the file's " << f.graph.width() << " x " << f.graph.height()
                 << " pixels at (" << g.at.left << ", " << g.at.top << ") on a " << g.width << " x "
-                << g.height << " screen), palette " << palette.name << ", DAC " << o->dac << "\n";
+                << g.height << " screen), palette " << paletteLabel(palette) << ", DAC " << o->dac
+                << "\n";
       if (!o->pngUpscaled.empty()) {
         const int k = fitFactor(img.width, img.height, o->upscaleFit[0], o->upscaleFit[1]);
         std::cout << "wrote " << o->pngUpscaled << ": " << img.width * k << " x " << img.height * k

@@ -25,7 +25,8 @@ void addPaletteCommand(CLI::App& app, Action& action) {
           std::cout << n << "\t" << findBuiltinPalette(n)->description << "\n";
         return 0;
       }
-      std::cout << formatPaletteText(resolvePalette(*name), dacOf(*o));
+      // On another monitor, the palette as it shows there (its greys).
+      std::cout << formatPaletteText(onMonitorOf(*o, resolvePalette(*name)), dacOf(*o));
       return 0;
     };
   });

@@ -101,7 +101,12 @@ PngMeta companionMeta(const std::optional<GraphInfo>& info) {
 }
 
 std::string paletteLabel(const Palette& palette) {
-  if (findBuiltinPalette(palette.name) || palette.description.empty()) return palette.name;
+  // A palette file may keep a built-in's name (`prime palette listing >
+  // my.pal` writes "name listing"): with other colours it is the file's.
+  const std::optional<Palette> builtin = findBuiltinPalette(palette.name);
+  const bool edited =
+      palette.description.rfind("user palette ", 0) == 0 && builtin && builtin->dac != palette.dac;
+  if ((builtin && !edited) || palette.description.empty()) return palette.name;
   return palette.description;
 }
 

@@ -1,10 +1,12 @@
 // The `prime` commands as a user runs them: exit codes and messages.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "tests/support/run_prime.h"
@@ -52,6 +54,47 @@ TEST(PrimeCommand, ABandSaysItsRowsAndABenchOneSystem) {
   EXPECT_THAT(r.output, HasSubstr("/malone/glass.mal is a scene of Malone's ray tracer (1995), "
                                   "and this bench times scenes of the Waterloo CGL package "
                                   "(1985): one table is one system's"));
+}
+
+// Standard output that cannot be written is an error, not a success; the
+// palette on another monitor is printed as it shows there; dump knows the
+// graph files the docs name with --out.
+TEST(PrimeCommand, OutputThatCannotBeWrittenAndPaletteOnAMonitor) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  prime::test::TempScene s;
+  const int status = std::system(
+      (std::string(PRIME_EXE) + " palette listing > /dev/full 2> " + s.path("err.txt").string())
+          .c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  const std::vector<std::uint8_t> err = s.read("err.txt");
+  EXPECT_THAT(std::string(err.begin(), err.end()),
+              HasSubstr("prime: cannot write standard output"));
+  CommandResult r = runPrime("palette listing --monitor 8503");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("name listing (8503)"));
+  EXPECT_THAT(r.output, HasSubstr("\n  1 44 44 44"));  // the green level 44 of 20 44 15, as grey
+  sphere(s);
+  ASSERT_EQ(runPrime("trace --model -q " + s.path().string() + " --out " +
+                     s.path("picture.graph").string())
+                .status,
+            0);
+  r = runPrime("dump " + s.path("picture.graph").string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("graph file, graphType"));
+  // A palette file that keeps the built-in's name (as `prime palette listing`
+  // writes it) but not its colours is the file's, not "listing".
+  const std::string pal = s.path("my.pal").string();
+  ASSERT_EQ(runPrime("palette listing > " + pal).status, 0);
+  const std::vector<std::uint8_t> bytes = s.read("my.pal");
+  std::string text(bytes.begin(), bytes.end());
+  const std::size_t one = text.find("\n  1 ");
+  ASSERT_NE(one, std::string::npos);
+  text.replace(one, text.find('\n', one + 1) - one, "\n  1 0 0 0");
+  s.write("my.pal", text);
+  r = runPrime("export " + s.path("picture.graph").string() + " " + s.path("p.png").string() +
+               " --palette " + pal);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("palette user palette " + pal + ", DAC round"));
 }
 
 // M34: an object whose entries share subtrees (each of 20 unions takes the
