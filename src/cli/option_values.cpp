@@ -109,6 +109,12 @@ CLI::Validator above(double least) {
   return numberFrom(least, true);
 }
 
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
 CLI::Validator sceneDirectory(const std::string& primeOnly) {
   return CLI::Validator(
       [primeOnly](std::string& path) -> std::string {
@@ -120,9 +126,7 @@ CLI::Validator sceneDirectory(const std::string& primeOnly) {
           return "'" + path +
                  "' does not exist (a PRIME scene is a directory, a Malone or CGL "
                  "scene a file)";
-        std::string ext = fs::path(path).extension().string();
-        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (ext == ".zip")
+        if (lowerExtension(path) == ".zip")
           return "'" + path +
                  "' is a zip: unzip it and give its scene directory (only the web page reads a "
                  "zip)";

@@ -35,6 +35,8 @@ CLI::Validator outputName();
 CLI::Validator atLeast(double least);
 // A number above `least` ("must be more than 0, got 0").
 CLI::Validator above(double least);
+// The extension of `path`'s file name in lower case (".png", or "").
+std::string lowerExtension(const std::string& path);
 // A PRIME scene directory, the default of the verbs every system shares: a
 // file no system reads gets a message that says so, not CLI11's "Directory
 // is actually a file". A command that is PRIME's only (`primeOnly`: its

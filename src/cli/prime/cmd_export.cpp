@@ -1,7 +1,5 @@
 // prime export GRAPHFILE OUT.png: the picture a graph file makes on the
 // emulated 8514/A screen, as a PNG.
-#include <cctype>
-#include <filesystem>
 #include <iostream>
 
 #include "legacy_io/common/output_file.h"
@@ -38,8 +36,7 @@ void addExportOptions(CLI::App* cmd, Action& action) {
       // A PNG is all export writes: a name that says another format is
       // refused, not given a PNG under it.
       for (const std::string& name : {*out, o->pngUpscaled}) {
-        std::string ext = std::filesystem::path(name).extension().string();
-        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const std::string ext = lowerExtension(name);
         for (const char* other :
              {".bmp", ".pcx", ".gif", ".jpg", ".jpeg", ".tif", ".tiff", ".ppm", ".tga", ".webp"})
           if (ext == other)
